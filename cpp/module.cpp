@@ -1,0 +1,11 @@
+// The private compiled module seaway._core: wiring only; each area registers itself.
+#include <pybind11/pybind11.h>
+
+namespace py = pybind11;
+
+void register_search(py::module_& m);
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "seaway's C++ engine (private: use the seaway package)";
+  register_search(m);
+}

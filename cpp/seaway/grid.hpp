@@ -1,0 +1,97 @@
+// Raster geometry: a planar grid (cell sizes dx, dy) or a regular lat/lon grid on a sphere,
+// optionally wrapping at the antimeridian. Gives each stencil step's length and the
+// straight-line (or great-circle) lower bound that A* uses.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "stencil.hpp"
+
+namespace seaway {
+
+constexpr double earth_radius_km = 6371.0088;  // IUGG mean Earth radius
+constexpr double deg = 3.14159265358979323846 / 180.0;
+
+// Great-circle distance in km between two points given in degrees (haversine form).
+inline double haversine_km(double lat1, double lon1, double lat2, double lon2) {
+  const double s1 = std::sin((lat2 - lat1) * deg / 2), s2 = std::sin((lon2 - lon1) * deg / 2);
+  const double a = s1 * s1 + std::cos(lat1 * deg) * std::cos(lat2 * deg) * s2 * s2;
+  return 2 * earth_radius_km * std::asin(std::min(1.0, std::sqrt(a)));
+}
+
+struct Grid {
+  std::int64_t rows = 0, cols = 0;
+  bool geographic = false;
+  double dx = 1, dy = 1;                    // planar cell sizes (columns, rows)
+  double lat0 = 0, dlat = 1, lon0 = 0, dlon = 1;  // centre of pixel (0, 0) and steps, degrees
+  bool wrap = false;                        // columns are periodic (360 degrees of longitude)
+
+  std::int64_t size() const { return rows * cols; }
+  double lat(std::int64_t r) const { return lat0 + double(r) * dlat; }
+
+  // Length of every step from every row: table[row * stride + o]; stride 0 on planar grids,
+  // where a step's length does not depend on the row.
+  struct Lengths {
+    std::vector<double> table;
+    std::int64_t stride;
+    const double* row(std::int64_t r) const { return table.data() + r * stride; }
+  };
+
+  Lengths step_lengths(const std::vector<Offset>& st) const {
+    const std::int64_t n = std::int64_t(st.size());
+    Lengths out{{}, geographic ? n : 0};
+    if (!geographic) {
+      for (const Offset& o : st) out.table.push_back(std::hypot(o.di * dy, o.dj * dx));
+      return out;
+    }
+    out.table.resize(std::size_t(rows * n));
+    for (std::int64_t r = 0; r < rows; ++r)
+      for (std::int64_t k = 0; k < n; ++k)
+        out.table[std::size_t(r * n + k)] =
+            haversine_km(lat(r), 0.0, lat(r + st[k].di), st[k].dj * dlon);
+    return out;
+  }
+};
+
+// Admissible distance-to-target bound: straight-line or great-circle distance from a pixel to
+// the target times a factor (the smallest cost per unit length, times the A* inflation).
+class DistanceBound {
+ public:
+  DistanceBound(const Grid& g, std::int64_t target, double factor) : g_(g), factor_(factor) {
+    tr_ = target / g.cols;
+    tc_ = target % g.cols;
+    if (!g.geographic || factor == 0) return;
+    const double lt = g.lat(tr_) * deg;
+    row_a_.resize(std::size_t(g.rows));
+    row_c_.resize(std::size_t(g.rows));
+    for (std::int64_t r = 0; r < g.rows; ++r) {
+      const double s = std::sin((g.lat(r) * deg - lt) / 2);
+      row_a_[std::size_t(r)] = s * s;
+      row_c_[std::size_t(r)] = std::cos(g.lat(r) * deg) * std::cos(lt);
+    }
+    col_b_.resize(std::size_t(g.cols));
+    for (std::int64_t c = 0; c < g.cols; ++c) {
+      const double s = std::sin(double(c - tc_) * g.dlon * deg / 2);
+      col_b_[std::size_t(c)] = s * s;
+    }
+  }
+
+  double operator()(std::int64_t v) const {
+    if (factor_ == 0) return 0;
+    const std::int64_t r = v / g_.cols, c = v % g_.cols;
+    if (!g_.geographic) return factor_ * std::hypot(double(r - tr_) * g_.dy, double(c - tc_) * g_.dx);
+    const double a = row_a_[std::size_t(r)] + row_c_[std::size_t(r)] * col_b_[std::size_t(c)];
+    return factor_ * 2 * earth_radius_km * std::asin(std::min(1.0, std::sqrt(a)));
+  }
+
+ private:
+  const Grid& g_;
+  double factor_;
+  std::int64_t tr_ = 0, tc_ = 0;
+  std::vector<double> row_a_, row_c_, col_b_;
+};
+
+}  // namespace seaway

@@ -1,0 +1,77 @@
+// Which pixels a ship may enter, and how far (Chebyshev, in pixels) each pixel is from the
+// nearest one it may not. A pixel whose clearance exceeds the stencil's half-width has no
+// forbidden step, so the search skips the land test for it.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "grid.hpp"
+
+namespace seaway {
+
+struct Passability {
+  double min_cost = std::numeric_limits<double>::infinity();  // over passable pixels
+  std::int64_t passable = 0;                                  // how many there are
+};
+
+// clearance[v] = min(distance to the nearest impassable pixel, cap); 0 marks impassable.
+// A pixel is impassable when its cost is NaN, infinite or negative, or land[v] is set.
+// `scratch` holds one byte per pixel during the call.
+template <class T>
+Passability compute_clearance(const Grid& g, const T* cost, const std::uint8_t* land, int cap,
+                              std::uint8_t* clearance, std::uint8_t* scratch) {
+  Passability out;
+  const std::int64_t R = g.rows, C = g.cols;
+  // Pass 1: distance along the row to the nearest impassable pixel of that row.
+  for (std::int64_t r = 0; r < R; ++r) {
+    const T* u = cost + r * C;
+    const std::uint8_t* l = land ? land + r * C : nullptr;
+    std::uint8_t* h = scratch + r * C;
+    auto blocked = [&](std::int64_t c) {
+      const double x = double(u[c]);
+      return !(x >= 0 && x < std::numeric_limits<double>::infinity()) || (l && l[c]);
+    };
+    // With periodic columns the distance may run across the seam: start from the last
+    // blocked pixel of the row, one period back.
+    std::int64_t last = -4 * std::int64_t(cap);
+    if (g.wrap)
+      for (std::int64_t c = C - 1; c >= 0; --c)
+        if (blocked(c)) { last = c - C; break; }
+    for (std::int64_t c = 0; c < C; ++c) {
+      if (blocked(c)) {
+        last = c;
+      } else {
+        const double x = double(u[c]);
+        if (x < out.min_cost) out.min_cost = x;
+        ++out.passable;
+      }
+      h[c] = std::uint8_t(std::min<std::int64_t>(c - last, cap));
+    }
+    last = 4 * std::int64_t(cap) + C;
+    if (g.wrap)
+      for (std::int64_t c = 0; c < C; ++c)
+        if (h[c] == 0) { last = c + C; break; }
+    for (std::int64_t c = C - 1; c >= 0; --c) {
+      if (h[c] == 0) last = c;
+      h[c] = std::uint8_t(std::min<std::int64_t>(h[c], last - c));
+    }
+  }
+  // Pass 2: Chebyshev distance = min over nearby rows of max(row gap, distance in that row).
+  for (std::int64_t r = 0; r < R; ++r) {
+    std::uint8_t* out_row = clearance + r * C;
+    std::copy(scratch + r * C, scratch + (r + 1) * C, out_row);
+    for (int d = 1; d < cap; ++d)
+      for (std::int64_t rr : {r - d, r + d}) {
+        if (rr < 0 || rr >= R) continue;
+        const std::uint8_t* h = scratch + rr * C;
+        for (std::int64_t c = 0; c < C; ++c)
+          out_row[c] = std::min<std::uint8_t>(out_row[c], std::max<std::uint8_t>(std::uint8_t(d), h[c]));
+      }
+  }
+  return out;
+}
+
+}  // namespace seaway

@@ -1,0 +1,158 @@
+// Dijkstra / A* / weighted A* on the implicit raster graph. Vertices are pixels; the edges of a
+// pixel are generated from the stencil when it is settled; nothing about adjacency is stored.
+// The search is a template over the edge-cost model, so new costs are new functors.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "grid.hpp"
+#include "heap.hpp"
+#include "passability.hpp"
+#include "stencil.hpp"
+
+namespace seaway {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+constexpr std::uint8_t no_pred = 255;
+
+// Which pixels a step must keep clear of. `segment`: both ends and every pixel whose closed
+// square the closed straight segment touches (the papers' rule: no leaking through diagonal
+// coastlines, no jumping over land). `ends`: only the two ends (scikit-image's rule).
+enum class LandRule { segment, ends };
+
+// Per-pixel search state: 8 (cost) + 4 (heap position) + 1 (predecessor) + 1 (clearance)
+// bytes per pixel, plus the heap, which holds only the frontier.
+struct SearchState {
+  std::vector<std::uint32_t> heap_pos;
+  std::vector<std::uint8_t> pred, clearance;
+  std::vector<double> own_dist;  // used when the caller gives no buffer for the costs
+
+  void resize(std::int64_t n) {
+    heap_pos.assign(std::size_t(n), IndexedHeap::absent);
+    pred.assign(std::size_t(n), no_pred);
+    clearance.resize(std::size_t(n));
+  }
+};
+
+struct SearchStats {
+  std::int64_t settled = 0;     // pixels taken off the heap
+  std::size_t heap_peak = 0;    // largest frontier
+  std::size_t state_bytes = 0;  // the search's own memory at its peak
+  double min_cost = inf;        // smallest passable cost (the A* bound's factor)
+};
+
+struct SearchSpec {
+  const Grid* grid;
+  const std::vector<Offset>* stencil;
+  LandRule land_rule = LandRule::segment;
+  double heuristic_weight = 0;  // 0: Dijkstra; 1: A*; w > 1: weighted A* (cost <= w * optimum)
+};
+
+// Runs from `start` until `target` is settled (target < 0: until every reachable pixel is).
+// dist[v] ends as the accumulated cost of v (exact for settled pixels), inf if never reached.
+// The clearance must have been filled by compute_clearance() with cap = half-width + 1.
+template <class Model>
+SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengths& lengths,
+                   double min_cost, std::int64_t start, std::int64_t target, double* dist,
+                   SearchState& s) {
+  const Grid& g = *spec.grid;
+  const std::vector<Offset>& st = *spec.stencil;
+  const std::int64_t R = g.rows, C = g.cols, n_off = std::int64_t(st.size());
+  int h = 0;
+  for (const Offset& o : st) h = std::max({h, std::abs(o.di), std::abs(o.dj)});
+
+  std::vector<std::int64_t> flat(st.size());
+  for (std::size_t k = 0; k < st.size(); ++k) flat[k] = st[k].di * C + st[k].dj;
+
+  const bool use_bound = spec.heuristic_weight > 0 && target >= 0;
+  const DistanceBound bound(g, use_bound ? target : 0, use_bound ? spec.heuristic_weight * min_cost : 0);
+
+  std::fill(dist, dist + g.size(), inf);
+  IndexedHeap heap(s.heap_pos.data());
+  const std::uint8_t* clear = s.clearance.data();
+  std::uint8_t* pred = s.pred.data();
+  SearchStats stats;
+  stats.min_cost = min_cost;
+
+  dist[start] = 0;
+  heap.push_or_decrease(std::uint32_t(start), use_bound ? bound(start) : 0.0);
+
+  auto wrap_col = [&](std::int64_t c) { return c < 0 ? c + C : (c >= C ? c - C : c); };
+
+  while (!heap.empty()) {
+    double key;
+    const std::int64_t v = heap.pop(key);
+    ++stats.settled;
+    if (v == target) break;
+    const double dv = dist[v];
+    const std::int64_t row = v / C, col = v - row * C;
+    const double* len = lengths.row(row);
+    const bool interior = row >= h && row < R - h && col >= h && col < C - h;
+    const bool free = clear[v] > h;
+
+    for (std::int64_t o = 0; o < n_off; ++o) {
+      const Offset& off = st[std::size_t(o)];
+      std::int64_t w;
+      if (interior) {
+        w = v + flat[std::size_t(o)];
+      } else {
+        const std::int64_t r2 = row + off.di;
+        std::int64_t c2 = col + off.dj;
+        if (r2 < 0 || r2 >= R) continue;
+        if (g.wrap) c2 = wrap_col(c2);
+        else if (c2 < 0 || c2 >= C) continue;
+        w = r2 * C + c2;
+      }
+      // Flat index of a pixel met by this step, given relative to v.
+      auto at = [&](int di, int dj) -> std::int64_t {
+        if (interior) return v + std::int64_t(di) * C + dj;
+        return (row + di) * C + (g.wrap ? wrap_col(col + dj) : col + dj);
+      };
+      if (!free) {
+        if (clear[w] == 0) continue;
+        if (spec.land_rule == LandRule::segment) {
+          bool blocked = false;
+          for (const CellShare& t : off.touched)
+            if (clear[at(t.di, t.dj)] == 0) { blocked = true; break; }
+          if (blocked) continue;
+        }
+      }
+      const double c = model(v, w, int(o), len[o], dv,
+                             [&](std::size_t m) { return at(off.shares[m].di, off.shares[m].dj); });
+      const double nd = dv + c;
+      if (nd < dist[w]) {
+        dist[w] = nd;
+        pred[w] = std::uint8_t(o);
+        heap.push_or_decrease(std::uint32_t(w), use_bound ? nd + bound(w) : nd);
+      }
+    }
+  }
+  stats.heap_peak = heap.peak();
+  stats.state_bytes = std::size_t(g.size()) * (sizeof(double) + sizeof(std::uint32_t) + 2) +
+                      heap.capacity_bytes();
+  heap.clear();
+  return stats;
+}
+
+// The pixels of the route from start to `target`, start first, read back from the predecessors.
+inline std::vector<std::int64_t> trace_path(const Grid& g, const std::vector<Offset>& st,
+                                            const SearchState& s, std::int64_t start,
+                                            std::int64_t target) {
+  std::vector<std::int64_t> path{target};
+  std::int64_t v = target;
+  while (v != start) {
+    const std::uint8_t o = s.pred[std::size_t(v)];
+    if (o == no_pred) throw std::logic_error("broken predecessor chain");
+    std::int64_t r = v / g.cols - st[o].di, c = v % g.cols - st[o].dj;
+    if (g.wrap) c = (c + g.cols) % g.cols;
+    v = r * g.cols + c;
+    path.push_back(v);
+    if (path.size() > std::size_t(g.size())) throw std::logic_error("predecessor cycle");
+  }
+  return {path.rbegin(), path.rend()};
+}
+
+}  // namespace seaway
