@@ -1,1 +1,11 @@
+"""seaway: optimal ship routes through sea ice, waves and weather on raster charts.
 
+The C++ core searches the implicit graph whose vertices are a chart's pixels and whose edges
+join each pixel to the pixels of the k x k square around it (Dijkstra and exact A*)."""
+
+from ._engine import cost_field, route
+from .errors import NoRouteError
+from .route import Route
+
+__all__ = ["route", "cost_field", "Route", "NoRouteError"]
+__version__ = "0.1.0"

@@ -1,0 +1,190 @@
+"""Turn what the user gives (numpy arrays or xarray DataArrays, with coordinates or cell sizes)
+into the engine's inputs: a C-contiguous float raster, a land mask and a `_core.Grid`.
+
+All validation happens here, so the C++ core only sees consistent input."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _core
+
+LAT_NAMES = ("lat", "latitude", "nav_lat")
+LON_NAMES = ("lon", "longitude", "long", "nav_lon")
+Y_NAMES = ("y", "yc", "northing")
+X_NAMES = ("x", "xc", "easting")
+
+
+@dataclass
+class Chart:
+    """A validated raster: cost values, land mask and grid geometry."""
+
+    values: np.ndarray  # (rows, cols) float32 or float64, C-contiguous
+    land: np.ndarray | None  # (rows, cols) uint8 or None
+    grid: _core.Grid
+    lat: np.ndarray | None = None  # pixel-centre latitudes (geographic grids)
+    lon: np.ndarray | None = None
+    y: np.ndarray | None = None  # pixel-centre y / x (planar grids)
+    x: np.ndarray | None = None
+    template: object = None  # the DataArray the cost came in, for DataArray results
+
+    @property
+    def geographic(self) -> bool:
+        return bool(self.grid.geographic)
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        return self.values.shape
+
+    def passable(self, rc) -> bool:
+        r, c = rc
+        u = self.values[r, c]
+        return bool(np.isfinite(u) and u >= 0 and (self.land is None or not self.land[r, c]))
+
+    def pixel_coords(self, pixels: np.ndarray) -> np.ndarray:
+        """(n, 2) lat/lon (geographic) or y/x (planar) of pixel centres."""
+        r, c = pixels[:, 0], pixels[:, 1]
+        if self.geographic:
+            return np.column_stack([self.lat[r], self.lon[c]])
+        return np.column_stack([self.y[r], self.x[c]])
+
+
+def _coord_role(name: str, attrs: dict) -> str | None:
+    """'lat', 'lon', 'y' or 'x' for a coordinate, by its name or CF attributes."""
+    lname = str(name).lower()
+    std = str(attrs.get("standard_name", "")).lower()
+    units = str(attrs.get("units", "")).lower()
+    axis = str(attrs.get("axis", "")).upper()
+    if lname in LAT_NAMES or std == "latitude" or units in ("degrees_north", "degree_north", "degrees_n"):
+        return "lat"
+    if lname in LON_NAMES or std == "longitude" or units in ("degrees_east", "degree_east", "degrees_e"):
+        return "lon"
+    if lname in Y_NAMES or std == "projection_y_coordinate" or axis == "Y":
+        return "y"
+    if lname in X_NAMES or std == "projection_x_coordinate" or axis == "X":
+        return "x"
+    return None
+
+
+def _from_dataarray(da):
+    """Values in (row, col) order and the 1-D coordinates found along each dimension."""
+    if da.ndim != 2:
+        raise ValueError(
+            f"cost must be 2-D, got a DataArray with dims {da.dims}; select one time or level "
+            "first, e.g. da.isel(time=0)"
+        )
+    roles = {}
+    for dim in da.dims:
+        coord = da.coords.get(dim)
+        if coord is None:
+            continue
+        role = _coord_role(dim, coord.attrs)
+        if role:
+            roles[role] = (dim, np.asarray(coord.values, dtype=float))
+    if "lat" in roles and "lon" in roles:
+        if da.dims.index(roles["lat"][0]) == 1:  # (lon, lat) order: make rows latitude
+            da = da.transpose(roles["lat"][0], roles["lon"][0])
+        return np.asarray(da.values), {"lat": roles["lat"][1], "lon": roles["lon"][1]}, da
+    if "y" in roles and "x" in roles:
+        if da.dims.index(roles["y"][0]) == 1:
+            da = da.transpose(roles["y"][0], roles["x"][0])
+        return np.asarray(da.values), {"y": roles["y"][1], "x": roles["x"][1]}, da
+    return np.asarray(da.values), {}, da
+
+
+def _regular_step(values: np.ndarray, name: str) -> float:
+    if values.ndim != 1:
+        raise ValueError(f"{name} must be 1-D (pixel centres along one axis), got shape {values.shape}")
+    if not np.all(np.isfinite(values)):
+        raise ValueError(f"{name} holds NaN or infinite values; give the pixel-centre coordinates")
+    if values.size < 2:
+        return 1.0 if name in ("lat", "lon") else 1.0
+    steps = np.diff(values)
+    step = (values[-1] - values[0]) / (values.size - 1)
+    if step == 0 or np.max(np.abs(steps - step)) > 1e-6 * abs(step) + 1e-9:
+        worst = int(np.argmax(np.abs(steps - step)))
+        raise ValueError(
+            f"{name} is not regularly spaced (step {steps[worst]:g} at index {worst}, mean step "
+            f"{step:g}); resample the chart onto a regular grid first, e.g. with "
+            "DataArray.interp()"
+        )
+    return float(step)
+
+
+def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negative=False) -> Chart:
+    """Validate the user's raster and coordinates and build the engine's view of them."""
+    template = None
+    coords: dict = {}
+    if hasattr(cost, "dims") and hasattr(cost, "coords"):  # an xarray.DataArray
+        values, coords, template = _from_dataarray(cost)
+    else:
+        values = np.asarray(cost)
+    if lat is not None or lon is not None:
+        if lat is None or lon is None:
+            raise ValueError("give both lat and lon (1-D pixel-centre coordinates), or neither")
+        coords = {"lat": np.asarray(lat, dtype=float), "lon": np.asarray(lon, dtype=float)}
+    if values.ndim != 2:
+        raise ValueError(f"cost must be a 2-D raster, got shape {values.shape}")
+    if values.shape[0] < 1 or values.shape[1] < 1:
+        raise ValueError(f"cost is empty (shape {values.shape}); give at least one pixel")
+    if values.size >= 2**32 - 1:
+        raise ValueError(f"the chart has {values.size} pixels; the engine handles fewer than 2**32")
+    if values.dtype == np.bool_ or not np.issubdtype(values.dtype, np.number) or np.iscomplexobj(values):
+        raise TypeError(f"cost must hold real numbers, got dtype {values.dtype}")
+    if values.dtype not in (np.float32, np.float64):
+        values = values.astype(np.float64)
+    values = np.ascontiguousarray(values)
+    if not allow_negative:
+        negative = values < 0
+        if negative.any():
+            r, c = np.argwhere(negative)[0]
+            raise ValueError(
+                f"cost has {int(negative.sum())} negative value(s), e.g. {values[r, c]:g} at pixel "
+                f"({r}, {c}); costs must be >= 0: mark impassable pixels with np.inf (or NaN) or "
+                "pass them in the land mask"
+            )
+
+    rows, cols = values.shape
+    mask = None
+    if land is not None:
+        land_arr = np.asarray(land.values if hasattr(land, "dims") else land)
+        if land_arr.shape != values.shape:
+            raise ValueError(f"land has shape {land_arr.shape} but cost has shape {values.shape}; give a mask of the same shape")
+        mask = land_arr.view(np.uint8) if land_arr.dtype == np.bool_ else (land_arr != 0).astype(np.uint8)
+        mask = np.ascontiguousarray(mask)
+
+    grid = _core.Grid()
+    grid.rows, grid.cols = rows, cols
+    chart = Chart(values=values, land=mask, grid=grid, template=template)
+    if "lat" in coords:
+        la, lo = coords["lat"], coords["lon"]
+        if la.shape != (rows,) or lo.shape != (cols,):
+            raise ValueError(
+                f"lat has {la.size} values and lon {lo.size}, but the cost has {rows} rows and "
+                f"{cols} columns; give one latitude per row and one longitude per column"
+            )
+        dlat, dlon = _regular_step(la, "lat"), _regular_step(lo, "lon")
+        if np.any(np.abs(la) > 90):
+            raise ValueError("lat must lie within [-90, 90] degrees")
+        span = abs(dlon) * cols
+        if span > 360 * (1 + 1e-9):
+            raise ValueError(f"lon spans {span:g} degrees; a chart covers at most 360 degrees of longitude")
+        grid.geographic = True
+        grid.lat0, grid.dlat, grid.lon0, grid.dlon = float(la[0]), dlat, float(lo[0]), dlon
+        grid.wrap = bool(abs(span - 360) < 1e-6 * 360)
+        if grid.wrap and cols < 16:
+            raise ValueError("a chart that wraps around the globe needs at least 16 columns")
+        chart.lat, chart.lon = la, lo
+    else:
+        if "y" in coords:
+            dy, dx = abs(_regular_step(coords["y"], "y")), abs(_regular_step(coords["x"], "x"))
+            chart.y, chart.x = coords["y"], coords["x"]
+        for name, v in (("dx", dx), ("dy", dy)):
+            if not (np.isfinite(v) and v > 0):
+                raise ValueError(f"{name} must be a positive cell size, got {v!r}")
+        grid.dx, grid.dy = float(dx), float(dy)
+        if chart.y is None:
+            chart.y, chart.x = np.arange(rows) * float(dy), np.arange(cols) * float(dx)
+    return chart

@@ -1,0 +1,171 @@
+"""route() and cost_field(): validate in Python, search in C++ (seaway._core)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import _core
+from ._chart import Chart, as_chart
+from .errors import NoRouteError
+from .route import Route
+
+EDGE_COSTS = ("max", "mean", "integral")
+DIRECTIONS = ("full", "unique")
+METHODS = ("dijkstra", "astar")
+
+
+def _check_options(neighbourhood, directions, edge_cost):
+    if isinstance(neighbourhood, bool) or not isinstance(neighbourhood, (int, np.integer)):
+        raise TypeError(f"neighbourhood must be an odd integer from 3 to 15, got {neighbourhood!r}")
+    if neighbourhood < 3 or neighbourhood > 15 or neighbourhood % 2 == 0:
+        raise ValueError(
+            f"neighbourhood must be odd and between 3 and 15 (the k of the k x k stencil), got "
+            f"{neighbourhood}; e.g. neighbourhood=5"
+        )
+    if directions not in DIRECTIONS:
+        raise ValueError(f"directions must be one of {DIRECTIONS}, got {directions!r}")
+    if edge_cost not in EDGE_COSTS:
+        raise ValueError(f"edge_cost must be one of {EDGE_COSTS}, got {edge_cost!r}")
+
+
+def _heuristic_weight(method, weight) -> float:
+    if method not in METHODS:
+        raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+    if method == "dijkstra":
+        if weight not in (None, 1, 1.0):
+            raise ValueError("weight inflates the A* heuristic; use it with method='astar'")
+        return 0.0
+    w = 1.0 if weight is None else float(weight)
+    if not (np.isfinite(w) and w >= 1):
+        raise ValueError(f"weight must be a finite number >= 1 (cost <= weight x optimum), got {weight!r}")
+    return w
+
+
+def _nearest_passable(chart: Chart, rc) -> tuple[int, int] | None:
+    ok = np.isfinite(chart.values) & (chart.values >= 0)
+    if chart.land is not None:
+        ok &= chart.land == 0
+    cand = np.argwhere(ok)
+    if cand.size == 0:
+        return None
+    d2 = ((cand - np.asarray(rc)) ** 2).sum(axis=1)
+    r, c = cand[int(np.argmin(d2))]
+    return int(r), int(c)
+
+
+def _describe(chart: Chart, rc) -> str:
+    r, c = rc
+    if chart.geographic:
+        return f"pixel ({r}, {c}) at lat {chart.lat[r]:.4f}, lon {chart.lon[c]:.4f}"
+    return f"pixel ({r}, {c})"
+
+
+def locate(chart: Chart, point, name: str) -> tuple[int, int]:
+    """The pixel of a start or end point: (lat, lon) on geographic charts, (row, col) otherwise."""
+    try:
+        a, b = (float(v) for v in point)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be a pair of numbers, got {point!r}") from None
+    if not (np.isfinite(a) and np.isfinite(b)):
+        raise ValueError(f"{name} must be finite, got {point!r}")
+    rows, cols = chart.shape
+    g = chart.grid
+    if chart.geographic:
+        r = (a - g.lat0) / g.dlat
+        dl = (b - g.lon0) % 360.0
+        if g.dlon < 0:
+            dl -= 360.0
+        c = dl / g.dlon
+        if g.wrap:
+            c %= cols
+            c = 0 if round(c) >= cols else c
+        if not (-0.5 <= r <= rows - 0.5 and -0.5 <= c <= cols - 0.5):
+            lat_lo, lat_hi = sorted((chart.lat[0], chart.lat[-1]))
+            raise ValueError(
+                f"{name} (lat {a:g}, lon {b:g}) lies outside the chart (lat {lat_lo:g} to "
+                f"{lat_hi:g}, lon {chart.lon[0]:g} to {chart.lon[-1]:g}); give a point on the "
+                "chart as (lat, lon)"
+            )
+        r, c = min(int(round(r)), rows - 1), min(int(round(c)), cols - 1)
+    else:
+        if a != int(a) or b != int(b):
+            raise ValueError(f"{name} must be a (row, col) pixel index on a planar chart, got {point!r}")
+        r, c = int(a), int(b)
+        if not (0 <= r < rows and 0 <= c < cols):
+            raise ValueError(
+                f"{name} (row {r}, col {c}) lies outside the chart of {rows} rows x {cols} columns"
+            )
+    if not chart.passable((r, c)):
+        near = _nearest_passable(chart, (r, c))
+        hint = (
+            f"the nearest passable pixel is {_describe(chart, near)}"
+            if near
+            else "no pixel of the chart is passable"
+        )
+        raise ValueError(f"{name} is on an impassable pixel (land, NaN or infinite cost): {_describe(chart, (r, c))}; {hint}")
+    return r, c
+
+
+def _run(chart: Chart, start_rc, end_rc, *, neighbourhood, directions, edge_cost, weight,
+         land_rule="segment", field=False):
+    cols = chart.shape[1]
+    start = start_rc[0] * cols + start_rc[1]
+    target = -1 if end_rc is None else end_rc[0] * cols + end_rc[1]
+    return _core.search(chart.values, chart.land, chart.grid, start, target, neighbourhood,
+                        directions, edge_cost, land_rule, weight, field)
+
+
+def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
+          directions="full", edge_cost="max", method="astar", weight=None) -> Route:
+    """The least-cost route from `start` to `end` over the raster `cost`.
+
+    cost: 2-D numpy array or xarray.DataArray of cost per unit length (>= 0; inf or NaN is
+        impassable). DataArray coordinates named lat/lon, latitude/longitude or y/x, or marked
+        by CF attributes, are used.
+    start, end: (lat, lon) in degrees on geographic charts, (row, col) on planar charts.
+    lat, lon: 1-D regularly spaced pixel-centre coordinates (makes the chart geographic:
+        steps are great-circle distances in km).
+    dx, dy: cell sizes of a planar chart (default 1).
+    land: boolean mask of impassable pixels, same shape as cost.
+    neighbourhood: k of the k x k stencil (odd, 3..15).
+    directions: "full" (every offset of the square) or "unique" (only offsets with
+        gcd(|di|, |dj|) = 1).
+    edge_cost: "max" (paper 000), "mean" (paper 003) or "integral" (exact line integral).
+    method: "dijkstra" or "astar" (exact); with weight=w > 1, weighted A* (cost <= w x optimum).
+    """
+    _check_options(neighbourhood, directions, edge_cost)
+    w = _heuristic_weight(method, weight)
+    chart = as_chart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land)
+    s, e = locate(chart, start, "start"), locate(chart, end, "end")
+    total, path, stats, _ = _run(chart, s, e, neighbourhood=neighbourhood, directions=directions,
+                                 edge_cost=edge_cost, weight=w)
+    if not np.isfinite(total):
+        raise NoRouteError(
+            f"no route from start {_describe(chart, s)} to end {_describe(chart, e)}: no chain of "
+            f"passable steps joins them with neighbourhood={neighbourhood} (separate water bodies, "
+            "or a passage narrower than the land rule allows); try a larger neighbourhood, check "
+            "the land mask, or choose another end point"
+        )
+    rows, cols = chart.shape
+    pixels = np.column_stack(np.divmod(path, cols)).astype(np.int64)
+    return Route(chart=chart, cost=float(total), pixels=pixels, method=method,
+                 neighbourhood=neighbourhood, edge_cost=edge_cost, stats=dict(stats))
+
+
+def cost_field(cost, start, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
+               directions="full", edge_cost="max"):
+    """The accumulated least cost from `start` to every pixel (inf where unreachable).
+
+    Takes the same arguments as route(). A DataArray in gives a DataArray out, on the same
+    coordinates."""
+    _check_options(neighbourhood, directions, edge_cost)
+    chart = as_chart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land)
+    s = locate(chart, start, "start")
+    _, _, _, field = _run(chart, s, None, neighbourhood=neighbourhood, directions=directions,
+                          edge_cost=edge_cost, weight=0.0, field=True)
+    if chart.template is not None:
+        out = chart.template.copy(data=field)
+        out.name = "accumulated_cost"
+        out.attrs = {"long_name": "least accumulated cost from the start", "start": str(tuple(start))}
+        return out
+    return field
