@@ -67,7 +67,9 @@ Outcome run(const Grid& g, const Raster<T>& cost, const std::optional<Mask>& lan
   const T* u = cost.data();
   Outcome out;
   auto go = [&](const auto& model) {
-    out.stats = search(spec, model, lengths, min_cost, start, target, dist, s);
+    // Weighted A* keys are not monotone: they need a comparison heap.
+    if (weight > 1) out.stats = search<QuaternaryHeap>(spec, model, lengths, min_cost, start, target, dist, s);
+    else out.stats = search<RadixHeap>(spec, model, lengths, min_cost, start, target, dist, s);
   };
   if (edge_cost == "max") go(MaxCost<T>{u});
   else if (edge_cost == "mean") go(MeanCost<T>{u});

@@ -1,97 +1,128 @@
-// A 4-ary min-heap of pixel ids keyed by double, with decrease-key through a position array
-// that the caller owns (one uint32 per pixel), so the search state stays flat and reusable.
+// Priority queues for the search, both with lazy deletion: a pixel whose cost improves is
+// pushed again and its older entries are skipped when popped (their cost no longer matches
+// the pixel's). They need no per-pixel position array and hold only the frontier.
+//  - RadixHeap: for monotone keys (Dijkstra, and A* with a consistent bound): amortised O(1)
+//    push, cheap pops; non-negative doubles order like their bit patterns.
+//  - QuaternaryHeap: a 4-ary heap for keys that are not monotone (weighted A*).
 #pragma once
 
+#include <algorithm>
+#include <array>
+#include <cstddef>
 #include <cstdint>
-#include <limits>
+#include <cstring>
 #include <vector>
 
 namespace seaway {
 
-class IndexedHeap {
+struct HeapEntry {
+  double key;   // priority: cost so far (+ A* bound)
+  double cost;  // cost so far when pushed; stale once the pixel's cost is lower
+  std::uint32_t id;
+};
+
+class RadixHeap {
  public:
-  static constexpr std::uint32_t absent = std::numeric_limits<std::uint32_t>::max();
-
-  explicit IndexedHeap(std::uint32_t* pos) : pos_(pos) {}
-
-  bool empty() const { return items_.empty(); }
+  bool empty() const { return size_ == 0; }
   std::size_t peak() const { return peak_; }
-  std::size_t capacity_bytes() const { return items_.capacity() * sizeof(Item); }
-
-  // Insert `id`, or lower its key if it is already queued with a larger one.
-  void push_or_decrease(std::uint32_t id, double key) {
-    std::uint32_t at = pos_[id];
-    if (at == absent) {
-      at = static_cast<std::uint32_t>(items_.size());
-      items_.push_back({key, id});
-      if (items_.size() > peak_) peak_ = items_.size();
-    } else {
-      if (!(key < items_[at].key)) return;
-      items_[at].key = key;
-    }
-    sift_up(at);
+  std::size_t capacity_bytes() const {
+    std::size_t b = 0;
+    for (const auto& v : buckets_) b += v.capacity() * sizeof(HeapEntry);
+    return b;
   }
 
-  // Remove and return the id with the smallest key.
-  std::uint32_t pop(double& key) {
-    const Item top = items_.front();
-    pos_[top.id] = absent;
-    const Item last = items_.back();
-    items_.pop_back();
-    if (!items_.empty()) {
-      items_[0] = last;
-      pos_[last.id] = 0;
-      sift_down(0);
+  void push(HeapEntry e) {
+    // A consistent A* bound keeps keys monotone up to rounding; never go below the last pop.
+    if (e.key < last_key_) e.key = last_key_;
+    buckets_[bucket(bits(e.key))].push_back(e);
+    if (++size_ > peak_) peak_ = size_;
+  }
+
+  HeapEntry pop() {
+    if (buckets_[0].empty()) {
+      std::size_t i = 1;
+      while (buckets_[i].empty()) ++i;
+      std::vector<HeapEntry>& from = buckets_[i];
+      auto least = std::min_element(from.begin(), from.end(),
+                                    [](const HeapEntry& a, const HeapEntry& b) { return a.key < b.key; });
+      last_key_ = least->key;
+      last_ = bits(last_key_);
+      for (const HeapEntry& e : from) buckets_[bucket(bits(e.key))].push_back(e);
+      from.clear();
     }
-    key = top.key;
-    return top.id;
+    const HeapEntry top = buckets_[0].back();
+    buckets_[0].pop_back();
+    --size_;
+    return top;
   }
 
   void clear() {
-    for (const Item& it : items_) pos_[it.id] = absent;
-    items_.clear();
+    for (auto& v : buckets_) v.clear();
+    size_ = 0;
+    last_ = 0;
+    last_key_ = 0;
   }
 
  private:
-  struct Item {
-    double key;
-    std::uint32_t id;
-  };
+  static std::uint64_t bits(double x) {
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  }
+  std::size_t bucket(std::uint64_t k) const {
+    return k == last_ ? 0 : std::size_t(64 - __builtin_clzll(k ^ last_));
+  }
 
-  void sift_up(std::uint32_t at) {
-    const Item it = items_[at];
+  std::array<std::vector<HeapEntry>, 65> buckets_;
+  std::uint64_t last_ = 0;
+  double last_key_ = 0;
+  std::size_t size_ = 0, peak_ = 0;
+};
+
+class QuaternaryHeap {
+ public:
+  bool empty() const { return items_.empty(); }
+  std::size_t peak() const { return peak_; }
+  std::size_t capacity_bytes() const { return items_.capacity() * sizeof(HeapEntry); }
+
+  void push(const HeapEntry& e) {
+    std::size_t at = items_.size();
+    items_.push_back(e);
+    peak_ = std::max(peak_, items_.size());
     while (at > 0) {
-      const std::uint32_t parent = (at - 1) / 4;
-      if (!(it.key < items_[parent].key)) break;
+      const std::size_t parent = (at - 1) / 4;
+      if (!(e.key < items_[parent].key)) break;
       items_[at] = items_[parent];
-      pos_[items_[at].id] = at;
       at = parent;
     }
-    items_[at] = it;
-    pos_[it.id] = at;
+    items_[at] = e;
   }
 
-  void sift_down(std::uint32_t at) {
-    const Item it = items_[at];
+  HeapEntry pop() {
+    const HeapEntry top = items_.front();
+    const HeapEntry last = items_.back();
+    items_.pop_back();
     const std::size_t n = items_.size();
+    if (n == 0) return top;
+    std::size_t at = 0;
     for (;;) {
-      const std::size_t first = std::size_t(at) * 4 + 1;
+      const std::size_t first = at * 4 + 1;
       if (first >= n) break;
       std::size_t best = first;
-      const std::size_t last = std::min(first + 4, n);
-      for (std::size_t c = first + 1; c < last; ++c)
+      for (std::size_t c = first + 1; c < std::min(first + 4, n); ++c)
         if (items_[c].key < items_[best].key) best = c;
-      if (!(items_[best].key < it.key)) break;
+      if (!(items_[best].key < last.key)) break;
       items_[at] = items_[best];
-      pos_[items_[at].id] = at;
-      at = static_cast<std::uint32_t>(best);
+      at = best;
     }
-    items_[at] = it;
-    pos_[it.id] = at;
+    items_[at] = last;
+    return top;
   }
 
-  std::vector<Item> items_;
-  std::uint32_t* pos_;
+  void clear() { items_.clear(); }
+
+ private:
+  std::vector<HeapEntry> items_;
   std::size_t peak_ = 0;
 };
 

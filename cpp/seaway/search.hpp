@@ -23,15 +23,12 @@ constexpr std::uint8_t no_pred = 255;
 // coastlines, no jumping over land). `ends`: only the two ends (scikit-image's rule).
 enum class LandRule { segment, ends };
 
-// Per-pixel search state: 8 (cost) + 4 (heap position) + 1 (predecessor) + 1 (clearance)
-// bytes per pixel, plus the heap, which holds only the frontier.
+// Per-pixel search state: 1 byte of predecessor and 1 of clearance; the caller supplies the
+// 8 bytes of accumulated cost per pixel. The queue holds only the frontier.
 struct SearchState {
-  std::vector<std::uint32_t> heap_pos;
   std::vector<std::uint8_t> pred, clearance;
-  std::vector<double> own_dist;  // used when the caller gives no buffer for the costs
 
   void resize(std::int64_t n) {
-    heap_pos.assign(std::size_t(n), IndexedHeap::absent);
     pred.assign(std::size_t(n), no_pred);
     clearance.resize(std::size_t(n));
   }
@@ -54,7 +51,7 @@ struct SearchSpec {
 // Runs from `start` until `target` is settled (target < 0: until every reachable pixel is).
 // dist[v] ends as the accumulated cost of v (exact for settled pixels), inf if never reached.
 // The clearance must have been filled by compute_clearance() with cap = half-width + 1.
-template <class Model>
+template <class Queue, class Model>
 SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengths& lengths,
                    double min_cost, std::int64_t start, std::int64_t target, double* dist,
                    SearchState& s) {
@@ -71,68 +68,76 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
   const DistanceBound bound(g, use_bound ? target : 0, use_bound ? spec.heuristic_weight * min_cost : 0);
 
   std::fill(dist, dist + g.size(), inf);
-  IndexedHeap heap(s.heap_pos.data());
+  Queue heap;
   const std::uint8_t* clear = s.clearance.data();
   std::uint8_t* pred = s.pred.data();
   SearchStats stats;
   stats.min_cost = min_cost;
 
   dist[start] = 0;
-  heap.push_or_decrease(std::uint32_t(start), use_bound ? bound(start) : 0.0);
+  heap.push({use_bound ? bound(start) : 0.0, 0.0, std::uint32_t(start)});
 
   auto wrap_col = [&](std::int64_t c) { return c < 0 ? c + C : (c >= C ? c - C : c); };
 
   while (!heap.empty()) {
-    double key;
-    const std::int64_t v = heap.pop(key);
+    const HeapEntry top = heap.pop();
+    const std::int64_t v = top.id;
+    const double dv = dist[v];
+    if (top.cost > dv) continue;  // stale: v was reached more cheaply after this push
     ++stats.settled;
     if (v == target) break;
-    const double dv = dist[v];
     const std::int64_t row = v / C, col = v - row * C;
     const double* len = lengths.row(row);
     const bool interior = row >= h && row < R - h && col >= h && col < C - h;
-    const bool free = clear[v] > h;
 
-    for (std::int64_t o = 0; o < n_off; ++o) {
-      const Offset& off = st[std::size_t(o)];
-      std::int64_t w;
-      if (interior) {
-        w = v + flat[std::size_t(o)];
-      } else {
-        const std::int64_t r2 = row + off.di;
-        std::int64_t c2 = col + off.dj;
-        if (r2 < 0 || r2 >= R) continue;
-        if (g.wrap) c2 = wrap_col(c2);
-        else if (c2 < 0 || c2 >= C) continue;
-        w = r2 * C + c2;
-      }
-      // Flat index of a pixel met by this step, given relative to v.
-      auto at = [&](int di, int dj) -> std::int64_t {
-        if (interior) return v + std::int64_t(di) * C + dj;
-        return (row + di) * C + (g.wrap ? wrap_col(col + dj) : col + dj);
-      };
-      if (!free) {
-        if (clear[w] == 0) continue;
-        if (spec.land_rule == LandRule::segment) {
-          bool blocked = false;
-          for (const CellShare& t : off.touched)
-            if (clear[at(t.di, t.dj)] == 0) { blocked = true; break; }
-          if (blocked) continue;
-        }
-      }
-      const double c = model(v, w, int(o), len[o], dv,
-                             [&](std::size_t m) { return at(off.shares[m].di, off.shares[m].dj); });
+    auto relax = [&](std::int64_t w, double c, std::int64_t o) {
       const double nd = dv + c;
       if (nd < dist[w]) {
         dist[w] = nd;
         pred[w] = std::uint8_t(o);
-        heap.push_or_decrease(std::uint32_t(w), use_bound ? nd + bound(w) : nd);
+        heap.push({use_bound ? nd + bound(w) : nd, nd, std::uint32_t(w)});
       }
+    };
+
+    if (interior && clear[v] > h) {
+      // The common case: away from the border and from land, every step exists and is free.
+      for (std::int64_t o = 0; o < n_off; ++o) {
+        const std::int64_t w = v + flat[std::size_t(o)];
+        const auto& shares = st[std::size_t(o)].shares;
+        relax(w, model(v, w, int(o), len[o], dv,
+                       [&](std::size_t m) { return v + shares[m].di * C + shares[m].dj; }),
+              o);
+      }
+      continue;
+    }
+
+    // Near land or the border: check each step's existence and the land rule.
+    for (std::int64_t o = 0; o < n_off; ++o) {
+      const Offset& off = st[std::size_t(o)];
+      const std::int64_t r2 = row + off.di;
+      std::int64_t c2 = col + off.dj;
+      if (r2 < 0 || r2 >= R) continue;
+      if (g.wrap) c2 = wrap_col(c2);
+      else if (c2 < 0 || c2 >= C) continue;
+      const std::int64_t w = r2 * C + c2;
+      if (clear[w] == 0) continue;
+      // Flat index of a pixel met by this step, given relative to v.
+      auto at = [&](int di, int dj) {
+        return (row + di) * C + (g.wrap ? wrap_col(col + dj) : col + dj);
+      };
+      if (spec.land_rule == LandRule::segment) {
+        bool blocked = false;
+        for (const CellShare& t : off.touched)
+          if (clear[at(t.di, t.dj)] == 0) { blocked = true; break; }
+        if (blocked) continue;
+      }
+      relax(w, model(v, w, int(o), len[o], dv,
+                     [&](std::size_t m) { return at(off.shares[m].di, off.shares[m].dj); }),
+            o);
     }
   }
   stats.heap_peak = heap.peak();
-  stats.state_bytes = std::size_t(g.size()) * (sizeof(double) + sizeof(std::uint32_t) + 2) +
-                      heap.capacity_bytes();
+  stats.state_bytes = std::size_t(g.size()) * (sizeof(double) + 2) + heap.capacity_bytes();
   heap.clear();
   return stats;
 }
