@@ -17,6 +17,8 @@ namespace seaway {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr std::uint8_t no_pred = 255;
+constexpr std::uint8_t closed_bit = 0x80;  // set in a pixel's clearance once it is expanded
+constexpr std::uint8_t clearance_bits = 0x7f;
 
 // Which pixels a step must keep clear of. `segment`: both ends and every pixel whose closed
 // square the closed straight segment touches (the papers' rule: no leaking through diagonal
@@ -69,7 +71,7 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
 
   std::fill(dist, dist + g.size(), inf);
   Queue heap;
-  const std::uint8_t* clear = s.clearance.data();
+  std::uint8_t* clear = s.clearance.data();
   std::uint8_t* pred = s.pred.data();
   SearchStats stats;
   stats.min_cost = min_cost;
@@ -84,6 +86,8 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
     const std::int64_t v = top.id;
     const double dv = dist[v];
     if (top.cost > dv) continue;  // stale: v was reached more cheaply after this push
+    if (clear[v] & closed_bit) continue;
+    clear[v] |= closed_bit;
     ++stats.settled;
     if (v == target) break;
     const std::int64_t row = v / C, col = v - row * C;
@@ -93,13 +97,16 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
     auto relax = [&](std::int64_t w, double c, std::int64_t o) {
       const double nd = dv + c;
       if (nd < dist[w]) {
+        // Never reopen an expanded pixel: exact searches do not need to, and weighted A*
+        // keeps its bound (cost <= w x optimum) without it.
+        if (clear[w] & closed_bit) return;
         dist[w] = nd;
         pred[w] = std::uint8_t(o);
         heap.push({use_bound ? nd + bound(w) : nd, nd, std::uint32_t(w)});
       }
     };
 
-    if (interior && clear[v] > h) {
+    if (interior && (clear[v] & clearance_bits) > h) {
       // The common case: away from the border and from land, every step exists and is free.
       for (std::int64_t o = 0; o < n_off; ++o) {
         const std::int64_t w = v + flat[std::size_t(o)];

@@ -126,7 +126,10 @@ def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negat
             raise ValueError("give both lat and lon (1-D pixel-centre coordinates), or neither")
         coords = {"lat": np.asarray(lat, dtype=float), "lon": np.asarray(lon, dtype=float)}
     if values.ndim != 2:
-        raise ValueError(f"cost must be a 2-D raster, got shape {values.shape}")
+        raise ValueError(
+            f"cost must be a 2-D raster, got shape {values.shape}; give one (rows, cols) layer, "
+            "e.g. cost[0] for the first time step"
+        )
     if values.shape[0] < 1 or values.shape[1] < 1:
         raise ValueError(f"cost is empty (shape {values.shape}); give at least one pixel")
     if values.size >= 2**32 - 1:
@@ -149,6 +152,8 @@ def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negat
     rows, cols = values.shape
     mask = None
     if land is not None:
+        if hasattr(land, "dims") and template is not None and set(land.dims) == set(template.dims):
+            land = land.transpose(*template.dims)  # same (row, col) order as the cost
         land_arr = np.asarray(land.values if hasattr(land, "dims") else land)
         if land_arr.shape != values.shape:
             raise ValueError(f"land has shape {land_arr.shape} but cost has shape {values.shape}; give a mask of the same shape")
@@ -165,7 +170,11 @@ def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negat
                 f"lat has {la.size} values and lon {lo.size}, but the cost has {rows} rows and "
                 f"{cols} columns; give one latitude per row and one longitude per column"
             )
-        dlat, dlon = _regular_step(la, "lat"), _regular_step(lo, "lon")
+        lo_grid = lo
+        if lo.size > 1 and np.all(np.isfinite(lo)) and np.any(np.abs(np.diff(lo)) > 180):
+            # labelled across the antimeridian (..., 170, -180, -170, ...): make it continuous
+            lo_grid = lo[0] + np.concatenate([[0.0], np.cumsum((np.diff(lo) + 180) % 360 - 180)])
+        dlat, dlon = _regular_step(la, "lat"), _regular_step(lo_grid, "lon")
         if np.any(np.abs(la) > 90):
             raise ValueError("lat must lie within [-90, 90] degrees")
         span = abs(dlon) * cols

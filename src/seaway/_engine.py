@@ -72,13 +72,13 @@ def locate(chart: Chart, point, name: str) -> tuple[int, int]:
     g = chart.grid
     if chart.geographic:
         r = (a - g.lat0) / g.dlat
-        dl = (b - g.lon0) % 360.0
-        if g.dlon < 0:
-            dl -= 360.0
-        c = dl / g.dlon
+        # Shift by whole turns so the column lands in [-0.5, period - 0.5): takes 0..360 and
+        # -180..180 longitudes alike, on ascending or descending charts, up to half a pixel
+        # outside the first column's centre.
+        period = 360.0 / abs(g.dlon)
+        c = ((b - g.lon0) / g.dlon + 0.5) % period - 0.5
         if g.wrap:
-            c %= cols
-            c = 0 if round(c) >= cols else c
+            c = float(int(round(c)) % cols)
         if not (-0.5 <= r <= rows - 0.5 and -0.5 <= c <= cols - 0.5):
             lat_lo, lat_hi = sorted((chart.lat[0], chart.lat[-1]))
             raise ValueError(
@@ -89,11 +89,15 @@ def locate(chart: Chart, point, name: str) -> tuple[int, int]:
         r, c = min(int(round(r)), rows - 1), min(int(round(c)), cols - 1)
     else:
         if a != int(a) or b != int(b):
-            raise ValueError(f"{name} must be a (row, col) pixel index on a planar chart, got {point!r}")
+            raise ValueError(
+                f"{name} must be a (row, col) pixel index on a planar chart, got {point!r}; to give "
+                "(lat, lon) points, pass lat= and lon= (or a DataArray with lat/lon coordinates)"
+            )
         r, c = int(a), int(b)
         if not (0 <= r < rows and 0 <= c < cols):
             raise ValueError(
-                f"{name} (row {r}, col {c}) lies outside the chart of {rows} rows x {cols} columns"
+                f"{name} (row {r}, col {c}) lies outside the chart of {rows} rows x {cols} columns; "
+                f"give a (row, col) pixel index with 0 <= row < {rows} and 0 <= col < {cols}"
             )
     if not chart.passable((r, c)):
         near = _nearest_passable(chart, (r, c))
@@ -165,6 +169,8 @@ def cost_field(cost, start, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, ne
                           edge_cost=edge_cost, weight=0.0, field=True)
     if chart.template is not None:
         out = chart.template.copy(data=field)
+        if out.dims != cost.dims:  # the chart was transposed to (lat, lon): give it back as it came
+            out = out.transpose(*cost.dims)
         out.name = "accumulated_cost"
         out.attrs = {"long_name": "least accumulated cost from the start", "start": str(tuple(start))}
         return out

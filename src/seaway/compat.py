@@ -38,6 +38,8 @@ def route_through_array(costs, start, end, fully_connected=True, geometric=True)
             raise ValueError(f"{name} {tuple(p)} lies outside the array of shape {arr.shape}")
         pts.append((r, c))
     (s, e) = pts
+    if not geometric and not chart.values[s] < np.inf:  # +inf or NaN start: skimage finds no path
+        raise NoRouteError("no minimum-cost path was found to the specified end point")
     total, path, _, _ = _run(chart, s, e, neighbourhood=3,
                              directions="full" if fully_connected else "axis",
                              edge_cost="mean" if geometric else "entered", weight=0.0,

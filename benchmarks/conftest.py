@@ -1,0 +1,45 @@
+"""Shared fixtures for the benchmarks and the ratio table printed at the end of the run.
+
+Run: pytest benchmarks/ --benchmark-columns=median,iqr,rounds (see benchmarks/README.md)."""
+
+import platform
+
+import numpy as np
+import pytest
+
+from seaway.charts import synthetic_endpoints, synthetic_sea
+
+SHAPE = (1900, 2300)  # the Kara Sea chart of paper 000: about 2300 x 1900 pixels
+
+MEDIANS: dict[str, float] = {}
+NOTES: dict[str, str] = {}
+
+
+@pytest.fixture(scope="session")
+def chart():
+    cost = synthetic_sea(SHAPE)
+    start, end = synthetic_endpoints(SHAPE)
+    return cost, start, end
+
+
+def record(name, benchmark, note=""):
+    MEDIANS[name] = benchmark.stats.stats.median
+    if note:
+        NOTES[name] = note
+
+
+def pytest_terminal_summary(terminalreporter):
+    if not MEDIANS:
+        return
+    tr = terminalreporter
+    peer = MEDIANS.get("skimage MCP_Geometric 8-conn")
+    tr.write_sep("=", "seaway benchmark: medians and ratios")
+    tr.write_line(f"machine: {platform.processor() or platform.machine()}, python {platform.python_version()}, numpy {np.__version__}")
+    tr.write_line(f"{'case':44s} {'median s':>9s} {'speed-up vs skimage':>20s}  note")
+    for name, med in MEDIANS.items():
+        ratio = f"{peer / med:.2f}x" if peer else "-"
+        tr.write_line(f"{name:44s} {med:9.3f} {ratio:>20s}  {NOTES.get(name, '')}")
+    for k in (3, 5, 7):
+        d, a = MEDIANS.get(f"seaway dijkstra k={k}"), MEDIANS.get(f"seaway astar k={k}")
+        if d and a:
+            tr.write_line(f"A* speed-up over Dijkstra, k={k}: {d / a:.2f}x")
