@@ -39,7 +39,13 @@ def pytest_terminal_summary(terminalreporter):
     for name, med in MEDIANS.items():
         ratio = f"{peer / med:.2f}x" if peer else "-"
         tr.write_line(f"{name:44s} {med:9.3f} {ratio:>20s}  {NOTES.get(name, '')}")
+    for name, note in NOTES.items():
+        if name not in MEDIANS:
+            tr.write_line(f"{name}: {note}")
     for k in (3, 5, 7):
         d, a = MEDIANS.get(f"seaway dijkstra k={k}"), MEDIANS.get(f"seaway astar k={k}")
         if d and a:
             tr.write_line(f"A* speed-up over Dijkstra, k={k}: {d / a:.2f}x")
+    d, a = (MEDIANS.get(f"summer chart (costs 1-2) {m} k=5") for m in ("dijkstra", "astar"))
+    if d and a:
+        tr.write_line(f"A* speed-up over Dijkstra on the summer chart, k=5: {d / a:.2f}x")

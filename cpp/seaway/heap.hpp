@@ -1,6 +1,6 @@
 // Priority queues for the search, both with lazy deletion: a pixel whose cost improves is
-// pushed again and its older entries are skipped when popped (their cost no longer matches
-// the pixel's). They need no per-pixel position array and hold only the frontier.
+// pushed again; its best entry pops first and later ones are skipped because the pixel is
+// closed by then. They need no per-pixel position array and hold only the frontier.
 //  - RadixHeap: for monotone keys (Dijkstra, and A* with a consistent bound): amortised O(1)
 //    push, cheap pops; non-negative doubles order like their bit patterns.
 //  - QuaternaryHeap: a 4-ary heap for keys that are not monotone (weighted A*).
@@ -16,8 +16,7 @@
 namespace seaway {
 
 struct HeapEntry {
-  double key;   // priority: cost so far (+ A* bound)
-  double cost;  // cost so far when pushed; stale once the pixel's cost is lower
+  double key;  // priority: cost so far (+ A* bound)
   std::uint32_t id;
 };
 

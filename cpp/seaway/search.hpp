@@ -77,19 +77,18 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
   stats.min_cost = min_cost;
 
   dist[start] = 0;
-  heap.push({use_bound ? bound(start) : 0.0, 0.0, std::uint32_t(start)});
+  heap.push({use_bound ? bound(start) : 0.0, std::uint32_t(start)});
 
   auto wrap_col = [&](std::int64_t c) { return c < 0 ? c + C : (c >= C ? c - C : c); };
 
   while (!heap.empty()) {
     const HeapEntry top = heap.pop();
     const std::int64_t v = top.id;
-    const double dv = dist[v];
-    if (top.cost > dv) continue;  // stale: v was reached more cheaply after this push
-    if (clear[v] & closed_bit) continue;
+    if (clear[v] & closed_bit) continue;  // an older, costlier entry of an expanded pixel
     clear[v] |= closed_bit;
     ++stats.settled;
     if (v == target) break;
+    const double dv = dist[v];
     const std::int64_t row = v / C, col = v - row * C;
     const double* len = lengths.row(row);
     const bool interior = row >= h && row < R - h && col >= h && col < C - h;
@@ -102,7 +101,7 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
         if (clear[w] & closed_bit) return;
         dist[w] = nd;
         pred[w] = std::uint8_t(o);
-        heap.push({use_bound ? nd + bound(w) : nd, nd, std::uint32_t(w)});
+        heap.push({use_bound ? nd + bound(w) : nd, std::uint32_t(w)});
       }
     };
 
