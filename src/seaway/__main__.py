@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
+import tempfile
 import time
 
 import numpy as np
@@ -120,10 +122,22 @@ def demo(args) -> int:
         feature = r.to_geojson()
         feature["properties"].update(ice_class=args.ice_class, start=KARA_GATE[0],
                                      end=VILKITSKY_STRAIT[0], chart=ds.attrs["title"])
-        with open(args.out, "w", encoding="utf-8") as f:
-            json.dump(feature, f)
+        _write_atomically(args.out, json.dumps(feature))
         print(f"written:      {args.out}")
     return 0
+
+
+def _write_atomically(path: str, text: str) -> None:
+    """Write to a temporary file beside `path`, then rename: never a half-written file."""
+    target = os.path.abspath(path)
+    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(target), prefix=".seaway-", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as f:
+            f.write(text)
+        os.replace(tmp, target)
+    except BaseException:
+        os.unlink(tmp)
+        raise
 
 
 def main(argv=None) -> int:
