@@ -100,7 +100,7 @@ def _regular_step(values: np.ndarray, name: str) -> float:
     if not np.all(np.isfinite(values)):
         raise ValueError(f"{name} holds NaN or infinite values; give the pixel-centre coordinates")
     if values.size < 2:
-        return 1.0 if name in ("lat", "lon") else 1.0
+        return 1.0  # a single row or column: no step along this axis is ever taken
     steps = np.diff(values)
     step = (values[-1] - values[0]) / (values.size - 1)
     if step == 0 or np.max(np.abs(steps - step)) > 1e-6 * abs(step) + 1e-9:

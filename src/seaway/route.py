@@ -38,10 +38,8 @@ class Route:
         c = self.coords
         if self.geographic:
             return np.array([haversine_km(a[0], a[1], b[0], b[1]) for a, b in zip(c[:-1], c[1:])])
-        g = self.chart.grid
+        g = self.chart.grid  # planar charts never wrap
         d = np.diff(self.pixels, axis=0).astype(float)
-        if g.wrap:  # never true on planar charts; kept for clarity of intent
-            d[:, 1] = (d[:, 1] + g.cols / 2) % g.cols - g.cols / 2
         return np.hypot(d[:, 0] * g.dy, d[:, 1] * g.dx)
 
     @property
