@@ -3,6 +3,9 @@
 // closed by then. They need no per-pixel position array and hold only the frontier.
 //  - RadixHeap: for monotone keys (Dijkstra, and A* with a consistent bound): amortised O(1)
 //    push, cheap pops; non-negative doubles order like their bit patterns.
+//  - BucketQueue: for Dijkstra when every step costs at least `width` > 0: pixels whose keys
+//    share a bucket [k*width, (k+1)*width) cannot improve each other, so a bucket may be
+//    emptied in any order and the labels stay exact (Dial's algorithm on real keys).
 //  - QuaternaryHeap: a 4-ary heap for keys that are not monotone (weighted A*).
 #pragma once
 
@@ -55,13 +58,6 @@ class RadixHeap {
     return top;
   }
 
-  void clear() {
-    for (auto& v : buckets_) v.clear();
-    size_ = 0;
-    last_ = 0;
-    last_key_ = 0;
-  }
-
  private:
   static std::uint64_t bits(double x) {
     std::uint64_t b;
@@ -75,6 +71,54 @@ class RadixHeap {
   std::array<std::vector<HeapEntry>, 65> buckets_;
   std::uint64_t last_ = 0;
   double last_key_ = 0;
+  std::size_t size_ = 0, peak_ = 0;
+};
+
+class BucketQueue {
+ public:
+  // width: at most the cheapest step; span: at least the costliest step.
+  BucketQueue(double width, double span)
+      : inv_width_(1.0 / width), ring_(std::size_t(span / width) + 2) {}
+
+  // How many buckets a queue for these step costs needs.
+  static double buckets_needed(double width, double span) { return span / width + 2; }
+
+  bool empty() const { return size_ == 0; }
+  std::size_t peak() const { return peak_; }
+  std::size_t capacity_bytes() const {
+    std::size_t b = ring_.capacity() * sizeof(ring_[0]);
+    for (const auto& v : ring_) b += v.capacity() * sizeof(HeapEntry);
+    return b;
+  }
+
+  void push(const HeapEntry& e) {
+    // Keys are never below the current bucket (a step costs >= 0), and never a ring or more
+    // above it (a step costs < span); clamp rounding at both ends.
+    std::uint64_t k = std::uint64_t(e.key * inv_width_);
+    if (!started_) {  // the first key (an A* bound) may lie far from zero: start the ring there
+      current_ = k;
+      started_ = true;
+    }
+    if (k < current_) k = current_;
+    if (k >= current_ + ring_.size()) k = current_ + ring_.size() - 1;
+    ring_[k % ring_.size()].push_back(e);
+    if (++size_ > peak_) peak_ = size_;
+  }
+
+  HeapEntry pop() {
+    while (ring_[current_ % ring_.size()].empty()) ++current_;
+    std::vector<HeapEntry>& b = ring_[current_ % ring_.size()];
+    const HeapEntry top = b.back();
+    b.pop_back();
+    --size_;
+    return top;
+  }
+
+ private:
+  double inv_width_;
+  std::vector<std::vector<HeapEntry>> ring_;
+  std::uint64_t current_ = 0;
+  bool started_ = false;
   std::size_t size_ = 0, peak_ = 0;
 };
 
@@ -117,8 +161,6 @@ class QuaternaryHeap {
     items_[at] = last;
     return top;
   }
-
-  void clear() { items_.clear(); }
 
  private:
   std::vector<HeapEntry> items_;

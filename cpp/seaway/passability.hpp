@@ -14,6 +14,7 @@ namespace seaway {
 
 struct Passability {
   double min_cost = std::numeric_limits<double>::infinity();  // over passable pixels
+  double max_cost = 0;
   std::int64_t passable = 0;                                  // how many there are
 };
 
@@ -46,6 +47,7 @@ Passability compute_clearance(const Grid& g, const T* cost, const std::uint8_t* 
       } else {
         const double x = double(u[c]);
         if (x < out.min_cost) out.min_cost = x;
+        if (x > out.max_cost) out.max_cost = x;
         ++out.passable;
       }
       h[c] = std::uint8_t(std::min<std::int64_t>(c - last, cap));

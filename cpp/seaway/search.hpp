@@ -56,7 +56,7 @@ struct SearchSpec {
 template <class Queue, class Model>
 SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengths& lengths,
                    double min_cost, std::int64_t start, std::int64_t target, double* dist,
-                   SearchState& s) {
+                   SearchState& s, Queue heap) {
   const Grid& g = *spec.grid;
   const std::vector<Offset>& st = *spec.stencil;
   const std::int64_t R = g.rows, C = g.cols, n_off = std::int64_t(st.size());
@@ -70,7 +70,6 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
   const DistanceBound bound(g, use_bound ? target : 0, use_bound ? spec.heuristic_weight * min_cost : 0);
 
   std::fill(dist, dist + g.size(), inf);
-  Queue heap;
   std::uint8_t* clear = s.clearance.data();
   std::uint8_t* pred = s.pred.data();
   SearchStats stats;
@@ -144,7 +143,6 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
   }
   stats.heap_peak = heap.peak();
   stats.state_bytes = std::size_t(g.size()) * (sizeof(double) + 2) + heap.capacity_bytes();
-  heap.clear();
   return stats;
 }
 
