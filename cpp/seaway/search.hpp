@@ -3,6 +3,7 @@
 // The search is a template over the edge-cost model, so new costs are new functors.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -17,22 +18,44 @@ namespace seaway {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr std::uint8_t no_pred = 255;
-constexpr std::uint8_t closed_bit = 0x80;  // set in a pixel's clearance once it is expanded
-constexpr std::uint8_t clearance_bits = 0x7f;
-
 // Which pixels a step must keep clear of. `segment`: both ends and every pixel whose closed
 // square the closed straight segment touches (the papers' rule: no leaking through diagonal
 // coastlines, no jumping over land). `ends`: only the two ends (scikit-image's rule).
 enum class LandRule { segment, ends };
 
-// Per-pixel search state: 1 byte of predecessor and 1 of clearance; the caller supplies the
-// 8 bytes of accumulated cost per pixel. The queue holds only the frontier.
-struct SearchState {
-  std::vector<std::uint8_t> pred, clearance;
+// Search state, kept by a thread across queries: 8 bytes of accumulated cost and 1 of
+// predecessor step per pixel. The next query resets only the pixels this one reached, listed
+// while they are few (up to 1/8 of the chart, half a byte per pixel); past that, the whole
+// cost array is reset, which then costs no more than the query that touched them did. An
+// expanded pixel has its cost's sign bit set: the relaxation test `new < dist` then fails
+// for it without a separate flag.
+struct Workspace {
+  std::vector<double> dist;
+  std::vector<std::uint8_t> pred;
+  std::vector<std::uint32_t> touched;
+  bool overflowed = false;
 
-  void resize(std::int64_t n) {
-    pred.assign(std::size_t(n), no_pred);
-    clearance.resize(std::size_t(n));
+  void reset(std::int64_t n) {
+    if (dist.size() != std::size_t(n)) {
+      dist.assign(std::size_t(n), inf);
+      pred.assign(std::size_t(n), no_pred);
+      touched = {};
+      touched.reserve(std::size_t(n / 8 + 1));
+    } else if (overflowed) {
+      std::fill(dist.begin(), dist.end(), inf);
+    } else {
+      for (std::uint32_t v : touched) dist[v] = inf;
+    }
+    touched.clear();
+    overflowed = false;
+  }
+  void reached(std::int64_t v) {  // v's cost was inf until now
+    if (touched.size() < touched.capacity()) touched.push_back(std::uint32_t(v));
+    else overflowed = true;
+  }
+  double cost(std::int64_t v) const { return std::fabs(dist[std::size_t(v)]); }
+  std::size_t bytes() const {
+    return dist.capacity() * sizeof(double) + pred.capacity() + touched.capacity() * sizeof(std::uint32_t);
   }
 };
 
@@ -51,12 +74,12 @@ struct SearchSpec {
 };
 
 // Runs from `start` until `target` is settled (target < 0: until every reachable pixel is).
-// dist[v] ends as the accumulated cost of v (exact for settled pixels), inf if never reached.
-// The clearance must have been filled by compute_clearance() with cap = half-width + 1.
+// ws.cost(v) ends as the accumulated cost of v (exact for settled pixels), inf if not reached.
+// `clear` comes from compute_clearance() with cap = half-width + 1.
 template <class Queue, class Model>
 SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengths& lengths,
-                   double min_cost, std::int64_t start, std::int64_t target, double* dist,
-                   SearchState& s, Queue heap) {
+                   const std::uint8_t* clear, double min_cost, std::int64_t start,
+                   std::int64_t target, Workspace& ws, Queue heap) {
   const Grid& g = *spec.grid;
   const std::vector<Offset>& st = *spec.stencil;
   const std::int64_t R = g.rows, C = g.cols, n_off = std::int64_t(st.size());
@@ -69,13 +92,14 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
   const bool use_bound = spec.heuristic_weight > 0 && target >= 0;
   const DistanceBound bound(g, use_bound ? target : 0, use_bound ? spec.heuristic_weight * min_cost : 0);
 
-  std::fill(dist, dist + g.size(), inf);
-  std::uint8_t* clear = s.clearance.data();
-  std::uint8_t* pred = s.pred.data();
+  ws.reset(g.size());
+  double* dist = ws.dist.data();
+  std::uint8_t* pred = ws.pred.data();
   SearchStats stats;
   stats.min_cost = min_cost;
 
   dist[start] = 0;
+  ws.reached(start);
   heap.push({use_bound ? bound(start) : 0.0, std::uint32_t(start)});
 
   auto wrap_col = [&](std::int64_t c) { return c < 0 ? c + C : (c >= C ? c - C : c); };
@@ -83,28 +107,27 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
   while (!heap.empty()) {
     const HeapEntry top = heap.pop();
     const std::int64_t v = top.id;
-    if (clear[v] & closed_bit) continue;  // an older, costlier entry of an expanded pixel
-    clear[v] |= closed_bit;
+    const double dv = dist[v];
+    if (std::signbit(dv)) continue;  // an older, costlier entry of an expanded pixel
+    dist[v] = -dv;                   // expanded: never reopened (weighted A* keeps its bound)
     ++stats.settled;
     if (v == target) break;
-    const double dv = dist[v];
     const std::int64_t row = v / C, col = v - row * C;
     const double* len = lengths.row(row);
     const bool interior = row >= h && row < R - h && col >= h && col < C - h;
 
     auto relax = [&](std::int64_t w, double c, std::int64_t o) {
       const double nd = dv + c;
-      if (nd < dist[w]) {
-        // Never reopen an expanded pixel: exact searches do not need to, and weighted A*
-        // keeps its bound (cost <= w x optimum) without it.
-        if (clear[w] & closed_bit) return;
+      const double old = dist[w];
+      if (nd < old) {  // false for expanded pixels: their cost is negative
+        if (old == inf) ws.reached(w);
         dist[w] = nd;
         pred[w] = std::uint8_t(o);
         heap.push({use_bound ? nd + bound(w) : nd, std::uint32_t(w)});
       }
     };
 
-    if (interior && (clear[v] & clearance_bits) > h) {
+    if (interior && clear[v] > h) {
       // The common case: away from the border and from land, every step exists and is free.
       for (std::int64_t o = 0; o < n_off; ++o) {
         const std::int64_t w = v + flat[std::size_t(o)];
@@ -142,13 +165,13 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
     }
   }
   stats.heap_peak = heap.peak();
-  stats.state_bytes = std::size_t(g.size()) * (sizeof(double) + 2) + heap.capacity_bytes();
+  stats.state_bytes = ws.bytes() + heap.capacity_bytes();
   return stats;
 }
 
 // The pixels of the route from start to `target`, start first, read back from the predecessors.
 inline std::vector<std::int64_t> trace_path(const Grid& g, const std::vector<Offset>& st,
-                                            const SearchState& s, std::int64_t start,
+                                            const Workspace& s, std::int64_t start,
                                             std::int64_t target) {
   std::vector<std::int64_t> path{target};
   std::int64_t v = target;

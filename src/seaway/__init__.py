@@ -3,9 +3,9 @@
 The C++ core searches the implicit graph whose vertices are a chart's pixels and whose edges
 join each pixel to the pixels of the k x k square around it (Dijkstra and exact A*)."""
 
-from ._engine import cost_field, route
+from ._engine import PreparedChart, cost_field, prepare, route
 from .errors import NoRouteError
 from .route import Route
 
-__all__ = ["route", "cost_field", "Route", "NoRouteError"]
+__all__ = ["route", "cost_field", "prepare", "PreparedChart", "Route", "NoRouteError"]
 __version__ = "0.1.0"

@@ -110,13 +110,80 @@ def locate(chart: Chart, point, name: str) -> tuple[int, int]:
     return r, c
 
 
-def _run(chart: Chart, start_rc, end_rc, *, neighbourhood, directions, edge_cost, weight,
-         land_rule="segment", field=False):
-    cols = chart.shape[1]
-    start = start_rc[0] * cols + start_rc[1]
-    target = -1 if end_rc is None else end_rc[0] * cols + end_rc[1]
-    return _core.search(chart.values, chart.land, chart.grid, start, target, neighbourhood,
-                        directions, edge_cost, land_rule, weight, field)
+class PreparedChart:
+    """A chart validated and prepared once for many routes.
+
+    The land clearance and step lengths are built at construction; every query borrows a
+    search workspace that is kept for the next one, so repeated queries allocate nothing
+    large, and queries from several threads run at once (the GIL is released). The cost and
+    land arrays are read in place: do not modify them while the PreparedChart is in use."""
+
+    def __init__(self, cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
+                 directions="full", edge_cost="max"):
+        _check_options(neighbourhood, directions, edge_cost)
+        chart = as_chart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land)
+        self._setup(chart, neighbourhood, directions, edge_cost, "segment")
+        self._dims = getattr(cost, "dims", None)
+
+    @classmethod
+    def _from_chart(cls, chart: Chart, neighbourhood, directions, edge_cost, land_rule):
+        """A prepared chart with engine options the public API does not offer (seaway.compat)."""
+        self = cls.__new__(cls)
+        self._setup(chart, neighbourhood, directions, edge_cost, land_rule)
+        self._dims = None
+        return self
+
+    def _setup(self, chart, neighbourhood, directions, edge_cost, land_rule):
+        self.chart = chart
+        self.neighbourhood, self.directions, self.edge_cost = neighbourhood, directions, edge_cost
+        self._router = _core.make_router(chart.values, chart.land, chart.grid, neighbourhood,
+                                         directions, edge_cost, land_rule)
+
+    def _flat(self, rc) -> int:
+        return rc[0] * self.chart.shape[1] + rc[1]
+
+    def _search(self, s, e, weight):
+        """(cost, flat path, stats) between two located pixels; cost is inf if unreachable."""
+        return self._router.route(self._flat(s), self._flat(e), weight)
+
+    def route(self, start, end, *, method="astar", weight=None) -> Route:
+        """The least-cost route from `start` to `end` (see seaway.route)."""
+        w = _heuristic_weight(method, weight)
+        chart = self.chart
+        s, e = locate(chart, start, "start"), locate(chart, end, "end")
+        total, path, stats = self._search(s, e, w)
+        if not np.isfinite(total):
+            raise NoRouteError(
+                f"no route from start {_describe(chart, s)} to end {_describe(chart, e)}: no "
+                f"chain of passable steps joins them with neighbourhood={self.neighbourhood} "
+                "(separate water bodies, or a passage narrower than the land rule allows); try a "
+                "larger neighbourhood, check the land mask, or choose another end point"
+            )
+        pixels = np.column_stack(np.divmod(path, chart.shape[1])).astype(np.int64)
+        return Route(chart=chart, cost=float(total), pixels=pixels, method=method,
+                     neighbourhood=self.neighbourhood, edge_cost=self.edge_cost, stats=dict(stats))
+
+    def cost_field(self, start):
+        """The accumulated least cost from `start` to every pixel (inf where unreachable); a
+        DataArray chart gives a DataArray, in the dimension order it came in."""
+        chart = self.chart
+        s = locate(chart, start, "start")
+        field, _ = self._router.field(self._flat(s), *chart.shape)
+        if chart.template is None:
+            return field
+        out = chart.template.copy(data=field)
+        if self._dims is not None and out.dims != tuple(self._dims):
+            out = out.transpose(*self._dims)  # the chart was turned to (lat, lon): give it back
+        out.name = "accumulated_cost"
+        out.attrs = {"long_name": "least accumulated cost from the start", "start": str(tuple(start))}
+        return out
+
+
+def prepare(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
+            directions="full", edge_cost="max") -> PreparedChart:
+    """Validate and prepare a chart once for many routes; arguments as in route()."""
+    return PreparedChart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land,
+                         neighbourhood=neighbourhood, directions=directions, edge_cost=edge_cost)
 
 
 def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
@@ -136,24 +203,13 @@ def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, ne
         gcd(|di|, |dj|) = 1).
     edge_cost: "max" (paper 000), "mean" (paper 003) or "integral" (exact line integral).
     method: "dijkstra" or "astar" (exact); with weight=w > 1, weighted A* (cost <= w x optimum).
+
+    For many routes on one chart, prepare it once with seaway.prepare().
     """
-    _check_options(neighbourhood, directions, edge_cost)
-    w = _heuristic_weight(method, weight)
-    chart = as_chart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land)
-    s, e = locate(chart, start, "start"), locate(chart, end, "end")
-    total, path, stats, _ = _run(chart, s, e, neighbourhood=neighbourhood, directions=directions,
-                                 edge_cost=edge_cost, weight=w)
-    if not np.isfinite(total):
-        raise NoRouteError(
-            f"no route from start {_describe(chart, s)} to end {_describe(chart, e)}: no chain of "
-            f"passable steps joins them with neighbourhood={neighbourhood} (separate water bodies, "
-            "or a passage narrower than the land rule allows); try a larger neighbourhood, check "
-            "the land mask, or choose another end point"
-        )
-    rows, cols = chart.shape
-    pixels = np.column_stack(np.divmod(path, cols)).astype(np.int64)
-    return Route(chart=chart, cost=float(total), pixels=pixels, method=method,
-                 neighbourhood=neighbourhood, edge_cost=edge_cost, stats=dict(stats))
+    _heuristic_weight(method, weight)  # reject a bad method before the chart is prepared
+    return prepare(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, neighbourhood=neighbourhood,
+                   directions=directions, edge_cost=edge_cost).route(start, end, method=method,
+                                                                     weight=weight)
 
 
 def cost_field(cost, start, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
@@ -162,16 +218,5 @@ def cost_field(cost, start, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, ne
 
     Takes the same arguments as route(). A DataArray in gives a DataArray out, on the same
     coordinates."""
-    _check_options(neighbourhood, directions, edge_cost)
-    chart = as_chart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land)
-    s = locate(chart, start, "start")
-    _, _, _, field = _run(chart, s, None, neighbourhood=neighbourhood, directions=directions,
-                          edge_cost=edge_cost, weight=0.0, field=True)
-    if chart.template is not None:
-        out = chart.template.copy(data=field)
-        if out.dims != cost.dims:  # the chart was transposed to (lat, lon): give it back as it came
-            out = out.transpose(*cost.dims)
-        out.name = "accumulated_cost"
-        out.attrs = {"long_name": "least accumulated cost from the start", "start": str(tuple(start))}
-        return out
-    return field
+    return prepare(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, neighbourhood=neighbourhood,
+                   directions=directions, edge_cost=edge_cost).cost_field(start)

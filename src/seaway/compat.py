@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from ._chart import as_chart
-from ._engine import _run
+from ._engine import PreparedChart
 from .errors import NoRouteError
 
 
@@ -40,10 +40,9 @@ def route_through_array(costs, start, end, fully_connected=True, geometric=True)
     (s, e) = pts
     if not geometric and not chart.values[s] < np.inf:  # +inf or NaN start: skimage finds no path
         raise NoRouteError("no minimum-cost path was found to the specified end point")
-    total, path, _, _ = _run(chart, s, e, neighbourhood=3,
-                             directions="full" if fully_connected else "axis",
-                             edge_cost="mean" if geometric else "entered", weight=0.0,
-                             land_rule="ends")
+    prepared = PreparedChart._from_chart(chart, 3, "full" if fully_connected else "axis",
+                                         "mean" if geometric else "entered", "ends")
+    total, path, _ = prepared._search(s, e, 0.0)
     if not np.isfinite(total):
         raise NoRouteError("no minimum-cost path was found to the specified end point")
     if not geometric:
