@@ -168,10 +168,11 @@ def test_ice_impact_classes_and_inputs():
     out = charts.ice_impact(da, "Arc7")
     assert isinstance(out, xr.DataArray) and out.attrs["ice_class"] == "Arc7"
     assert out.values.tolist() == [[2, 20], [25, 30]] and out.lat.values.tolist() == [71, 70]
+    # Every class of seaway.ice.classes now has a table (derived for all but Arc5/Arc7-9).
     with pytest.raises(ValueError, match=r"Arc5.*Arc7.*Arc8.*Arc9"):
-        charts.ice_impact(codes, "Arc4")
+        charts.ice_impact(codes, "Arc10")
     with pytest.raises(ValueError, match="ice_class"):
-        charts.ice_impact(codes, "PC3")
+        charts.ice_impact(codes, "PC8")
     with pytest.raises(ValueError, match=r"95\.0"):
         charts.ice_impact(np.array([55, 95]), "Arc7")
 
@@ -262,7 +263,7 @@ def test_demo_in_process(capsys):
     assert "vessel class: Arc9" in text and "dijkstra, 3x3 neighbourhood" in text
 
 
-@pytest.mark.parametrize("args", [["demo", "--neighbourhood", "4"], ["demo", "--ice-class", "Arc4"],
+@pytest.mark.parametrize("args", [["demo", "--neighbourhood", "4"], ["demo", "--ice-class", "Arc10"],
                                   ["demo", "--method", "bfs"], []])
 def test_demo_bad_arguments_exit_2(args, capsys):
     with pytest.raises(SystemExit) as exit_info:

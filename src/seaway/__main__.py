@@ -40,7 +40,7 @@ def _parser() -> argparse.ArgumentParser:
         description="Route a ship of an ice class from the Kara Gate to the Vilkitsky Strait "
                     "through synthetic winter ice on the real coastline (seaway.charts.kara_sea), "
                     "with paper 000's impact tables, and print a summary.")
-    classes = sorted(charts.ICE_IMPACT) + sorted(charts.ICE_CLASS_ALIASES)
+    classes = charts.ice_classes.class_names()
     demo.add_argument("--ice-class", default="Arc7", choices=classes,
                       help="Russian Register ice class of the vessel (default Arc7)")
     demo.add_argument("--neighbourhood", type=_neighbourhood, default=5, metavar="K",

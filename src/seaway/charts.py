@@ -1,5 +1,5 @@
-"""Built-in charts: a synthetic winter Kara Sea on the real coastline, paper 000's ice impact
-tables, and a planar cost raster for benchmarks.
+"""Built-in charts: a synthetic winter Kara Sea on the real coastline and a planar cost raster
+for benchmarks; paper 000's ice impact tables are re-exported from seaway.ice.impact.
 
 The Kara Sea chart is synthetic ice (made up, but shaped like a late-winter chart: fast ice along
 the coasts, a flaw polynya seaward of it, thicker first-year ice towards the north-east) laid on
@@ -13,6 +13,10 @@ from functools import lru_cache
 import numpy as np
 
 from ._fields import distance_km, gaussian, resample, smooth_noise
+from .ice import classes as ice_classes
+# Paper 000's impact tables and ice_impact() live in seaway.ice.impact (with tables for every
+# class); re-exported here so seaway.charts.ice_impact keeps working.
+from .ice.impact import ICE_IMPACT, ice_impact  # noqa: F401
 
 EARTH_RADIUS_KM = 6371.0088
 KM_PER_DEG = np.pi * EARTH_RADIUS_KM / 180.0
@@ -37,50 +41,8 @@ STAGES = {
     93: ("thick first-year ice", (1.20, np.inf)),
 }
 
-_INF = float("inf")
-#: Impact u of each WMO stage for an ice class: paper 000, Table 2 (Arc7 and stronger) and
-#: Table 3 (Arc5). inf: the class may not enter. Extend by adding a class (or an alias).
-ICE_IMPACT = {
-    "Arc7": {55: 2.0, 81: 3.0, 82: 5.0, 84: 8.0, 83: 10.0, 85: 13.0, 87: 15.0, 88: 15.0,
-             89: 15.0, 86: 20.0, 91: 25.0, 93: 30.0},
-    "Arc5": {55: 1.0, 81: 3.0, 82: 5.0, 84: 10.0, 83: 15.0, 85: 25.0, 87: 30.0, 88: 30.0,
-             89: 30.0, 86: _INF, 91: _INF, 93: _INF},
-}
-#: Classes that use another class's table ("Arc7 and stronger" in paper 000, Table 2).
-ICE_CLASS_ALIASES = {"Arc8": "Arc7", "Arc9": "Arc7"}
-
-
-def ice_impact(stage, ice_class: str = "Arc7"):
-    """The impact u (cost per unit length) of each pixel's WMO stage of development for a vessel
-    of the Russian Register `ice_class` (paper 000, Tables 2-3); inf where the class may not go.
-
-    stage: array (or DataArray) of SIGRID-3 stage codes; NaN is returned as inf. Fast ice is
-    costed as ice of its stage. Supported classes: Arc5, Arc7, Arc8, Arc9."""
-    supported = sorted(ICE_IMPACT) + sorted(ICE_CLASS_ALIASES)
-    names = {k.lower(): k for k in supported}
-    key = names.get(str(ice_class).lower()) if isinstance(ice_class, str) else None
-    if key is None:
-        raise ValueError(f"ice_class must be one of {supported} (paper 000 gives tables for "
-                         f"these only), got {ice_class!r}")
-    table = ICE_IMPACT[ICE_CLASS_ALIASES.get(key, key)]
-    codes = np.asarray(stage.values if hasattr(stage, "dims") else stage, dtype=float)
-    known = np.isnan(codes)
-    u = np.full(codes.shape, np.inf)
-    for code, value in table.items():
-        hit = codes == code
-        u[hit] = value
-        known |= hit
-    if not known.all():
-        bad = sorted({float(c) for c in np.unique(codes[~known])})
-        raise ValueError(f"stage codes {bad[:10]} have no impact for {key}; known WMO codes: "
-                         f"{sorted(table)} (NaN is impassable)")
-    if hasattr(stage, "dims"):
-        out = stage.copy(data=u)
-        out.name = "ice_impact"
-        out.attrs = {"long_name": f"ice impact u for a {key} vessel (paper 000)", "units": "1",
-                     "ice_class": key}
-        return out
-    return u
+#: Classes without a table of their own in ICE_IMPACT -> the RS class whose table they use.
+ICE_CLASS_ALIASES = {n: c.rs_class for n, c in ice_classes.CLASSES.items() if n not in ICE_IMPACT}
 
 
 def _grid(shape):

@@ -1,0 +1,34 @@
+"""Ice navigation: ice classes, SIGRID-3 codes, and the cost models of paper 000 (impact
+tables), IMO POLARIS (MSC.1/Circ.1519) and paper 002 (Andreeva: speed V = F*V0, time, Pareto).
+
+Modules: classes, codes, impact, polaris, andreeva, summary (numpy/xarray only) and sigrid
+(readers of SIGRID-3 shapefiles/GeoPackages and NSIDC NetCDF; needs ``pip install
+"seaway[ice]"``, imported only when you import seaway.ice.sigrid).
+
+Ice chart Dataset (what seaway.ice.sigrid returns; models accept any Dataset with these names):
+
+======== ============ ===================================================================
+name     units        meaning
+======== ============ ===================================================================
+CT       tenths (0.1) total concentration, 0-10 (range codes -> upper end by default);
+                      NaN = unknown or off the chart
+CA CB CC tenths (0.1) partial concentrations of SA, SB, SC
+SA SB SC WMO code     stage of development, thickest first (55 ice free, 81-98; 99 unknown;
+                      NaN = no such ice)
+land     bool         land (POLY_TYPE L) or ice shelf (S): impassable
+ice_shelf bool        ice-shelf polygons (POLY_TYPE S)
+off_chart bool        no polygon covers the pixel centre (all layers NaN)
+polygon  index        row of the source file's polygon at the pixel (-1 none)
+thickness m           sea-ice thickness (gridded products; optional)
+depth    m            water depth, positive down (optional; paper 002's Z)
+======== ============ ===================================================================
+Coordinates: lat/lon (degrees, pixel centres) or y/x (km in the grid's projection, whose
+PROJ string is the Dataset attribute ``crs``).
+"""
+
+from . import andreeva, classes, codes, impact, polaris, summary
+from .classes import CLASSES, IceClass, class_names, get_class
+from .impact import ICE_IMPACT, chart_impact, ice_impact
+
+__all__ = ["andreeva", "classes", "codes", "impact", "polaris", "summary", "CLASSES",
+           "IceClass", "class_names", "get_class", "ICE_IMPACT", "ice_impact", "chart_impact"]

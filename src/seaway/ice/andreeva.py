@@ -1,0 +1,153 @@
+"""Paper 002 (Andreeva): ship speed V = F * V0 with F = f1 * f2 * f3, time T = l / V, and the
+Pareto set between time and safety (a route's safety is the lowest F met along it).
+
+Equation 9 of the paper:
+  f1 = 1 - d / (Z - dL)   depth: d draft (m), Z charted depth (m), dL survey correction (m);
+                          0 when d >= Z - dL.
+  f2 = 1 - h / h_pass     ice: h thickness (m), h_pass the thickness the ship passes (m);
+                          0 when h >= h_pass.
+  f3 = 1 - (1 - B / B0)   fairway: B the width of the ship's safe lane, B0 the fairway width;
+                          0 when B > B0. Eq. 9 reduces to B / B0, which the paper's own text
+                          (F = 1 when B = B0, F = 0 when B -> 0) agrees with; its physical
+                          reading is unclear, so pass f3 directly if you have your own.
+  dL = k * L (eq. 5), k <= 0.006 on the Northern Sea Route; the paper's examples (1.5 m for
+  500 m between survey lines, 6 m for 2000 m) take L as half the line spacing. dL = Z where
+  no survey exists (f1 = 0), 0 for a multibeam survey.
+
+Units: speeds in knots, lengths in nautical miles give T in hours; on geographic charts the
+engine measures km, so time_cost() returns hours per km (1 nm = 1.852 km).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+KM_PER_NM = 1.852
+NSR_K = 0.006  # paper 002: largest vertical roughness index at 95 % on the NSR
+
+
+def survey_correction(line_spacing_m, k=NSR_K, depth=None):
+    """dL (m) for a survey with `line_spacing_m` between sounding lines (paper 002, eq. 5 with
+    L = half the spacing): 500 m -> 1.5 m, 2000 m -> 6 m. inf spacing (no survey) -> `depth`
+    (so f1 = 0); 0 (multibeam) -> 0."""
+    spacing = np.asarray(line_spacing_m, dtype=float)
+    dl = k * spacing / 2.0
+    if depth is not None:
+        dl = np.where(np.isinf(spacing), np.asarray(depth, dtype=float), dl)
+    return dl
+
+
+def f1(draft, depth, delta_l=0.0):
+    """Depth factor 1 - d / (Z - dL), clipped to [0, 1]; 0 where d >= Z - dL or Z is NaN."""
+    avail = np.asarray(depth, dtype=float) - np.asarray(delta_l, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        f = np.where(avail > draft, 1.0 - draft / avail, 0.0)
+    return np.clip(np.nan_to_num(f, nan=0.0), 0.0, 1.0)
+
+
+def f2(thickness, h_pass):
+    """Ice factor 1 - h / h_pass, clipped to [0, 1]; 0 where h >= h_pass or h is NaN."""
+    h = np.asarray(thickness, dtype=float)
+    f = np.where(h < h_pass, 1.0 - h / h_pass, 0.0)
+    return np.clip(np.nan_to_num(f, nan=0.0), 0.0, 1.0)
+
+
+def f3(lane_width, fairway_width):
+    """Fairway factor of eq. 9, 1 - (1 - B / B0) = B / B0, in [0, 1]; 0 where B > B0."""
+    b, b0 = np.asarray(lane_width, dtype=float), np.asarray(fairway_width, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        f = np.where(b <= b0, 1.0 - (1.0 - b / b0), 0.0)
+    return np.clip(np.nan_to_num(f, nan=0.0), 0.0, 1.0)
+
+
+def safety_factor(*, draft, depth, thickness, h_pass, delta_l=0.0, f3_value=1.0):
+    """F = f1 * f2 * f3 (paper 002, eq. 8-9), elementwise."""
+    return f1(draft, depth, delta_l) * f2(thickness, h_pass) * np.asarray(f3_value, dtype=float)
+
+
+def route_row(l_nm, depth, thickness, *, draft, h_pass, v0_kn, delta_l=0.0, f3_value=1.0):
+    """One row of paper 002's route table for a route of `l_nm` nautical miles with one depth
+    (m) and one ice thickness (m): dict f1, f2, F, V (kn), T (h; inf when F = 0). Exact values:
+    the paper prints them rounded to two digits, computing each column from the previous
+    columns already rounded."""
+    a, b = float(f1(draft, depth, delta_l)), float(f2(thickness, h_pass))
+    f = a * b * float(f3_value)
+    v = f * v0_kn
+    return {"f1": a, "f2": b, "F": f, "V": v, "T": l_nm / v if v > 0 else float("inf")}
+
+
+def time_cost(F, v0_kn):
+    """Hours per km at speed F * v0_kn (knots); inf where F = 0 (the route is forbidden there)."""
+    speed = np.asarray(getattr(F, "values", F), dtype=float) * v0_kn * KM_PER_NM
+    with np.errstate(divide="ignore"):
+        cost = np.where(speed > 0, 1.0 / np.where(speed > 0, speed, 1.0), np.inf)
+    if hasattr(F, "dims"):
+        out = F.copy(data=cost)
+        out.name = "time_cost"
+        out.attrs = {"long_name": "time per unit length at V = F*V0 (paper 002)",
+                     "units": "h km-1"}
+        return out
+    return cost
+
+
+def pareto_front(times, safeties) -> list:
+    """Indices of the non-dominated (time, safety) pairs: no other has time <= and safety >=
+    with one strict (paper 002, eq. 10). Infinite times are never kept. Sorted by time."""
+    t, s = np.asarray(times, dtype=float), np.asarray(safeties, dtype=float)
+    keep = []
+    for i in range(len(t)):
+        if not np.isfinite(t[i]):
+            continue
+        dominated = (t <= t[i]) & (s >= s[i]) & ((t < t[i]) | (s > s[i]))
+        if not dominated.any():
+            keep.append(i)
+    return sorted(keep, key=lambda i: (t[i], -s[i]))
+
+
+@dataclass
+class ParetoRoute:
+    """One route of the sweep: the F threshold it was found with, its time (route cost: hours
+    on geographic charts), its safety (lowest F along its pixels) and the Route itself."""
+
+    threshold: float
+    time: float
+    safety: float
+    route: object
+
+
+def pareto_routes(F, start, end, *, v0_kn, thresholds=None, **route_kwargs) -> list:
+    """Sweep the F threshold: for each t, forbid pixels with F < t, find the minimum-time route
+    (cost = time_cost), measure its safety; return the non-dominated ParetoRoutes, fastest
+    first. thresholds default to the distinct F values of the chart (at most 20 quantiles).
+    route_kwargs go to seaway.route (lat/lon, land, neighbourhood, ...)."""
+    from .._engine import route
+    from ..errors import NoRouteError
+
+    values = np.asarray(getattr(F, "values", F), dtype=float)
+    if thresholds is None:
+        positive = np.unique(values[np.isfinite(values) & (values > 0)])
+        if positive.size > 20:
+            positive = np.unique(np.quantile(positive, np.linspace(0, 1, 20), method="lower"))
+        thresholds = positive
+    found = []
+    for t in sorted(float(x) for x in thresholds):
+        allowed = np.where(values >= t, values, 0.0)
+        cost = time_cost(F.copy(data=allowed) if hasattr(F, "dims") else allowed, v0_kn)
+        try:
+            r = route(cost, start, end, **route_kwargs)
+        except (NoRouteError, ValueError):
+            if not found:
+                raise
+            break  # the threshold closed the way or an end pixel; higher ones forbid more
+        safety = float(values[r.pixels[:, 0], r.pixels[:, 1]].min())
+        found.append(ParetoRoute(t, float(r.cost), safety, r))
+    keep = pareto_front([p.time for p in found], [p.safety for p in found])
+    unique, seen = [], set()
+    for i in keep:
+        key = (round(found[i].time, 9), found[i].safety)
+        if key not in seen:
+            seen.add(key)
+            unique.append(found[i])
+    return unique
