@@ -9,13 +9,17 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 
+#include "seaway/cost_models.hpp"
 #include "seaway/router.hpp"
 
 namespace py = pybind11;
 using namespace seaway;
 
 namespace {
+
+enum class EdgeCost { max, mean, integral, entered };
 
 template <class T>
 using Raster = Eigen::Ref<const Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>;
@@ -57,21 +61,45 @@ py::dict stats_dict(const SearchStats& s) {
   return d;
 }
 
-// The raster is read in place: seaway.PreparedChart keeps the arrays alive beside the router.
+// A prepared chart with its static cost model. The raster is read in place:
+// seaway.PreparedChart keeps the arrays alive beside the router.
+struct StaticRouter {
+  std::unique_ptr<PreparedGrid> grid;
+  const void* cost;
+  bool single;  // float32 costs
+  EdgeCost edge_cost;
+
+  template <class F>
+  auto with_model(F&& f) const {
+    return single ? with<float>(f) : with<double>(f);
+  }
+  template <class T, class F>
+  auto with(F& f) const {
+    const T* u = static_cast<const T*>(cost);
+    switch (edge_cost) {
+      case EdgeCost::mean: return f(MeanCost<T>{u});
+      case EdgeCost::integral: return f(IntegralCost<T>{u, &grid->stencil()});
+      case EdgeCost::entered: return f(EnteredPixelCost<T>{u});
+      default: return f(MaxCost<T>{u});
+    }
+  }
+};
+
 template <class T>
-std::unique_ptr<RouterBase> make_router(const Raster<T>& cost, const std::optional<Mask>& land,
-                                        const Grid& g, int k, const std::string& directions,
-                                        const std::string& edge_cost, const std::string& land_rule) {
+StaticRouter make_router(const Raster<T>& cost, const std::optional<Mask>& land, const Grid& g,
+                         int k, const std::string& directions, const std::string& edge_cost,
+                         const std::string& land_rule) {
   check_shape(g, cost, "cost");
   if (land) check_shape(g, *land, "land");
   if (g.size() >= std::int64_t(0xffffffffu)) throw std::invalid_argument("the chart has 2**32 pixels or more");
   const Directions dirs = parse_directions(directions);
-  const EdgeCost ec = parse_edge_cost(edge_cost);
   const LandRule rule = parse_land_rule(land_rule);
+  StaticRouter r{nullptr, cost.data(), std::is_same_v<T, float>, parse_edge_cost(edge_cost)};
   const T* u = cost.data();
   const std::uint8_t* l = land ? land->data() : nullptr;
   py::gil_scoped_release release;
-  return std::make_unique<Router<T>>(g, u, l, k, dirs, ec, rule);
+  r.grid = std::make_unique<PreparedGrid>(g, u, l, k, dirs, rule);
+  return r;
 }
 
 }  // namespace
@@ -90,13 +118,13 @@ void register_search(py::module_& m) {
       .def_readwrite("dlon", &Grid::dlon)
       .def_readwrite("wrap", &Grid::wrap);
 
-  py::class_<RouterBase>(m, "Router", "A chart prepared for routing: shared, thread-safe")
+  py::class_<StaticRouter>(m, "Router", "A chart prepared for routing: shared, thread-safe")
       .def("route",
-           [](RouterBase& r, std::int64_t start, std::int64_t target, double weight) {
+           [](StaticRouter& r, std::int64_t start, std::int64_t target, double weight) {
              RouteResult out;
              {
                py::gil_scoped_release release;
-               out = r.route(start, target, weight);
+               out = r.with_model([&](const auto& model) { return r.grid->route(model, start, target, weight); });
              }
              return py::make_tuple(out.cost,
                                    py::array_t<std::int64_t>(py::ssize_t(out.path.size()), out.path.data()),
@@ -105,18 +133,18 @@ void register_search(py::module_& m) {
            py::arg("start"), py::arg("target"), py::arg("heuristic_weight"),
            "(cost, flat path, stats); weight 0: Dijkstra, 1: A*, > 1: weighted A*")
       .def("field",
-           [](RouterBase& r, std::int64_t start, std::int64_t rows, std::int64_t cols) {
+           [](StaticRouter& r, std::int64_t start, std::int64_t rows, std::int64_t cols) {
              py::array_t<double> out({rows, cols});
              double* d = out.mutable_data();
              SearchStats stats;
              {
                py::gil_scoped_release release;
-               stats = r.field(start, d);
+               stats = r.with_model([&](const auto& model) { return r.grid->field(model, start, d); });
              }
              return py::make_tuple(out, stats_dict(stats));
            },
            py::arg("start"), py::arg("rows"), py::arg("cols"))
-      .def_property_readonly("shared_bytes", &RouterBase::shared_bytes);
+      .def_property_readonly("shared_bytes", [](const StaticRouter& r) { return r.grid->shared_bytes(); });
 
   auto bind = [&](auto tag) {
     using T = decltype(tag);
