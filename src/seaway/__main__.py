@@ -1,18 +1,17 @@
-"""Command line: ``python -m seaway demo`` (or ``seaway demo``) routes a ship through the built-in
-synthetic winter Kara Sea chart, from the Kara Gate to the Vilkitsky Strait."""
+"""Command line: ``seaway route CHART --from LAT,LON --to LAT,LON`` routes a ship across a chart
+file; ``seaway demo`` through the built-in synthetic winter Kara Sea chart, from the Kara Gate to
+the Vilkitsky Strait; ``seaway bench`` times the engine on the synthetic benchmark chart."""
 
 from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
-import tempfile
 import time
 
 import numpy as np
 
-from . import charts
+from . import _cli, charts
 from ._engine import route
 from .errors import NoRouteError
 
@@ -33,7 +32,9 @@ def _neighbourhood(text: str) -> int:
 
 
 def _parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="seaway", description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        prog="seaway", description="Least-cost ship routes through sea ice, waves and weather on "
+        "raster charts.", epilog=_cli.EPILOG + " 'seaway COMMAND --help' explains each command.")
     commands = parser.add_subparsers(dest="command", required=True, metavar="command")
     demo = commands.add_parser(
         "demo", help="route Kara Gate -> Vilkitsky Strait on the built-in winter chart",
@@ -48,6 +49,7 @@ def _parser() -> argparse.ArgumentParser:
     demo.add_argument("--method", default="astar", choices=("astar", "dijkstra"),
                       help="search algorithm (both exact; default astar)")
     demo.add_argument("--out", metavar="FILE", help="also write the route as GeoJSON to FILE")
+    _cli.add_commands(commands, _neighbourhood)
     return parser
 
 
@@ -129,24 +131,21 @@ def demo(args) -> int:
 
 def _write_atomically(path: str, text: str) -> None:
     """Write to a temporary file beside `path`, then rename: never a half-written file."""
-    target = os.path.abspath(path)
-    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(target), prefix=".seaway-", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as f:
-            f.write(text)
-        os.replace(tmp, target)
-    except BaseException:
-        os.unlink(tmp)
-        raise
+    from .export import write_atomically
+    write_atomically(path, text)
 
 
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
+    run = {"demo": demo, "route": _cli.run_route, "bench": _cli.run_bench}[args.command]
     try:
-        return demo(args)
-    except (NoRouteError, ValueError, OSError) as exc:
+        return run(args)
+    except (NoRouteError, ValueError, OSError, ImportError) as exc:
         print(f"seaway {args.command}: error: {exc}", file=sys.stderr)
         return 1
+    except KeyboardInterrupt:
+        print(f"seaway {args.command}: interrupted", file=sys.stderr)
+        return 130
 
 
 if __name__ == "__main__":

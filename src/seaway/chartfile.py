@@ -1,0 +1,151 @@
+"""Open a chart file for the command line: NetCDF (xarray), GeoTIFF (rasterio, optional),
+SIGRID-3 (seaway.ice.sigrid, when installed) or the built-in chart "kara".
+
+The cost raster is chosen as follows: `variable` names it (cost per unit length, NaN or inf
+impassable); otherwise a stage-of-development chart (variable `stage_of_development`, or SIGRID
+`SA`) is turned into paper 000's impact for the vessel's ice class; otherwise the file's only
+2-D variable is the cost. A variable `land` (or `land_variable`) is the land mask."""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+
+import numpy as np
+
+NETCDF = (".nc", ".nc4", ".cdf", ".netcdf", ".h5", ".hdf5")
+GEOTIFF = (".tif", ".tiff", ".gtiff")
+SIGRID = (".shp", ".gpkg", ".e00", ".zip")
+#: Variables reported along each leg when the chart has them.
+ENVIRONMENT = ("sea_ice_concentration", "ice_thickness", "CT", "thickness", "depth",
+               "wave_height", "wind_speed")
+
+
+class ChartError(ValueError):
+    """A chart file that cannot be read or used."""
+
+
+@dataclass
+class ChartData:
+    cost: object  # xarray.DataArray
+    land: object = None
+    environment: dict = field(default_factory=dict)
+    description: str = ""
+    notes: list = field(default_factory=list)
+
+
+def open_chart(path: str, *, variable=None, vessel=None, land_variable=None) -> ChartData:
+    import xarray as xr
+
+    if path.lower() in ("kara", "builtin:kara"):
+        from .charts import kara_sea
+        ds = kara_sea()
+        kind = "built-in synthetic Kara Sea chart"
+    else:
+        if not os.path.exists(path):
+            raise ChartError(f"{path}: no such file")
+        ext = os.path.splitext(path)[1].lower()
+        if ext in GEOTIFF:
+            return _geotiff(path, variable, vessel)
+        if ext in SIGRID:
+            ds, kind = _sigrid(path), "SIGRID-3 chart"
+        else:
+            try:
+                ds = xr.open_dataset(path)
+            except Exception as exc:  # netCDF4/h5netcdf raise many types
+                raise ChartError(f"{path}: cannot read it as NetCDF ({exc}); charts are NetCDF "
+                                 f"({', '.join(NETCDF)}), GeoTIFF ({', '.join(GEOTIFF)}) or "
+                                 f"SIGRID-3 ({', '.join(SIGRID)})") from None
+            kind = "NetCDF chart"
+    out = ChartData(cost=None, description=f"{kind} {path}")
+    land_name = land_variable or ("land" if "land" in ds else None)
+    if land_variable and land_variable not in ds:
+        raise ChartError(f"{path} has no variable {land_variable!r}; it has {sorted(ds.data_vars)}")
+    if variable:
+        if vessel:
+            raise ChartError("give either --variable (a cost raster) or --vessel (an ice class "
+                             "applied to the chart's stage of development), not both")
+        if variable not in ds:
+            raise ChartError(f"{path} has no variable {variable!r}; it has {sorted(ds.data_vars)}")
+        out.cost = _two_d(ds[variable], out.notes)
+        out.description += f", cost = {variable}"
+    elif "stage_of_development" in ds or "SA" in ds:
+        out.cost = _impact(ds, vessel or "Arc7", out.notes)
+        out.description += f", ice impact for {vessel or 'Arc7'} (paper 000)"
+    else:
+        two_d = [n for n in ds.data_vars if n != land_name and ds[n].ndim >= 2]
+        if len(two_d) != 1:
+            raise ChartError(f"{path}: which variable is the cost? name it with --variable, one of "
+                             f"{sorted(map(str, two_d))}")
+        if vessel:
+            raise ChartError(f"{path} has no stage_of_development (or SIGRID SA) variable to apply "
+                             "--vessel to; give the cost with --variable instead")
+        out.cost = _two_d(ds[two_d[0]], out.notes)
+        out.description += f", cost = {two_d[0]}"
+    if land_name:
+        out.land = _two_d(ds[land_name], out.notes).astype(bool)
+    for name in ENVIRONMENT:
+        if name in ds and ds[name].ndim >= 2:
+            out.environment[name] = _two_d(ds[name], [])
+    return out
+
+
+def _two_d(da, notes):
+    extra = [d for d in da.dims if da.sizes[d] > 1 and d not in da.dims[-2:]]
+    if da.ndim > 2:
+        sel = {d: 0 for d in da.dims[:-2]}
+        if extra:
+            notes.append(f"{da.name}: using the first of {', '.join(f'{d}={da.sizes[d]}' for d in extra)}")
+        da = da.isel(sel)
+    return da
+
+
+def _impact(ds, vessel, notes):
+    if "SA" in ds and "stage_of_development" not in ds:
+        try:
+            from .ice import chart_impact
+        except ImportError:
+            raise ChartError("this chart has SIGRID-3 layers (SA, CT ...): costing them needs "
+                             "seaway.ice, which this installation lacks") from None
+        return chart_impact(ds, vessel)
+    from .charts import ice_impact
+    try:
+        return ice_impact(_two_d(ds.stage_of_development, notes), vessel)
+    except ValueError as exc:
+        raise ChartError(str(exc)) from None
+
+
+def _sigrid(path):
+    # A SIGRID-3 chart is vector polygons: it needs a target grid (extent, resolution,
+    # projection) that the command line does not take yet.
+    raise ChartError(
+        f"{path}: SIGRID-3 charts must be rasterised onto a grid first: in Python, "
+        "seaway.ice.sigrid.read_sigrid3(path, grid) gives a Dataset; save it with "
+        "ds.to_netcdf('chart.nc') and pass chart.nc with --vessel")
+
+
+def _geotiff(path, variable, vessel):
+    import xarray as xr
+
+    try:
+        import rasterio
+    except ImportError:
+        raise ChartError(f"{path}: reading GeoTIFF needs rasterio: pip install rasterio "
+                         "(or convert the raster to NetCDF)") from None
+    if vessel:
+        raise ChartError("a GeoTIFF chart is read as a cost raster (band 1); --vessel needs a "
+                         "stage-of-development chart in NetCDF or SIGRID-3")
+    with rasterio.open(path) as src:
+        band = int(variable) if variable and str(variable).isdigit() else 1
+        a = src.read(band).astype(np.float64)
+        if src.nodata is not None:
+            a[a == src.nodata] = np.nan
+        t = src.transform
+        if t.b != 0 or t.d != 0:
+            raise ChartError(f"{path}: the raster is rotated; warp it north-up first (gdalwarp)")
+        x = t.c + t.a * (np.arange(src.width) + 0.5)
+        y = t.f + t.e * (np.arange(src.height) + 0.5)
+        geographic = src.crs is None or src.crs.is_geographic
+    names = ("lat", "lon") if geographic else ("y", "x")
+    da = xr.DataArray(a, dims=names, coords={names[0]: y, names[1]: x}, name="cost")
+    return ChartData(cost=da, description=f"GeoTIFF {path}, band {band}")

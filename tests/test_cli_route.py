@@ -1,0 +1,133 @@
+"""`seaway route` and `seaway bench`, run as subprocesses: outputs, exit codes, messages."""
+
+import json
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import seaway
+from seaway.charts import ice_impact
+
+
+def run(*args, timeout=120):
+    return subprocess.run([sys.executable, "-m", "seaway", *args], capture_output=True, text=True,
+                          timeout=timeout)
+
+
+@pytest.fixture(scope="module")
+def chart_nc(tmp_path_factory):
+    """A 60 x 80 stage-of-development chart at 70-76 N, 60-76 E: an island, thick first-year ice
+    (stage 93) in the south, open water (55) elsewhere."""
+    lat, lon = np.linspace(76.0, 70.0, 61), np.linspace(60.0, 76.0, 81)
+    stage = np.full((61, 81), 55.0)
+    stage[40:, :] = 93.0
+    land = np.zeros((61, 81), bool)
+    land[10:35, 30:45] = True
+    stage[land] = np.nan
+    conc = np.where(stage == 93.0, 10.0, 0.0)
+    ds = xr.Dataset({"stage_of_development": (("lat", "lon"), stage), "land": (("lat", "lon"), land),
+                     "sea_ice_concentration": (("lat", "lon"), conc)},
+                    coords={"lat": lat, "lon": lon})
+    path = tmp_path_factory.mktemp("chart") / "chart.nc"
+    ds.to_netcdf(path)
+    return path, ds
+
+
+def test_route_netcdf_all_outputs(chart_nc, tmp_path):
+    path, ds = chart_nc
+    outs = [tmp_path / f"r.{ext}" for ext in ("geojson", "gpx", "rtz", "csv")]
+    args = ["route", str(path), "--from", "73,61", "--to", "73,75", "--vessel", "Arc7",
+            "--neighbourhood", "7", "--speed", "12", "--plot", str(tmp_path / "r.png")]
+    for o in outs:
+        args += ["--out", str(o)]
+    done = run(*args)
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.splitlines()
+    assert lines[0].startswith("seaway route: 73-00.00N 061-00.00E -> 73-00.00N 075-00.00E")
+    assert "reading" in done.stderr and "smoothed: cost" in done.stderr
+    # the same route through the API, smoothed, costs what the files say
+    u = ice_impact(ds.stage_of_development, "Arc7")
+    r = seaway.route(u, (73, 61), (73, 75), land=ds.land, neighbourhood=7).smoothed()
+    feature = json.loads(outs[0].read_text())
+    assert feature["properties"]["cost"] == pytest.approx(r.cost, rel=1e-9)
+    assert feature["properties"]["time_h"] == pytest.approx(r.length / 1.852 / 12, rel=1e-9)
+    wps = ET.parse(outs[2]).getroot().findall("{http://www.cirm.org/RTZ/1/0}waypoints/"
+                                              "{http://www.cirm.org/RTZ/1/0}waypoint")
+    assert len(wps) == len(r.waypoints) >= 3  # around the island
+    gpx = ET.parse(outs[1]).getroot()
+    assert len(gpx.findall(".//{http://www.topografix.com/GPX/1/1}rtept")) == len(wps)
+    rows = outs[3].read_text().splitlines()
+    assert rows[0].startswith("waypoint,lat,lon,leg,course_deg") and len(rows) == len(wps) + 1
+    assert "sea_ice_concentration_max" in rows[0]
+    assert (tmp_path / "r.png").stat().st_size > 10_000
+    # the route never enters the island's closed squares: every waypoint is water
+    assert np.all(~ds.land.values[tuple(np.rint(r.points).astype(int).T)])
+
+
+def test_route_cost_variable_and_no_smooth(chart_nc, tmp_path):
+    path, _ = chart_nc
+    done = run("route", str(path), "--variable", "sea_ice_concentration", "--from", "73,61",
+               "--to", "74,75", "--no-smooth", "--edge-cost", "mean", "-q")
+    assert done.returncode == 0 and done.stderr == ""
+    assert "edge cost 'mean', 5x5 stencil" in done.stdout
+
+
+@pytest.mark.parametrize("args, code, message", [
+    (["--from", "73,61", "--to", "72,50"], 1, "end (lat 72, lon 50) lies outside the chart"),
+    (["--from", "73,61", "--to", "74,67"], 1, "end is on an impassable pixel"),
+    (["--from", "73,61", "--to", "73,75", "--variable", "nope"], 1, "has no variable 'nope'"),
+    (["--from", "73,61", "--to", "73,75", "--vessel", "Arc99"], 1, "ice_class must be one of"),
+    (["--from", "73;61", "--to", "73,75"], 2, "expected LAT,LON"),
+    (["--from", "73,61"], 2, "the following arguments are required: --to"),
+    (["--from", "73,61", "--to", "73,75", "--neighbourhood", "4"], 2, "must be an odd integer"),
+])
+def test_route_errors(chart_nc, args, code, message):
+    path, _ = chart_nc
+    done = run("route", str(path), *args, "-q")
+    assert done.returncode == code, done.stderr
+    assert message in done.stderr and done.stdout == ""
+
+
+def test_route_snap_and_missing_file(chart_nc, tmp_path):
+    path, _ = chart_nc
+    done = run("route", str(path), "--from", "73,61", "--to", "74,67", "--snap")
+    assert done.returncode == 0, done.stderr
+    assert "end 74,67 is impassable: moved to" in done.stderr
+    done = run("route", str(tmp_path / "none.nc"), "--from", "73,61", "--to", "74,67")
+    assert done.returncode == 1 and "none.nc: no such file" in done.stderr
+
+
+def test_sigrid_without_reader_is_a_clear_error(tmp_path):
+    shp = tmp_path / "chart.shp"
+    shp.write_bytes(b"")
+    done = run("route", str(shp), "--from", "73,61", "--to", "74,67")
+    assert done.returncode == 1
+    assert "SIGRID-3" in done.stderr or "sigrid" in done.stderr
+
+
+def test_help_explains_every_option():
+    done = run("route", "--help")
+    assert done.returncode == 0
+    for option in ("--from", "--to", "--vessel", "--variable", "--land-variable", "--neighbourhood",
+                   "--edge-cost", "--method", "--no-smooth", "--snap", "--speed", "--name", "--out",
+                   "--plot", "--quiet", "exit status: 0"):
+        assert option in done.stdout
+    assert run("--help").returncode == 0 and run("bench", "--help").returncode == 0
+
+
+def test_bench_small():
+    done = run("bench", "--size", "95x115", "--neighbourhood", "3", "5", "--method", "astar",
+               "--repeat", "1")
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.splitlines()
+    assert "synthetic_sea 95 x 115 pixels" in lines[0]
+    cells = [line.split() for line in lines[2:]]
+    assert [(c[0], int(c[1])) for c in cells] == [("astar", 3), ("astar", 5)]
+    cost = seaway.charts.synthetic_sea((95, 115))
+    s, e = seaway.charts.synthetic_endpoints((95, 115))
+    exact = seaway.route(cost, s, e, neighbourhood=5, edge_cost="mean").cost
+    assert float(cells[1][-1]) == pytest.approx(exact, abs=0.006)
