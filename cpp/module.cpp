@@ -4,8 +4,10 @@
 namespace py = pybind11;
 
 void register_search(py::module_& m);
+void register_weather(py::module_& m);
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "seaway's C++ engine (private: use the seaway package)";
   register_search(m);
+  register_weather(m);
 }

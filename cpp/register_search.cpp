@@ -11,15 +11,12 @@
 #include <string>
 #include <type_traits>
 
-#include "seaway/cost_models.hpp"
-#include "seaway/router.hpp"
+#include "static_router.hpp"
 
 namespace py = pybind11;
 using namespace seaway;
 
 namespace {
-
-enum class EdgeCost { max, mean, integral, entered };
 
 template <class T>
 using Raster = Eigen::Ref<const Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>;
@@ -60,30 +57,6 @@ py::dict stats_dict(const SearchStats& s) {
   d["min_cost"] = s.min_cost;
   return d;
 }
-
-// A prepared chart with its static cost model. The raster is read in place:
-// seaway.PreparedChart keeps the arrays alive beside the router.
-struct StaticRouter {
-  std::unique_ptr<PreparedGrid> grid;
-  const void* cost;
-  bool single;  // float32 costs
-  EdgeCost edge_cost;
-
-  template <class F>
-  auto with_model(F&& f) const {
-    return single ? with<float>(f) : with<double>(f);
-  }
-  template <class T, class F>
-  auto with(F& f) const {
-    const T* u = static_cast<const T*>(cost);
-    switch (edge_cost) {
-      case EdgeCost::mean: return f(MeanCost<T>{u});
-      case EdgeCost::integral: return f(IntegralCost<T>{u, &grid->stencil()});
-      case EdgeCost::entered: return f(EnteredPixelCost<T>{u});
-      default: return f(MaxCost<T>{u});
-    }
-  }
-};
 
 template <class T>
 StaticRouter make_router(const Raster<T>& cost, const std::optional<Mask>& land, const Grid& g,

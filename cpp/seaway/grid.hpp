@@ -6,12 +6,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "stencil.hpp"
 
 namespace seaway {
 
+constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr double earth_radius_km = 6371.0088;  // IUGG mean Earth radius
 constexpr double deg = 3.14159265358979323846 / 180.0;
 

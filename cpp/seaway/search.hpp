@@ -16,7 +16,6 @@
 
 namespace seaway {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr std::uint8_t no_pred = 255;
 // Which pixels a step must keep clear of. `segment`: both ends and every pixel whose closed
 // square the closed straight segment touches (the papers' rule: no leaking through diagonal

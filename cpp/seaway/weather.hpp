@@ -1,0 +1,124 @@
+// Time-optimal steps through currents, wind and waves that change in time (papers 001, 004).
+// A step's cost is its duration in hours; the weather is read at both ends of the step at
+// the time the ship starts it (the search's label), linearly interpolated between forecast
+// frames. The search is label-setting, which is exact when the weather is FIFO: leaving a
+// pixel later never means arriving earlier.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "cost_models.hpp"
+#include "grid.hpp"
+#include "stencil.hpp"
+
+namespace seaway {
+
+constexpr double km_per_nm = 1.852;
+constexpr double knots_per_ms = 3600.0 / 1852.0;
+constexpr double pi = 3.14159265358979323846;
+
+// Fields on the chart grid, frames of rows x cols each (C order), float32; any may be null.
+struct Forecast {
+  std::int64_t frames = 1;
+  double first_h = 0, step_h = 1;  // frame k is valid first_h + k * step_h hours after departure
+  const float* current_east = nullptr;  // m/s, towards east
+  const float* current_north = nullptr;
+  const float* wave_height = nullptr;   // significant height, m
+  const float* wave_from = nullptr;     // direction the waves come from, degrees true
+  const float* wind_speed = nullptr;    // m/s
+};
+
+enum class SpeedLoss { none, khokhlov };
+
+struct Vessel {
+  double speed_kn = 12;           // speed through calm water
+  double displacement_t = 15000;  // for Khokhlov's formula
+  SpeedLoss speed_loss = SpeedLoss::khokhlov;
+  double max_wind_ms = 25, max_wave_m = 5;  // limits (paper 001); also danger-zone winds (004)
+};
+
+// Speed through water in wind waves, Khokhlov (paper 001, eq. 8): h3 the 3 % wave height (m),
+// q the waves' bearing from the bow in radians (0: head seas, pi: following seas).
+inline double khokhlov_speed_kn(double v0, double h3, double q, double displacement_t) {
+  return v0 - (0.745 * h3 - 0.275 * q * h3) * (1 - 1.35e-6 * displacement_t * v0);
+}
+
+// Speed over ground holding the track through a current of speed vt at angle q to the
+// course (paper 001, eq. 6 with the crabbing sign); <= 0 or NaN when the track cannot be held.
+inline double speed_over_ground_kn(double v, double vt, double q) {
+  const double along = vt * std::cos(q), cross = vt * std::sin(q);
+  if (std::fabs(cross) >= v) return 0;
+  return along + std::sqrt(v * v - cross * cross);
+}
+
+class WeatherTime {
+ public:
+  WeatherTime(const Grid& g, const std::vector<Offset>& st, const Forecast& f, const Vessel& v,
+              double best_speed_kn)
+      : g_(g), f_(f), v_(v), n_off_(std::int64_t(st.size())), best_kn_(best_speed_kn) {
+    // Initial great-circle course of every step from every row (it does not depend on the column).
+    course_.resize(std::size_t(g.rows * n_off_));
+    for (std::int64_t r = 0; r < g.rows; ++r)
+      for (std::int64_t k = 0; k < n_off_; ++k) {
+        const double p1 = g.lat(r) * deg, p2 = g.lat(r + st[std::size_t(k)].di) * deg;
+        const double dl = st[std::size_t(k)].dj * g.dlon * deg;
+        course_[std::size_t(r * n_off_ + k)] =
+            std::atan2(std::sin(dl) * std::cos(p2),
+                       std::cos(p1) * std::sin(p2) - std::sin(p1) * std::cos(p2) * std::cos(dl));
+      }
+  }
+
+  // Hours per km: at least 1 / the best attainable speed; no finite upper bound.
+  StepBounds bounds(const Passability&) const { return {1.0 / (km_per_nm * best_kn_), inf, true}; }
+
+  template <class Cell>
+  double operator()(std::int64_t v, std::int64_t w, int o, double r_km, double t_h, Cell&&) const {
+    // Frames and weights of the time t_h (held at the ends of the forecast).
+    double x = (t_h - f_.first_h) / f_.step_h;
+    x = std::clamp(x, 0.0, double(f_.frames - 1));
+    const std::int64_t i0 = std::int64_t(x), i1 = std::min(i0 + 1, f_.frames - 1);
+    const double a = x - double(i0);
+    const std::int64_t n = g_.size();
+    auto at = [&](const float* field, std::int64_t p) {
+      return (1 - a) * double(field[i0 * n + p]) + a * double(field[i1 * n + p]);
+    };
+    if (f_.wind_speed && std::max(at(f_.wind_speed, v), at(f_.wind_speed, w)) > v_.max_wind_ms) return inf;
+    const double course = course_[std::size_t((v / g_.cols) * n_off_ + o)];
+
+    double speed = v_.speed_kn;
+    if (f_.wave_height) {
+      const double hv = at(f_.wave_height, v), hw = at(f_.wave_height, w);
+      if (std::max(hv, hw) > v_.max_wave_m) return inf;
+      if (v_.speed_loss == SpeedLoss::khokhlov) {
+        double q = 0;  // waves of unknown direction: head seas, the largest loss
+        if (f_.wave_from) {
+          const double dv = at(f_.wave_from, v) * deg, dw = at(f_.wave_from, w) * deg;
+          const double from = std::atan2(std::sin(dv) + std::sin(dw), std::cos(dv) + std::cos(dw));
+          q = std::fabs(std::remainder(from - course, 2 * pi));
+        }
+        speed = khokhlov_speed_kn(speed, 1.32 * 0.5 * (hv + hw), q, v_.displacement_t);
+      }
+    }
+    if (f_.current_east) {
+      const double ce = 0.5 * (at(f_.current_east, v) + at(f_.current_east, w)) * knots_per_ms;
+      const double cn = 0.5 * (at(f_.current_north, v) + at(f_.current_north, w)) * knots_per_ms;
+      const double vt = std::hypot(ce, cn);
+      if (vt > 0) speed = speed_over_ground_kn(speed, vt, std::atan2(ce, cn) - course);
+    }
+    if (!(speed > 1e-9)) return inf;
+    return r_km / km_per_nm / speed;
+  }
+
+ private:
+  const Grid& g_;
+  Forecast f_;
+  Vessel v_;
+  std::int64_t n_off_;
+  double best_kn_;
+  std::vector<double> course_;
+};
+
+}  // namespace seaway

@@ -1,0 +1,162 @@
+"""Time-optimal routes through forecasts of currents, wind and waves (papers 001 and 004).
+
+A step's cost is its duration in hours. The weather is read at both ends of the step, at the
+time the ship starts it, linearly interpolated between forecast frames (held constant before
+the first frame and after the last). The search labels every pixel with its earliest arrival
+time, which is exact when the weather is FIFO: leaving later never means arriving earlier
+(true unless a forecast speeds the ship up faster than time passes).
+
+Physics (paper 001), computed in the C++ core for every step and course:
+* speed through water in wind waves, Khokhlov (eq. 8):
+  V = V0 - (0.745 h - 0.275 q h)(1 - 1.35e-6 D V0), h = 1.32 x significant height (3 % waves,
+  Rayleigh), q the waves' bearing from the bow in radians (0 head seas, pi following seas),
+  D displacement in t, V in knots; valid for 5000-25000 t and 9-20 kn;
+* speed over ground holding the track through a current Vt at angle q to the course:
+  V = Vt cos q + sqrt(V0^2 - (Vt sin q)^2). The paper prints a plus under the root; holding
+  the track means cancelling the cross current, which gives the minus (DOMAIN.md), and
+  Vt |sin q| >= V0 (the track cannot be held) is impassable;
+* impassable where the wind exceeds max_wind_ms (25 m/s) or the waves max_wave_m (5 m), and,
+  for paper 004's moving danger zones, where the wind exceeds danger_wind_ms (11 m/s) at the
+  time the ship would be there.
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _core
+from ._chart import as_chart
+from ._engine import PreparedChart, _check_options, _describe, _heuristic_weight, locate
+from .errors import NoRouteError
+from .forecast import STANDARD_NAMES, find_fields
+from .route import Route
+
+KNOTS_PER_MS = 3600.0 / 1852.0
+@dataclass(frozen=True)
+class Vessel:
+    """A ship for weather routing. Speeds in knots, displacement in tonnes, limits in SI."""
+
+    speed_kn: float = 15.0
+    displacement_t: float = 15000.0
+    speed_loss: str = "khokhlov"  # or "none": waves only limit where the ship may go
+    max_wind_ms: float = 25.0
+    max_wave_m: float = 5.0
+    danger_wind_ms: float | None = None  # paper 004: 11 m/s zones avoided while forecast
+    outside_validity: str = "refuse"  # Khokhlov outside 5000-25000 t / 9-20 kn: or "warn"
+
+    def check(self):
+        if not (np.isfinite(self.speed_kn) and self.speed_kn > 0):
+            raise ValueError(f"speed_kn must be positive, got {self.speed_kn!r}")
+        if self.speed_loss not in ("khokhlov", "none"):
+            raise ValueError(f"speed_loss must be 'khokhlov' or 'none', got {self.speed_loss!r}")
+        if self.speed_loss == "khokhlov":
+            inside = 5000 <= self.displacement_t <= 25000 and 9 <= self.speed_kn <= 20
+            if not inside:
+                msg = (f"Khokhlov's speed-loss formula holds for 5000-25000 t and 9-20 kn; this "
+                       f"vessel is {self.displacement_t:g} t at {self.speed_kn:g} kn")
+                if self.outside_validity == "warn":
+                    warnings.warn(msg, stacklevel=3)
+                else:
+                    raise ValueError(msg + "; pass speed_loss='none' (waves then only limit where "
+                                     "the ship may go) or outside_validity='warn'")
+
+
+def _time_axis(ds, departure):
+    """(frames, first_h, step_h): frame k is valid first_h + k * step_h hours after departure."""
+    if "time" not in ds.dims:
+        return 1, 0.0, 1.0
+    t = ds["time"].values
+    if t.size == 1:
+        return 1, 0.0, 1.0
+    hours = (t - t[0]) / np.timedelta64(1, "h")
+    step = float(hours[1] - hours[0])
+    if step <= 0 or np.max(np.abs(np.diff(hours) - step)) > 1e-6:
+        raise ValueError("forecast times must be regularly spaced and increasing; "
+                         "resample it, e.g. ds.resample(time='6h').interpolate()")
+    dep = t[0] if departure is None else np.datetime64(departure)
+    return t.size, float((t[0] - dep) / np.timedelta64(1, "h")), step
+
+
+def _frames(field, chart_dims, frames) -> np.ndarray:
+    dims = (("time",) if "time" in field.dims else ()) + chart_dims
+    if set(field.dims) != set(dims):
+        raise ValueError(f"forecast field {field.name!r} has dims {field.dims}; expected {dims}")
+    a = np.asarray(field.transpose(*dims).values, dtype=np.float32)
+    if a.ndim == 2:
+        a = np.broadcast_to(a, (frames,) + a.shape)
+    return np.ascontiguousarray(a)
+
+
+def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=None, land=None,
+               neighbourhood=5, method="astar", variables=None) -> Route:
+    """The quickest route from `start` to `end` (lat, lon) through a forecast.
+
+    forecast: xarray.Dataset on a regular lat/lon grid, optionally with a `time` dimension
+        (regular steps, e.g. 6-hourly); fields found by CF standard name (STANDARD_NAMES) or
+        `variables`. NaN in every field at a pixel marks land, as do True pixels of `land`.
+    departure: a datetime (numpy/pandas/str) within or before the forecast; default its first time.
+    Returns a Route whose cost is the passage time in hours (stats hold departure and arrival).
+    """
+    vessel.check()
+    _check_options(neighbourhood, "full", "max")
+    w = _heuristic_weight(method, None)
+    fields = find_fields(forecast, variables)
+    if not fields:
+        raise ValueError("the forecast has no field seaway knows; mark them with CF standard names "
+                         f"({', '.join(n[0] for n in STANDARD_NAMES.values())}) or pass variables=")
+    some = next(iter(fields.values()))
+    chart_dims = tuple(d for d in some.dims if d != "time")
+    frames, first_h, step_h = _time_axis(forecast, departure)
+    arrays = {role: _frames(f, chart_dims, frames) for role, f in fields.items()}
+    dry = np.all([np.isnan(a).all(axis=0) for a in arrays.values()], axis=0)
+    if "wind_speed" not in arrays and "wind_east" in arrays:
+        arrays["wind_speed"] = np.hypot(arrays.pop("wind_east"), arrays.pop("wind_north"))
+    arrays.pop("wind_east", None), arrays.pop("wind_north", None)
+    arrays = {k: np.ascontiguousarray(np.nan_to_num(a, nan=0.0)) for k, a in arrays.items()}
+
+    template = some.isel(time=0, drop=True) if "time" in some.dims else some
+    sea = template.copy(data=np.where(dry, np.nan, 1.0).astype(np.float32))
+    chart = as_chart(sea, land=land)
+    if not chart.geographic:
+        raise ValueError("time routing needs a forecast on a lat/lon grid (coordinates lat/lon)")
+    prepared = PreparedChart._from_chart(chart, neighbourhood, "full", "max", "segment")
+
+    best = vessel.speed_kn
+    if vessel.speed_loss == "khokhlov" and "wave_height" in arrays:  # following seas add speed
+        gain = (0.275 * np.pi - 0.745) * 1.32 * float(arrays["wave_height"].max())
+        best += max(gain, 0.0) * (1 - 1.35e-6 * vessel.displacement_t * vessel.speed_kn)
+    if "current_east" in arrays:
+        best += float(np.hypot(arrays["current_east"], arrays["current_north"]).max()) * KNOTS_PER_MS
+    max_wind = vessel.max_wind_ms if vessel.danger_wind_ms is None else min(vessel.max_wind_ms,
+                                                                             vessel.danger_wind_ms)
+    s, e = locate(chart, start, "start"), locate(chart, end, "end")
+    cols = chart.shape[1]
+    hours, path, stats = _core.route_time(
+        prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, frames, first_h, step_h,
+        arrays.get("current_east"), arrays.get("current_north"), arrays.get("wave_height"),
+        arrays.get("wave_from"), arrays.get("wind_speed"), vessel.speed_kn, vessel.displacement_t,
+        vessel.speed_loss, max_wind, vessel.max_wave_m, best)
+    if not np.isfinite(hours):
+        raise NoRouteError(f"no route from {_describe(chart, s)} to {_describe(chart, e)} within "
+                           "the vessel's wind and wave limits (and danger zones) of this forecast; "
+                           "try a later departure, other limits or another end point")
+    stats = dict(stats, hours=hours)
+    if "time" in forecast.dims:
+        dep = forecast["time"].values[0] if departure is None else np.datetime64(departure)
+        stats["departure"] = dep
+        stats["arrival"] = dep + np.timedelta64(int(round(hours * 3600)), "s")
+    pixels = np.column_stack(np.divmod(path, cols)).astype(np.int64)
+    return Route(chart=chart, cost=float(hours), pixels=pixels, method=method,
+                 neighbourhood=neighbourhood, edge_cost="time", stats=stats)
+
+
+def rhumb_line_km(lat1, lon1, lat2, lon2, radius_km=6371.0088):
+    """Loxodrome (constant course) distance on a sphere, km."""
+    p1, p2 = np.radians(lat1), np.radians(lat2)
+    dl = np.radians((lon2 - lon1 + 180.0) % 360.0 - 180.0)
+    dpsi = np.log(np.tan(np.pi / 4 + p2 / 2) / np.tan(np.pi / 4 + p1 / 2))
+    q = (p2 - p1) / dpsi if abs(dpsi) > 1e-12 else np.cos(p1)
+    return float(radius_km * np.hypot(p2 - p1, q * dl))
