@@ -101,10 +101,11 @@ void register_search(py::module_& m) {
              }
              return py::make_tuple(out.cost,
                                    py::array_t<std::int64_t>(py::ssize_t(out.path.size()), out.path.data()),
-                                   stats_dict(out.stats));
+                                   stats_dict(out.stats),
+                                   py::array_t<double>(py::ssize_t(out.cumulative.size()), out.cumulative.data()));
            },
            py::arg("start"), py::arg("target"), py::arg("heuristic_weight"),
-           "(cost, flat path, stats); weight 0: Dijkstra, 1: A*, > 1: weighted A*")
+           "(cost, flat path, stats, cost to each path pixel); weight 0: Dijkstra, 1: A*, > 1: weighted A*")
       .def("field",
            [](StaticRouter& r, std::int64_t start, std::int64_t rows, std::int64_t cols) {
              py::array_t<double> out({rows, cols});

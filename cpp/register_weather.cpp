@@ -60,7 +60,8 @@ py::tuple route_time(StaticRouter& r, std::int64_t start, std::int64_t target, d
   py::dict stats;
   stats["settled"] = out.stats.settled;
   stats["state_bytes"] = out.stats.state_bytes;
-  return py::make_tuple(out.cost, py::array_t<std::int64_t>(py::ssize_t(out.path.size()), out.path.data()), stats);
+  return py::make_tuple(out.cost, py::array_t<std::int64_t>(py::ssize_t(out.path.size()), out.path.data()), stats,
+                        py::array_t<double>(py::ssize_t(out.cumulative.size()), out.cumulative.data()));
 }
 
 }  // namespace

@@ -229,3 +229,23 @@ def test_route_on_the_roms_currents():
     assert gc_h < r.cost < 1.1 * gc_h and gc_h < back.cost < 1.1 * gc_h
     assert r.cost != pytest.approx(back.cost, rel=1e-6)  # the currents make the two differ
     assert r.stats["departure"] == ds["time"].values[0]
+
+
+def test_replanning_with_the_same_forecast_keeps_the_tail():
+    rng = np.random.default_rng(3)
+    fc = forecast(frames=6, ce=rng.uniform(-1, 1, (6, 21, 31)), cn=rng.uniform(-1, 1, (6, 21, 31)))
+    from seaway.weather import position_at, replan
+
+    r = route_time(fc, (60.2, 0.2), (61.8, 2.8), vessel=CALM, neighbourhood=5)
+    i, here = position_at(r, 3.0)
+    assert 0 < i < len(r.pixels) - 1 and np.sum(r.costs()[:i]) <= 3.0 < np.sum(r.costs()[:i + 1])
+    again = replan(r, 3.0, fc, (61.8, 2.8), vessel=CALM, neighbourhood=5)
+    # The tail of a time-optimal route is optimal from the same pixel at the same time (FIFO).
+    assert np.sum(r.costs()[:i]) + again.cost == pytest.approx(r.cost, rel=1e-9)
+    # A newer forecast with a storm on the old tail changes the rest of the route.
+    wind = np.zeros((6, 21, 31))
+    rows, cols = zip(*r.pixels[i + 2:-2])
+    wind[:, list(rows), list(cols)] = 30.0
+    stormy = forecast(frames=6, wind=wind, ce=fc["ce"].values, cn=fc["cn"].values)
+    detour = replan(r, 3.0, stormy, (61.8, 2.8), vessel=CALM, neighbourhood=5)
+    assert detour.cost > again.cost

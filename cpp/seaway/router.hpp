@@ -21,6 +21,7 @@ namespace seaway {
 struct RouteResult {
   double cost = inf;               // inf when the target was not reached
   std::vector<std::int64_t> path;  // flat pixel indices, start first
+  std::vector<double> cumulative;  // the cost from the start to each pixel of the path
   SearchStats stats;
 };
 
@@ -57,7 +58,10 @@ class PreparedGrid {
     RouteResult out;
     out.stats = run(model, start, target, weight, *ws);
     out.cost = ws->cost(target);
-    if (out.cost < inf) out.path = trace_path(g_, stencil_, *ws, start, target);
+    if (out.cost < inf) {
+      out.path = trace_path(g_, stencil_, *ws, start, target);
+      for (std::int64_t p : out.path) out.cumulative.push_back(ws->cost(p));
+    }
     return out;
   }
 

@@ -143,7 +143,8 @@ class PreparedChart:
         return rc[0] * self.chart.shape[1] + rc[1]
 
     def _search(self, s, e, weight):
-        """(cost, flat path, stats) between two located pixels; cost is inf if unreachable."""
+        """(cost, flat path, stats, cost to each path pixel) between two located pixels; cost is
+        inf if unreachable."""
         return self._router.route(self._flat(s), self._flat(e), weight)
 
     def route(self, start, end, *, method="astar", weight=None) -> Route:
@@ -151,7 +152,7 @@ class PreparedChart:
         w = _heuristic_weight(method, weight)
         chart = self.chart
         s, e = locate(chart, start, "start"), locate(chart, end, "end")
-        total, path, stats = self._search(s, e, w)
+        total, path, stats, cumulative = self._search(s, e, w)
         if not np.isfinite(total):
             raise NoRouteError(
                 f"no route from start {_describe(chart, s)} to end {_describe(chart, e)}: no "
@@ -161,7 +162,8 @@ class PreparedChart:
             )
         pixels = np.column_stack(np.divmod(path, chart.shape[1])).astype(np.int64)
         return Route(chart=chart, cost=float(total), pixels=pixels, method=method,
-                     neighbourhood=self.neighbourhood, edge_cost=self.edge_cost, stats=dict(stats))
+                     neighbourhood=self.neighbourhood, edge_cost=self.edge_cost, stats=dict(stats),
+                     step_costs=np.diff(cumulative))
 
     def cost_field(self, start):
         """The accumulated least cost from `start` to every pixel (inf where unreachable); a

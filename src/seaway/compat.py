@@ -42,7 +42,7 @@ def route_through_array(costs, start, end, fully_connected=True, geometric=True)
         raise NoRouteError("no minimum-cost path was found to the specified end point")
     prepared = PreparedChart._from_chart(chart, 3, "full" if fully_connected else "axis",
                                          "mean" if geometric else "entered", "ends")
-    total, path, _ = prepared._search(s, e, 0.0)
+    total, path, _, _ = prepared._search(s, e, 0.0)
     if not np.isfinite(total):
         raise NoRouteError("no minimum-cost path was found to the specified end point")
     if not geometric:

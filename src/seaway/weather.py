@@ -134,7 +134,7 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
                                                                              vessel.danger_wind_ms)
     s, e = locate(chart, start, "start"), locate(chart, end, "end")
     cols = chart.shape[1]
-    hours, path, stats = _core.route_time(
+    hours, path, stats, cumulative = _core.route_time(
         prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, frames, first_h, step_h,
         arrays.get("current_east"), arrays.get("current_north"), arrays.get("wave_height"),
         arrays.get("wave_from"), arrays.get("wind_speed"), vessel.speed_kn, vessel.displacement_t,
@@ -150,7 +150,8 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
         stats["arrival"] = dep + np.timedelta64(int(round(hours * 3600)), "s")
     pixels = np.column_stack(np.divmod(path, cols)).astype(np.int64)
     return Route(chart=chart, cost=float(hours), pixels=pixels, method=method,
-                 neighbourhood=neighbourhood, edge_cost="time", stats=stats)
+                 neighbourhood=neighbourhood, edge_cost="time", stats=stats,
+                 step_costs=np.diff(cumulative), speed_kn=vessel.speed_kn)
 
 
 def rhumb_line_km(lat1, lon1, lat2, lon2, radius_km=6371.0088):
@@ -160,3 +161,22 @@ def rhumb_line_km(lat1, lon1, lat2, lon2, radius_km=6371.0088):
     dpsi = np.log(np.tan(np.pi / 4 + p2 / 2) / np.tan(np.pi / 4 + p1 / 2))
     q = (p2 - p1) / dpsi if abs(dpsi) > 1e-12 else np.cos(p1)
     return float(radius_km * np.hypot(p2 - p1, q * dl))
+
+
+def position_at(route: Route, hours: float) -> tuple[int, tuple[float, float]]:
+    """(index, (lat, lon)) of the last pixel of a time route the ship has reached `hours` after
+    departure."""
+    elapsed = np.concatenate([[0.0], np.cumsum(route.costs())])
+    i = int(np.searchsorted(elapsed, hours, side="right") - 1)
+    return i, tuple(map(float, route.coords[i]))
+
+
+def replan(route: Route, hours: float, forecast, end, **kwargs) -> Route:
+    """Paper 003's re-planning: route again from where the ship is `hours` after departure,
+    with a newer `forecast`, leaving at that time. kwargs go to route_time()."""
+    if "departure" not in route.stats:
+        raise ValueError("re-planning needs a route found through a forecast with a time axis")
+    i, here = position_at(route, hours)
+    reached = float(np.sum(route.costs()[:i]))
+    departure = route.stats["departure"] + np.timedelta64(int(round(reached * 3.6e12)), "ns")
+    return route_time(forecast, here, end, departure=departure, **kwargs)
