@@ -5,9 +5,10 @@ join each pixel to the pixels of the k x k square around it (Dijkstra and exact 
 
 from ._engine import PreparedChart, cost_field, prepare, route
 from .errors import NoRouteError
+from .fleet import route_many
 from .route import Leg, Route
 from .smooth import smooth
 
 __all__ = ["route", "cost_field", "prepare", "PreparedChart", "Route", "NoRouteError", "Leg",
-           "smooth"]
+           "smooth", "route_many"]
 __version__ = "0.1.0"
