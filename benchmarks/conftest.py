@@ -23,6 +23,8 @@ def chart():
 
 
 def record(name, benchmark, note=""):
+    if benchmark.stats is None:  # --benchmark-disable: the code ran once, untimed
+        return
     MEDIANS[name] = benchmark.stats.stats.median
     if note:
         NOTES[name] = note
