@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "seaway/waves.hpp"
 #include "seaway/weather.hpp"
 #include "static_router.hpp"
 
@@ -21,6 +22,15 @@ const float* data_of(const std::optional<Field>& f, const Grid& g, std::int64_t 
   if (f->ndim() != 3 || f->shape(0) != frames || f->shape(1) != g.rows || f->shape(2) != g.cols)
     throw std::invalid_argument(std::string(name) + " must be a float32 (time, rows, cols) array on the chart grid");
   return f->data();
+}
+
+// (cost, flat path, stats, cost to each path pixel), as seaway.PreparedChart expects.
+py::tuple as_tuple(const RouteResult& out) {
+  py::dict stats;
+  stats["settled"] = out.stats.settled;
+  stats["state_bytes"] = out.stats.state_bytes;
+  return py::make_tuple(out.cost, py::array_t<std::int64_t>(py::ssize_t(out.path.size()), out.path.data()),
+                        stats, py::array_t<double>(py::ssize_t(out.cumulative.size()), out.cumulative.data()));
 }
 
 py::tuple route_time(StaticRouter& r, std::int64_t start, std::int64_t target, double weight,
@@ -57,11 +67,24 @@ py::tuple route_time(StaticRouter& r, std::int64_t start, std::int64_t target, d
     const WeatherTime model(g, r.grid->stencil(), f, v, best_speed_kn);
     out = r.grid->route(model, start, target, weight);
   }
-  py::dict stats;
-  stats["settled"] = out.stats.settled;
-  stats["state_bytes"] = out.stats.state_bytes;
-  return py::make_tuple(out.cost, py::array_t<std::int64_t>(py::ssize_t(out.path.size()), out.path.data()), stats,
-                        py::array_t<double>(py::ssize_t(out.cumulative.size()), out.cumulative.data()));
+  return as_tuple(out);
+}
+
+py::tuple route_danger(StaticRouter& r, std::int64_t start, std::int64_t target, double weight,
+                       const Field& hs, const Field& from, const Field& period,
+                       double ship_length_m, double speed_kn) {
+  const Grid& g = r.grid->grid();
+  if (!g.geographic) throw std::invalid_argument("wave danger routing needs a lat/lon chart");
+  const float* h = data_of(hs, g, 1, "wave_height");
+  const float* d = data_of(from, g, 1, "wave_from");
+  const float* t = data_of(period, g, 1, "wave_period");
+  RouteResult out;
+  {
+    py::gil_scoped_release release;
+    const WaveDangerCost model(g, r.grid->stencil(), h, d, t, ship_length_m, speed_kn);
+    out = r.grid->route(model, start, target, weight);
+  }
+  return as_tuple(out);
 }
 
 }  // namespace
@@ -75,6 +98,13 @@ void register_weather(py::module_& m) {
         py::arg("speed_loss"), py::arg("max_wind_ms"), py::arg("max_wave_m"),
         py::arg("best_speed_kn"),
         "Time-optimal route (cost in hours) through a forecast on a prepared lat/lon chart.");
+  m.def("route_danger", &route_danger, py::arg("router"), py::arg("start"), py::arg("target"),
+        py::arg("heuristic_weight"), py::arg("wave_height").noconvert(),
+        py::arg("wave_from").noconvert(), py::arg("wave_period").noconvert(),
+        py::arg("ship_length_m"), py::arg("speed_kn"),
+        "Least wave-danger route (paper 003 with MSC.1/Circ.1228's criteria), (1, rows, cols) fields.");
+  m.def("wave_danger", &wave_danger, py::arg("hs_m"), py::arg("wave_length_m"), py::arg("alpha_rad"),
+        py::arg("ship_length_m"), py::arg("speed_kn"), "Danger u in [1, 10] of one wave encounter.");
   m.def("khokhlov_speed_kn", &khokhlov_speed_kn, py::arg("v0_kn"), py::arg("h3_m"), py::arg("q_rad"),
         py::arg("displacement_t"), "Speed through water in wind waves (paper 001, eq. 8).");
   m.def("speed_over_ground_kn", &speed_over_ground_kn, py::arg("v_kn"), py::arg("current_kn"),

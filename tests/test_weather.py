@@ -249,3 +249,49 @@ def test_replanning_with_the_same_forecast_keeps_the_tail():
     stormy = forecast(frames=6, wind=wind, ce=fc["ce"].values, cn=fc["cn"].values)
     detour = replan(r, 3.0, stormy, (61.8, 2.8), vessel=CALM, neighbourhood=5)
     assert detour.cost > again.cost
+
+
+def test_wave_danger_follows_the_circular_criteria():
+    L = 100.0  # ship length, m: successive high waves when lambda > 80 m and Hs > 4 m
+    pi = np.pi
+    assert _core.wave_danger(5.0, 100.0, pi, L, 5.0) == 10.0  # following seas, long high waves
+    assert _core.wave_danger(5.0, 100.0, 0.0, L, 5.0) == 1.0  # head seas: not these criteria
+    assert _core.wave_danger(5.0, 100.0, np.radians(140), L, 5.0) == 10.0  # quartering, inside
+    assert _core.wave_danger(5.0, 100.0, np.radians(100), L, 5.0) == 1.0  # beam seas
+    assert _core.wave_danger(5.0, 100.0, np.radians(130), L, 5.0) == pytest.approx(5.5)  # sector edge
+    assert _core.wave_danger(5.0, 72.0, pi, L, 5.0) == pytest.approx(5.5)  # lambda / 0.8 L = 0.9
+    assert _core.wave_danger(1.0, 100.0, pi, L, 5.0) == 1.0  # low waves
+    # Surf-riding: V > 1.8 sqrt(L) / cos(180 - alpha) = 18 kn in following seas.
+    assert _core.wave_danger(1.0, 100.0, pi, L, 18.0) == pytest.approx(10.0)
+    assert _core.wave_danger(1.0, 100.0, pi, L, 16.2) == pytest.approx(5.5)
+
+
+def test_safest_route_keeps_out_of_following_seas():
+    from seaway.weather import route_safest
+
+    shape = (21, 41)
+    period = np.sqrt(100.0 * 2 * np.pi / 9.80665)  # 100 m waves
+    waves = forecast(shape=shape, lat0=-1.0, step=0.1, hs=5.0, wdir=270.0, ce=0.0, cn=0.0)
+    waves["tp"] = xr.full_like(waves["hs"], period).assign_attrs(standard_name="sea_surface_wave_mean_period")
+    east = route_safest(waves, (0.0, 0.2), (0.0, 3.8), ship_length_m=100.0, speed_kn=12.0,
+                        neighbourhood=5)
+    west = route_safest(waves, (0.0, 3.8), (0.0, 0.2), ship_length_m=100.0, speed_kn=12.0,
+                        neighbourhood=5)
+    # Into the waves (head seas) the straight line is safe: cost = length (u = 1).
+    assert west.cost == pytest.approx(west.length, rel=1e-9)
+    assert west.length == pytest.approx(_core.haversine_km(0.0, 0.2, 0.0, 3.8), rel=1e-6)
+    # With the waves, every step heads at least 55 degrees off the following-sea bearing (090),
+    # so the danger stays 1 and the route tacks: longer, but far cheaper than running before it.
+    assert east.cost == pytest.approx(east.length, rel=1e-9)
+    d = np.diff(east.pixels, axis=0)
+    off = np.degrees(np.abs(np.arctan2(-d[:, 0], d[:, 1])))  # angle from due east
+    assert off.min() >= 55.0
+    assert east.cost < 10 * west.cost and east.length > 1.5 * west.length
+
+
+def test_safest_route_names_missing_wave_fields():
+    from seaway.weather import route_safest
+
+    with pytest.raises(ValueError, match="sea_surface_wave_mean_period"):
+        route_safest(forecast(hs=2.0, wdir=0.0), (61.0, 0.5), (61.0, 2.5), ship_length_m=100,
+                     speed_kn=12)

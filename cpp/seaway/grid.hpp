@@ -56,6 +56,22 @@ struct Grid {
             haversine_km(lat(r), 0.0, lat(r + st[k].di), st[k].dj * dlon);
     return out;
   }
+
+  // Initial great-circle course (radians from north, clockwise) of every step from every row:
+  // table[row * n_offsets + o]; it does not depend on the column. Geographic grids only.
+  std::vector<double> step_courses(const std::vector<Offset>& st) const {
+    const std::int64_t n = std::int64_t(st.size());
+    std::vector<double> out(std::size_t(rows * n));
+    for (std::int64_t r = 0; r < rows; ++r)
+      for (std::int64_t k = 0; k < n; ++k) {
+        const double p1 = lat(r) * deg, p2 = lat(r + st[std::size_t(k)].di) * deg;
+        const double dl = st[std::size_t(k)].dj * dlon * deg;
+        out[std::size_t(r * n + k)] =
+            std::atan2(std::sin(dl) * std::cos(p2),
+                       std::cos(p1) * std::sin(p2) - std::sin(p1) * std::cos(p2) * std::cos(dl));
+      }
+    return out;
+  }
 };
 
 // Admissible distance-to-target bound: straight-line or great-circle distance from a pixel to

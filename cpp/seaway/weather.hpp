@@ -59,16 +59,7 @@ class WeatherTime {
   WeatherTime(const Grid& g, const std::vector<Offset>& st, const Forecast& f, const Vessel& v,
               double best_speed_kn)
       : g_(g), f_(f), v_(v), n_off_(std::int64_t(st.size())), best_kn_(best_speed_kn) {
-    // Initial great-circle course of every step from every row (it does not depend on the column).
-    course_.resize(std::size_t(g.rows * n_off_));
-    for (std::int64_t r = 0; r < g.rows; ++r)
-      for (std::int64_t k = 0; k < n_off_; ++k) {
-        const double p1 = g.lat(r) * deg, p2 = g.lat(r + st[std::size_t(k)].di) * deg;
-        const double dl = st[std::size_t(k)].dj * g.dlon * deg;
-        course_[std::size_t(r * n_off_ + k)] =
-            std::atan2(std::sin(dl) * std::cos(p2),
-                       std::cos(p1) * std::sin(p2) - std::sin(p1) * std::cos(p2) * std::cos(dl));
-      }
+    course_ = g.step_courses(st);
   }
 
   // Hours per km: at least 1 / the best attainable speed; no finite upper bound.

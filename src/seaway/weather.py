@@ -101,29 +101,9 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
     Returns a Route whose cost is the passage time in hours (stats hold departure and arrival).
     """
     vessel.check()
-    _check_options(neighbourhood, "full", "max")
     w = _heuristic_weight(method, None)
-    fields = find_fields(forecast, variables)
-    if not fields:
-        raise ValueError("the forecast has no field seaway knows; mark them with CF standard names "
-                         f"({', '.join(n[0] for n in STANDARD_NAMES.values())}) or pass variables=")
-    some = next(iter(fields.values()))
-    chart_dims = tuple(d for d in some.dims if d != "time")
-    frames, first_h, step_h = _time_axis(forecast, departure)
-    arrays = {role: _frames(f, chart_dims, frames) for role, f in fields.items()}
-    dry = np.all([np.isnan(a).all(axis=0) for a in arrays.values()], axis=0)
-    if "wind_speed" not in arrays and "wind_east" in arrays:
-        arrays["wind_speed"] = np.hypot(arrays.pop("wind_east"), arrays.pop("wind_north"))
-    arrays.pop("wind_east", None), arrays.pop("wind_north", None)
-    arrays = {k: np.ascontiguousarray(np.nan_to_num(a, nan=0.0)) for k, a in arrays.items()}
-
-    template = some.isel(time=0, drop=True) if "time" in some.dims else some
-    sea = template.copy(data=np.where(dry, np.nan, 1.0).astype(np.float32))
-    chart = as_chart(sea, land=land)
-    if not chart.geographic:
-        raise ValueError("time routing needs a forecast on a lat/lon grid (coordinates lat/lon)")
-    prepared = PreparedChart._from_chart(chart, neighbourhood, "full", "max", "segment")
-
+    fc = _ForecastChart(forecast, variables, land, neighbourhood, departure)
+    chart, arrays = fc.chart, fc.arrays
     best = vessel.speed_kn
     if vessel.speed_loss == "khokhlov" and "wave_height" in arrays:  # following seas add speed
         gain = (0.275 * np.pi - 0.745) * 1.32 * float(arrays["wave_height"].max())
@@ -135,7 +115,7 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
     s, e = locate(chart, start, "start"), locate(chart, end, "end")
     cols = chart.shape[1]
     hours, path, stats, cumulative = _core.route_time(
-        prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, frames, first_h, step_h,
+        fc.prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, fc.frames, fc.first_h, fc.step_h,
         arrays.get("current_east"), arrays.get("current_north"), arrays.get("wave_height"),
         arrays.get("wave_from"), arrays.get("wind_speed"), vessel.speed_kn, vessel.displacement_t,
         vessel.speed_loss, max_wind, vessel.max_wave_m, best)
@@ -148,10 +128,73 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
         dep = forecast["time"].values[0] if departure is None else np.datetime64(departure)
         stats["departure"] = dep
         stats["arrival"] = dep + np.timedelta64(int(round(hours * 3600)), "s")
-    pixels = np.column_stack(np.divmod(path, cols)).astype(np.int64)
-    return Route(chart=chart, cost=float(hours), pixels=pixels, method=method,
-                 neighbourhood=neighbourhood, edge_cost="time", stats=stats,
-                 step_costs=np.diff(cumulative), speed_kn=vessel.speed_kn)
+    return fc.route(path, hours, cumulative, stats, method, "time", speed_kn=vessel.speed_kn)
+
+
+class _ForecastChart:
+    """A forecast turned into engine inputs: float32 (frames, rows, cols) fields with NaN set
+    to 0, the prepared lat/lon chart (land: NaN in every field, or `land`) and the time axis."""
+
+    def __init__(self, forecast, variables, land, neighbourhood, departure):
+        _check_options(neighbourhood, "full", "max")
+        fields = find_fields(forecast, variables)
+        if not fields:
+            raise ValueError("the forecast has no field seaway knows; mark them with CF standard "
+                             f"names ({', '.join(n[0] for n in STANDARD_NAMES.values())}) or pass "
+                             "variables=")
+        some = next(iter(fields.values()))
+        dims = tuple(d for d in some.dims if d != "time")
+        self.frames, self.first_h, self.step_h = _time_axis(forecast, departure)
+        arrays = {role: _frames(f, dims, self.frames) for role, f in fields.items()}
+        dry = np.all([np.isnan(a).all(axis=0) for a in arrays.values()], axis=0)
+        if "wind_speed" not in arrays and "wind_east" in arrays:
+            arrays["wind_speed"] = np.hypot(arrays.pop("wind_east"), arrays.pop("wind_north"))
+        arrays.pop("wind_east", None), arrays.pop("wind_north", None)
+        self.arrays = {k: np.ascontiguousarray(np.nan_to_num(a, nan=0.0)) for k, a in arrays.items()}
+        template = some.isel(time=0, drop=True) if "time" in some.dims else some
+        sea = template.copy(data=np.where(dry, np.nan, 1.0).astype(np.float32))
+        self.chart = as_chart(sea, land=land)
+        if not self.chart.geographic:
+            raise ValueError("weather routing needs a forecast on a lat/lon grid (coordinates lat/lon)")
+        self.neighbourhood = neighbourhood
+        self.prepared = PreparedChart._from_chart(self.chart, neighbourhood, "full", "max", "segment")
+
+    def frame(self, role, hours):
+        """One (1, rows, cols) frame of a field: the one valid nearest `hours` after departure."""
+        k = int(np.clip(round((hours - self.first_h) / self.step_h), 0, self.frames - 1))
+        return np.ascontiguousarray(self.arrays[role][k:k + 1])
+
+    def route(self, path, cost, cumulative, stats, method, objective, **extra):
+        pixels = np.column_stack(np.divmod(path, self.chart.shape[1])).astype(np.int64)
+        return Route(chart=self.chart, cost=float(cost), pixels=pixels, method=method,
+                     neighbourhood=self.neighbourhood, edge_cost=objective, stats=stats,
+                     step_costs=np.diff(cumulative), **extra)
+
+
+def route_safest(forecast, start, end, *, ship_length_m, speed_kn, at_hours=0.0, land=None,
+                 neighbourhood=5, method="astar", variables=None) -> Route:
+    """The route of least wave danger (paper 003): minimises sum (u_i + u_j) / 2 * r with the
+    danger u in [1, 10] from MSC.1/Circ.1228's criteria for the step's heading (see
+    seaway._core.wave_danger and cpp/seaway/waves.hpp), on the forecast frame valid nearest
+    `at_hours` after its first time. Needs wave height, direction and period fields; cost in
+    danger x km."""
+    if not (ship_length_m > 0 and speed_kn > 0):
+        raise ValueError("ship_length_m and speed_kn must be positive")
+    w = _heuristic_weight(method, None)
+    fc = _ForecastChart(forecast, variables, land, neighbourhood, None)
+    missing = {"wave_height", "wave_from", "wave_period"} - set(fc.arrays)
+    if missing:
+        raise ValueError(f"wave danger needs {sorted(missing)}: fields with standard names "
+                         + ", ".join(STANDARD_NAMES[m][0] for m in sorted(missing)))
+    s, e = locate(fc.chart, start, "start"), locate(fc.chart, end, "end")
+    cols = fc.chart.shape[1]
+    cost, path, stats, cumulative = _core.route_danger(
+        fc.prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w,
+        fc.frame("wave_height", at_hours), fc.frame("wave_from", at_hours),
+        fc.frame("wave_period", at_hours), float(ship_length_m), float(speed_kn))
+    if not np.isfinite(cost):
+        raise NoRouteError(f"no route at sea from {_describe(fc.chart, s)} to {_describe(fc.chart, e)}")
+    return fc.route(path, cost, cumulative, dict(stats), method, "wave danger", speed_kn=speed_kn)
 
 
 def rhumb_line_km(lat1, lon1, lat2, lon2, radius_km=6371.0088):
