@@ -67,6 +67,13 @@ class WeatherTime {
 
   template <class Cell>
   double operator()(std::int64_t v, std::int64_t w, int o, double r_km, double t_h, Cell&&) const {
+    const double speed = speed_over_ground(v, w, o, t_h, v_.speed_kn);
+    return speed > 1e-9 ? r_km / km_per_nm / speed : inf;
+  }
+
+  // Speed over ground (kn) of the step v -> w along offset o started at t_h hours after
+  // departure, with the engine set for v0_kn in calm water; 0 where the step is forbidden.
+  double speed_over_ground(std::int64_t v, std::int64_t w, int o, double t_h, double v0_kn) const {
     // Frames and weights of the time t_h (held at the ends of the forecast).
     double x = (t_h - f_.first_h) / f_.step_h;
     x = std::clamp(x, 0.0, double(f_.frames - 1));
@@ -76,13 +83,13 @@ class WeatherTime {
     auto at = [&](const float* field, std::int64_t p) {
       return (1 - a) * double(field[i0 * n + p]) + a * double(field[i1 * n + p]);
     };
-    if (f_.wind_speed && std::max(at(f_.wind_speed, v), at(f_.wind_speed, w)) > v_.max_wind_ms) return inf;
+    if (f_.wind_speed && std::max(at(f_.wind_speed, v), at(f_.wind_speed, w)) > v_.max_wind_ms) return 0;
     const double course = course_[std::size_t((v / g_.cols) * n_off_ + o)];
 
-    double speed = v_.speed_kn;
+    double speed = v0_kn;
     if (f_.wave_height) {
       const double hv = at(f_.wave_height, v), hw = at(f_.wave_height, w);
-      if (std::max(hv, hw) > v_.max_wave_m) return inf;
+      if (std::max(hv, hw) > v_.max_wave_m) return 0;
       if (v_.speed_loss == SpeedLoss::khokhlov) {
         double q = 0;  // waves of unknown direction: head seas, the largest loss
         if (f_.wave_from) {
@@ -99,8 +106,7 @@ class WeatherTime {
       const double vt = std::hypot(ce, cn);
       if (vt > 0) speed = speed_over_ground_kn(speed, vt, std::atan2(ce, cn) - course);
     }
-    if (!(speed > 1e-9)) return inf;
-    return r_km / km_per_nm / speed;
+    return speed > 1e-9 ? speed : 0;
   }
 
  private:
@@ -110,6 +116,50 @@ class WeatherTime {
   std::int64_t n_off_;
   double best_kn_;
   std::vector<double> course_;
+};
+
+// Paper 004's fuel: each step's engine setting is chosen from `settings_kn` (calm-water speeds)
+// to minimise fuel + lambda x time, fuel burnt at rate_t_per_h per hour at each setting. Sweeping
+// lambda (tonnes per hour of passage) traces the time-fuel trade-off; lambda = 0 is the least
+// fuel. The weather is the forecast at departure (the label is fuel + lambda x time, not time,
+// so the time a step starts is not known during the search).
+class FuelLagrangian {
+ public:
+  FuelLagrangian(const WeatherTime& physics, std::vector<double> settings_kn,
+                 std::vector<double> rate_t_per_h, double lambda, double best_extra_kn)
+      : physics_(physics), settings_(std::move(settings_kn)), rate_(std::move(rate_t_per_h)),
+        lambda_(lambda) {
+    min_rate_ = inf;  // cheapest possible t/km: some setting at its fastest attainable speed
+    for (std::size_t s = 0; s < settings_.size(); ++s)
+      min_rate_ = std::min(min_rate_, (rate_[s] + lambda_) / (km_per_nm * (settings_[s] + best_extra_kn)));
+  }
+
+  StepBounds bounds(const Passability&) const { return {min_rate_, inf, true}; }
+
+  template <class Cell>
+  double operator()(std::int64_t v, std::int64_t w, int o, double r_km, double, Cell&&) const {
+    return best(v, w, o, r_km).cost;
+  }
+
+  struct Choice {
+    double cost = inf, hours = inf, fuel_t = inf;
+    int setting = -1;
+  };
+  Choice best(std::int64_t v, std::int64_t w, int o, double r_km) const {
+    Choice c;
+    for (std::size_t s = 0; s < settings_.size(); ++s) {
+      const double sog = physics_.speed_over_ground(v, w, o, 0.0, settings_[s]);
+      if (sog <= 0) continue;
+      const double hours = r_km / km_per_nm / sog, cost = (rate_[s] + lambda_) * hours;
+      if (cost < c.cost) c = {cost, hours, rate_[s] * hours, int(s)};
+    }
+    return c;
+  }
+
+ private:
+  const WeatherTime& physics_;
+  std::vector<double> settings_, rate_;
+  double lambda_, min_rate_;
 };
 
 }  // namespace seaway

@@ -104,21 +104,14 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
     w = _heuristic_weight(method, None)
     fc = _ForecastChart(forecast, variables, land, neighbourhood, departure)
     chart, arrays = fc.chart, fc.arrays
-    best = vessel.speed_kn
-    if vessel.speed_loss == "khokhlov" and "wave_height" in arrays:  # following seas add speed
-        gain = (0.275 * np.pi - 0.745) * 1.32 * float(arrays["wave_height"].max())
-        best += max(gain, 0.0) * (1 - 1.35e-6 * vessel.displacement_t * vessel.speed_kn)
-    if "current_east" in arrays:
-        best += float(np.hypot(arrays["current_east"], arrays["current_north"]).max()) * KNOTS_PER_MS
+    best = vessel.speed_kn + best_extra_kn(fc.arrays, vessel)
     max_wind = vessel.max_wind_ms if vessel.danger_wind_ms is None else min(vessel.max_wind_ms,
                                                                              vessel.danger_wind_ms)
     s, e = locate(chart, start, "start"), locate(chart, end, "end")
     cols = chart.shape[1]
     hours, path, stats, cumulative = _core.route_time(
-        fc.prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, fc.frames, fc.first_h, fc.step_h,
-        arrays.get("current_east"), arrays.get("current_north"), arrays.get("wave_height"),
-        arrays.get("wave_from"), arrays.get("wind_speed"), vessel.speed_kn, vessel.displacement_t,
-        vessel.speed_loss, max_wind, vessel.max_wave_m, best)
+        fc.prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, fc.arrays, fc.frames,
+        fc.first_h, fc.step_h, _vessel_dict(vessel, max_wind), best)
     if not np.isfinite(hours):
         raise NoRouteError(f"no route from {_describe(chart, s)} to {_describe(chart, e)} within "
                            "the vessel's wind and wave limits (and danger zones) of this forecast; "
@@ -129,6 +122,24 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
         stats["departure"] = dep
         stats["arrival"] = dep + np.timedelta64(int(round(hours * 3600)), "s")
     return fc.route(path, hours, cumulative, stats, method, "time", speed_kn=vessel.speed_kn)
+
+
+def best_extra_kn(arrays: dict, vessel: Vessel) -> float:
+    """The most the weather can add to a calm-water speed: following seas under Khokhlov's
+    formula, plus the strongest current (for A*'s admissible bound)."""
+    extra = 0.0
+    if vessel.speed_loss == "khokhlov" and "wave_height" in arrays:
+        gain = (0.275 * np.pi - 0.745) * 1.32 * float(arrays["wave_height"].max())
+        extra += max(gain, 0.0) * (1 - 1.35e-6 * vessel.displacement_t * vessel.speed_kn)
+    if "current_east" in arrays:
+        extra += float(np.hypot(arrays["current_east"], arrays["current_north"]).max()) * KNOTS_PER_MS
+    return extra
+
+
+def _vessel_dict(vessel: Vessel, max_wind_ms: float) -> dict:
+    return {"speed_kn": vessel.speed_kn, "displacement_t": vessel.displacement_t,
+            "speed_loss": vessel.speed_loss, "max_wind_ms": max_wind_ms,
+            "max_wave_m": vessel.max_wave_m}
 
 
 class _ForecastChart:
@@ -188,10 +199,10 @@ def route_safest(forecast, start, end, *, ship_length_m, speed_kn, at_hours=0.0,
                          + ", ".join(STANDARD_NAMES[m][0] for m in sorted(missing)))
     s, e = locate(fc.chart, start, "start"), locate(fc.chart, end, "end")
     cols = fc.chart.shape[1]
+    frame = {role: fc.frame(role, at_hours) for role in ("wave_height", "wave_from", "wave_period")}
     cost, path, stats, cumulative = _core.route_danger(
-        fc.prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w,
-        fc.frame("wave_height", at_hours), fc.frame("wave_from", at_hours),
-        fc.frame("wave_period", at_hours), float(ship_length_m), float(speed_kn))
+        fc.prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, frame,
+        float(ship_length_m), float(speed_kn))
     if not np.isfinite(cost):
         raise NoRouteError(f"no route at sea from {_describe(fc.chart, s)} to {_describe(fc.chart, e)}")
     return fc.route(path, cost, cumulative, dict(stats), method, "wave danger", speed_kn=speed_kn)
