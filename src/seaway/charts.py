@@ -14,6 +14,7 @@ import numpy as np
 
 from ._fields import distance_km, gaussian, resample, smooth_noise
 from .ice import classes as ice_classes
+from .ice.codes import STAGE_CODES
 # Paper 000's impact tables and ice_impact() live in seaway.ice.impact (with tables for every
 # class); re-exported here so seaway.charts.ice_impact keeps working.
 from .ice.impact import ICE_IMPACT, ice_impact  # noqa: F401
@@ -24,22 +25,10 @@ KM_PER_DEG = np.pi * EARTH_RADIUS_KM / 180.0
 #: Extent of kara_sea() in degrees: pixel edges, not centres.
 KARA_EXTENT = {"lat_north": 82.0, "lat_south": 68.0, "lon_west": 50.0, "lon_east": 110.0}
 
-#: WMO stage of development (SIGRID-3 SA/SB/SC codes): (name, thickness range in m, lower bound
-#: inclusive). New ice and nilas are both "< 10 cm"; the chart puts new ice below 5 cm.
-STAGES = {
-    55: ("ice free", (0.0, 0.0)),
-    81: ("new ice", (0.0, 0.10)),
-    82: ("nilas", (0.0, 0.10)),
-    83: ("young ice", (0.10, 0.30)),
-    84: ("grey ice", (0.10, 0.15)),
-    85: ("grey-white ice", (0.15, 0.30)),
-    86: ("first-year ice", (0.30, 2.00)),
-    87: ("thin first-year ice", (0.30, 0.70)),
-    88: ("thin first-year ice, stage 1", (0.30, 0.50)),
-    89: ("thin first-year ice, stage 2", (0.50, 0.70)),
-    91: ("medium first-year ice", (0.70, 1.20)),
-    93: ("thick first-year ice", (1.20, np.inf)),
-}
+#: The WMO stages of development the synthetic chart uses: code -> (name, typical thickness
+#: range in m), from seaway.ice.codes. New ice and nilas are both "< 10 cm"; the chart puts new
+#: ice below 5 cm.
+STAGES = {c: STAGE_CODES[c] for c in (55, 81, 82, 83, 84, 85, 86, 87, 88, 89, 91, 93)}
 
 #: Classes without a table of their own in ICE_IMPACT -> the RS class whose table they use.
 ICE_CLASS_ALIASES = {n: c.rs_class for n, c in ice_classes.CLASSES.items() if n not in ICE_IMPACT}
