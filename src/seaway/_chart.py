@@ -138,7 +138,9 @@ def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negat
         raise TypeError(f"cost must hold real numbers, got dtype {values.dtype}")
     if values.dtype not in (np.float32, np.float64):
         values = values.astype(np.float64)
-    values = np.ascontiguousarray(values)
+    # C order and aligned (an array unpickled from a buffer, e.g. on a Dask worker, may sit at
+    # an odd address: the engine reads doubles in place, which needs alignment).
+    values = np.require(values, requirements=["C_CONTIGUOUS", "ALIGNED"])
     if not allow_negative:
         negative = values < 0
         if negative.any():
@@ -190,9 +192,12 @@ def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negat
         if "y" in coords:
             dy, dx = abs(_regular_step(coords["y"], "y")), abs(_regular_step(coords["x"], "x"))
             chart.y, chart.x = coords["y"], coords["x"]
-        for name, v in (("dx", dx), ("dy", dy)):
+        for name, v, n in (("dx", dx, cols), ("dy", dy, rows)):
             if not (np.isfinite(v) and v > 0):
                 raise ValueError(f"{name} must be a positive cell size, got {v!r}")
+            if not v * n < 1e306:
+                raise ValueError(f"{name} = {v!r} is too large a cell size: the chart would span "
+                                 f"{v * n:g} units; rescale the cell sizes")
         grid.dx, grid.dy = float(dx), float(dy)
         if chart.y is None:
             chart.y, chart.x = np.arange(rows) * float(dy), np.arange(cols) * float(dx)

@@ -110,6 +110,49 @@ def locate(chart: Chart, point, name: str) -> tuple[int, int]:
     return r, c
 
 
+# Route costs are sums of (cost x step length) in double precision: every step cost must be a
+# normal number (subnormal steps lose the precision that exact A* relies on), and a route whose
+# cost overflows to inf would read as "no route".
+MAX_TOTAL, MIN_STEP = 1e300, 1e-290
+
+
+def _step_range(chart: Chart, neighbourhood: int) -> tuple[float, float]:
+    """Bounds on a step's length: (shortest, longest); lat/lon: 1 mm and half the Earth."""
+    if chart.geographic:
+        return 1e-6, np.pi * 6371.0088
+    g = chart.grid
+    return min(g.dx, g.dy), (neighbourhood - 1) / 2 * float(np.hypot(g.dx, g.dy))
+
+
+def _check_tiny(chart: Chart, neighbourhood: int) -> None:
+    u = chart.values
+    shortest, _ = _step_range(chart, neighbourhood)
+    limit = MIN_STEP / shortest
+    if not np.fmin.reduce(u, axis=None) < limit:  # the usual case: one fast pass, no copies
+        return
+    tiny = (u > 0) & (u < min(limit, float(np.finfo(u.dtype).max)))
+    if tiny.any():
+        raise ValueError(
+            f"positive costs as small as {float(u[tiny].min()):g} with steps of {shortest:g} are "
+            f"too small for double precision (step costs below {MIN_STEP:g}); rescale the costs "
+            "(or dx, dy), or use 0 for free pixels"
+        )
+
+
+def _check_overflow(chart: Chart, neighbourhood: int) -> None:
+    """Called when a search left pixels at inf cost: was it overflow rather than no route?"""
+    u = chart.values
+    _, longest = _step_range(chart, neighbourhood)
+    limit = MAX_TOTAL / (longest * u.size)
+    big = (u > min(limit, float(np.finfo(u.dtype).max))) & (u < np.inf)
+    if big.any():
+        raise ValueError(
+            f"costs up to {float(u[big].max()):g} with steps up to {longest:g} long can overflow "
+            f"a route's cost (double precision) on a chart of {u.size} pixels; rescale the costs "
+            f"(or dx, dy) so that largest cost x step length x pixel count stays below {MAX_TOTAL:g}"
+        )
+
+
 class PreparedChart:
     """A chart validated and prepared once for many routes.
 
@@ -134,6 +177,7 @@ class PreparedChart:
         return self
 
     def _setup(self, chart, neighbourhood, directions, edge_cost, land_rule):
+        _check_tiny(chart, neighbourhood)
         self.chart = chart
         self.neighbourhood, self.directions, self.edge_cost = neighbourhood, directions, edge_cost
         self._router = _core.make_router(chart.values, chart.land, chart.grid, neighbourhood,
@@ -154,6 +198,7 @@ class PreparedChart:
         s, e = locate(chart, start, "start"), locate(chart, end, "end")
         total, path, stats, cumulative = self._search(s, e, w)
         if not np.isfinite(total):
+            _check_overflow(chart, self.neighbourhood)
             raise NoRouteError(
                 f"no route from start {_describe(chart, s)} to end {_describe(chart, e)}: no "
                 f"chain of passable steps joins them with neighbourhood={self.neighbourhood} "
@@ -171,6 +216,8 @@ class PreparedChart:
         chart = self.chart
         s = locate(chart, start, "start")
         field, _ = self._router.field(self._flat(s), *chart.shape)
+        if not np.isfinite(field).all():
+            _check_overflow(chart, self.neighbourhood)
         if chart.template is None:
             return field
         out = chart.template.copy(data=field)

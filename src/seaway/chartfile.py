@@ -50,6 +50,12 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None) -> 
         if ext in SIGRID:
             ds, kind = _sigrid(path), "SIGRID-3 chart"
         else:
+            from ._files import check_netcdf
+
+            try:
+                check_netcdf(path)  # a truncated classic file would read as zeros
+            except ValueError as exc:
+                raise ChartError(str(exc)) from None
             try:
                 ds = xr.open_dataset(path)
             except Exception as exc:  # netCDF4/h5netcdf raise many types

@@ -38,6 +38,12 @@ def route_through_array(costs, start, end, fully_connected=True, geometric=True)
             raise ValueError(f"{name} {tuple(p)} lies outside the array of shape {arr.shape}")
         pts.append((r, c))
     (s, e) = pts
+    if geometric and chart.values[s] < 0:
+        # skimage starts such a route with a negative step cost; seaway's search needs costs
+        # >= 0 (it answered |cost|), so it refuses rather than return a wrong cost.
+        raise ValueError(f"start {tuple(start)} has a negative cost ({chart.values[s]:g}); with "
+                         "geometric=True a route from it would start with a negative step cost, "
+                         "which seaway does not handle: start from a pixel with cost >= 0")
     if not geometric and not chart.values[s] < np.inf:  # +inf or NaN start: skimage finds no path
         raise NoRouteError("no minimum-cost path was found to the specified end point")
     prepared = PreparedChart._from_chart(chart, 3, "full" if fully_connected else "axis",

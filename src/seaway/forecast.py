@@ -63,6 +63,9 @@ def open_forecast(path, **kwargs) -> xr.Dataset:
         except ImportError:
             raise ImportError(f"{path}: reading GRIB needs cfgrib: pip install cfgrib") from None
         return xr.open_dataset(path, engine="cfgrib", **kwargs)
+    from ._files import check_netcdf
+
+    check_netcdf(path)  # a truncated classic file would read as zeros
     try:
         return xr.open_dataset(path, **kwargs)
     except (OSError, ValueError) as exc:

@@ -62,6 +62,30 @@ def _reproject(geoms, src_crs, grid: Grid):
     return shapely.transform(geoms, lambda xy: np.column_stack(tr.transform(xy[:, 0], xy[:, 1])))
 
 
+def _check_contents(path, meta, fields, wkb):
+    """Errors naming the file for what would otherwise read as an empty or wrong chart."""
+    import shapely
+
+    if len(wkb) == 0:
+        raise ValueError(f"{path}: the layer has no features (an empty SIGRID-3 chart)")
+    if not {"CT", "SA", "POLY_TYPE"} & set(fields):
+        raise ValueError(f"{path}: none of the SIGRID-3 fields CT, SA, POLY_TYPE is present "
+                         f"(fields: {sorted(fields)}); is it a SIGRID-3 ice chart?")
+    geoms = shapely.from_wkb(wkb)
+    kinds = shapely.get_type_id(geoms)
+    other = ~np.isin(kinds, [-1, 3, 6, 7])  # missing, Polygon, MultiPolygon, GeometryCollection
+    if other.any():
+        types = sorted({g.geom_type for g in geoms[other]})
+        raise ValueError(f"{path}: {int(other.sum())} of {len(geoms)} features are not polygons "
+                         f"({', '.join(types)}); SIGRID-3 charts are polygon layers")
+    if not meta["crs"]:
+        box = shapely.total_bounds(geoms)
+        if np.all(np.isfinite(box)) and (np.abs(box[[0, 2]]).max() > 360 or np.abs(box[[1, 3]]).max() > 90):
+            raise ValueError(f"{path}: the file states no CRS and its coordinates (x {box[0]:.6g}.."
+                             f"{box[2]:.6g}, y {box[1]:.6g}..{box[3]:.6g}) are not degrees; supply "
+                             "the .prj file (or set the CRS) so it can be reprojected")
+
+
 def _decode(fields: dict, n: int, rule: str) -> dict:
     """Per-polygon decoded layers (float64 arrays of length n) and poly types."""
     get = lambda name: fields.get(name, [None] * n)  # noqa: E731
@@ -98,8 +122,12 @@ def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_tou
     import xarray as xr
     from affine import Affine
 
-    meta, _, wkb, field_data = pyogrio.raw.read(path, layer=layer)
+    try:
+        meta, _, wkb, field_data = pyogrio.raw.read(path, layer=layer)
+    except Exception as exc:  # pyogrio's DataSourceError, DataLayerError, ...
+        raise ValueError(f"{path}: cannot read it as a SIGRID-3 vector file ({exc})") from None
     fields = {str(k).upper(): v for k, v in zip(meta["fields"], field_data)}
+    _check_contents(path, meta, fields, wkb)
     geoms = shapely.from_wkb(wkb)
     bad = ~shapely.is_valid(geoms)
     geoms[bad] = [_polygonal(g) for g in geoms[bad]]
@@ -109,6 +137,12 @@ def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_tou
     index = rasterio.features.rasterize(shapes, out_shape=grid.shape, fill=-1, dtype="int32",
                                         transform=Affine(*grid.transform()),
                                         all_touched=all_touched)
+    if (index < 0).all():
+        box = shapely.total_bounds(geoms)
+        raise ValueError(
+            f"{path}: none of its {n} polygons falls on the grid (their extent in the grid's CRS "
+            f"{grid.crs} is x {box[0]:.6g}..{box[2]:.6g}, y {box[1]:.6g}..{box[3]:.6g}); check the "
+            f"file's CRS ({str(meta['crs'] or 'none: read as EPSG:4326')[:80]}) and the grid")
     layers = _decode(fields, n, concentration)
     off = index < 0
     dims = grid.dims()

@@ -1,0 +1,155 @@
+"""N threads x M queries give exactly the serial answers (one PreparedChart shared by all, and
+plain seaway.route), and an interrupted call (Ctrl-C) leaves a PreparedChart answering
+correctly."""
+
+from __future__ import annotations
+
+import signal
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+import pytest
+
+import seaway
+
+THREADS = 6
+
+
+def _chart(seed, shape, dtype=np.float64):
+    rng = np.random.default_rng(seed)
+    cost = rng.uniform(0.5, 12.0, shape).astype(dtype)
+    cost[rng.random(shape) < 0.25] = np.inf
+    return cost
+
+
+def _queries(cost, n, seed):
+    rng = np.random.default_rng(seed)
+    water = np.argwhere(np.isfinite(cost))
+    pick = rng.choice(len(water), (n, 2))
+    methods = ["dijkstra", "astar", ("astar", 2.0)]
+    return [(tuple(map(int, water[a])), tuple(map(int, water[b])), methods[k % 3])
+            for k, (a, b) in enumerate(pick)]
+
+
+def _answer(route_fn, q):
+    """Everything a query returns that must not depend on threads: cost, pixels and settled."""
+    a, b, how = q
+    method, w = (how, None) if isinstance(how, str) else how
+    try:
+        r = route_fn(a, b, method=method, weight=w)
+    except seaway.NoRouteError as e:
+        return ("no route", str(e))
+    return (r.cost, r.pixels.tobytes(), r.stats["settled"], r.step_costs.tobytes())
+
+
+def _threaded(fn, items):
+    barrier = threading.Barrier(THREADS)
+
+    def start(_):
+        barrier.wait()  # every thread starts querying at once
+        return None
+
+    with ThreadPoolExecutor(THREADS) as pool:
+        list(pool.map(start, range(THREADS)))
+        return list(pool.map(fn, items))
+
+
+@pytest.mark.parametrize("edge_cost, k, dtype", [("max", 3, np.float64), ("integral", 7, np.float32),
+                                                 ("mean", 15, np.float64)])
+def test_threads_on_one_prepared_chart_give_the_serial_answers(edge_cost, k, dtype):
+    cost = _chart(11, (90, 120), dtype)
+    chart = seaway.prepare(cost, neighbourhood=k, edge_cost=edge_cost)
+    queries = _queries(cost, 60, seed=k) * 2  # repeats: answers must not depend on reuse
+    serial = [_answer(chart.route, q) for q in queries]
+    assert sum(s[0] != "no route" for s in serial) > len(queries) // 2
+    for _ in range(3):
+        assert _threaded(lambda q: _answer(chart.route, q), queries) == serial
+
+
+def test_threads_mixing_routes_and_cost_fields_on_one_chart():
+    cost = _chart(12, (70, 90))
+    chart = seaway.prepare(cost, neighbourhood=5)
+    queries = _queries(cost, 30, seed=3)
+    starts = [q[0] for q in queries]
+    fields = [chart.cost_field(s) for s in starts]
+    routes = [_answer(chart.route, q) for q in queries]
+
+    def job(i):
+        return ("field", i, chart.cost_field(starts[i])) if i % 2 else ("route", i, _answer(chart.route, queries[i]))
+
+    for kind, i, got in _threaded(job, range(len(queries))):
+        if kind == "field":
+            np.testing.assert_array_equal(got, fields[i])
+        else:
+            assert got == routes[i]
+
+
+def test_threads_on_plain_route_and_geographic_charts_give_the_serial_answers():
+    cost = _chart(13, (40, 72))
+    lat, lon = np.linspace(60, 80, 40), np.arange(72) * 5.0  # wraps around the globe
+    queries = [((float(lat[a[0]]), float(lon[a[1]])), (float(lat[b[0]]), float(lon[b[1]])), how)
+               for a, b, how in _queries(cost, 24, seed=5)]
+
+    def fresh(a, b, **kw):
+        return seaway.route(cost, a, b, lat=lat, lon=lon, neighbourhood=5, **kw)
+
+    serial = [_answer(fresh, q) for q in queries]
+    assert any(s[0] != "no route" for s in serial)
+    assert _threaded(lambda q: _answer(fresh, q), queries) == serial
+
+
+def _interrupt_main_after(seconds):
+    timer = threading.Timer(seconds, signal.raise_signal, (signal.SIGINT,))
+    timer.start()
+    return timer
+
+
+@pytest.mark.skipif(threading.current_thread() is not threading.main_thread(),
+                    reason="signals reach only the main thread")
+def test_an_interrupted_query_leaves_the_prepared_chart_correct():
+    """Ctrl-C while a long search runs (GIL released): KeyboardInterrupt arrives when the search
+    returns; the workspace goes back to the pool, and the next queries are exact."""
+    cost = np.ones((900, 900))
+    cost[100:800, 450] = np.inf
+    chart = seaway.prepare(cost, neighbourhood=5)
+    small = seaway.prepare(cost[:60, :60].copy(), neighbourhood=5)
+    expect_field = small.cost_field((0, 0))
+    expect = chart.route((0, 0), (899, 899), method="dijkstra")
+    timer = _interrupt_main_after(0.05)
+    t0 = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        while time.perf_counter() - t0 < 30:  # until the signal lands, whichever call it hits
+            chart.route((0, 0), (899, 899), method="dijkstra")
+            chart.cost_field((450, 0))
+    timer.join()
+    again = chart.route((0, 0), (899, 899), method="dijkstra")
+    assert again.cost == expect.cost and np.array_equal(again.pixels, expect.pixels)
+    assert chart.route((5, 5), (5, 5)).cost == 0.0
+    np.testing.assert_array_equal(small.cost_field((0, 0)), expect_field)
+    # several threads at once after the interrupt: still the serial answers
+    got = _threaded(lambda _: chart.route((0, 0), (899, 899), method="dijkstra").cost, range(THREADS))
+    assert got == [expect.cost] * THREADS
+
+
+def test_an_interrupt_in_a_worker_thread_does_not_disturb_the_others():
+    """A KeyboardInterrupt raised inside one thread's query (as a cancel) does not change what
+    the other threads get."""
+    cost = _chart(14, (80, 80))
+    chart = seaway.prepare(cost, neighbourhood=5)
+    queries = _queries(cost, 24, seed=9)
+    serial = [_answer(chart.route, q) for q in queries]
+
+    def job(i):
+        if i % 4 == 0:
+            try:
+                _answer(chart.route, queries[i])
+                raise KeyboardInterrupt
+            except KeyboardInterrupt:
+                return "cancelled"
+        return _answer(chart.route, queries[i])
+
+    out = _threaded(job, range(len(queries)))
+    for i, got in enumerate(out):
+        assert got == ("cancelled" if i % 4 == 0 else serial[i])
