@@ -4,6 +4,7 @@ import json
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -101,12 +102,31 @@ def test_route_snap_and_missing_file(chart_nc, tmp_path):
     assert done.returncode == 1 and "none.nc: no such file" in done.stderr
 
 
-def test_sigrid_without_reader_is_a_clear_error(tmp_path):
+def test_broken_sigrid_file_is_a_clear_error(tmp_path):
     shp = tmp_path / "chart.shp"
     shp.write_bytes(b"")
     done = run("route", str(shp), "--from", "73,61", "--to", "74,67")
     assert done.returncode == 1
-    assert "SIGRID-3" in done.stderr or "sigrid" in done.stderr
+    assert "chart.shp" in done.stderr
+
+
+DMI = (Path(__file__).resolve().parents[2] / "shared" / "data" / "ice_charts_sigrid3" / "dmi_greenland"
+       / "201304100920_CapeFarewell_RIC.shp")
+
+
+@pytest.mark.skipif(not DMI.exists(), reason="../shared/data is absent")
+def test_route_on_a_real_sigrid3_chart(tmp_path):
+    pytest.importorskip("pyogrio")
+    out = tmp_path / "r.geojson"
+    done = run("route", str(DMI), "--from", "59.5,-44", "--to", "60.5,-48", "--vessel", "Arc7",
+               "--grid", "59,61,-49,-43,0.01", "--no-smooth", "--out", str(out))
+    assert done.returncode == 0, done.stderr
+    assert "200 x 600 pixels" in done.stderr  # the --grid: 2 x 6 degrees at 0.01
+    feature = json.loads(out.read_text())
+    # Open water south of Cape Farewell on 10 April 2013: paper 000 gives Arc7 u = 2 per km.
+    assert feature["properties"]["cost"] == pytest.approx(2 * feature["properties"]["length"], rel=1e-9)
+    bad = run("route", str(DMI), "--from", "59.5,-44", "--to", "60.5,-48", "--grid", "61,59,-49,-43,0.01")
+    assert bad.returncode == 2 and "SOUTH < NORTH" in bad.stderr
 
 
 def test_help_explains_every_option():

@@ -28,6 +28,18 @@ def point(text: str) -> tuple[float, float]:
     return a, b
 
 
+def grid(text: str) -> tuple:
+    """argparse type for SOUTH,NORTH,WEST,EAST,RES (degrees)."""
+    try:
+        south, north, west, east, res = (float(v) for v in text.replace(" ", "").split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(
+            f"expected SOUTH,NORTH,WEST,EAST,RES in degrees (e.g. 58,64,-55,-37,0.02), got {text!r}") from None
+    if not (south < north and west < east and res > 0):
+        raise argparse.ArgumentTypeError(f"need SOUTH < NORTH, WEST < EAST and RES > 0, got {text!r}")
+    return south, north, west, east, res
+
+
 def size(text: str) -> tuple[int, int]:
     try:
         r, c = (int(v) for v in text.lower().split("x"))
@@ -80,7 +92,7 @@ def run_route(args) -> int:
     say = Progress("route", args.quiet)
     say(f"reading {args.chart}")
     data = open_chart(args.chart, variable=args.variable, vessel=args.vessel,
-                      land_variable=args.land_variable)
+                      land_variable=args.land_variable, grid=args.grid)
     for note in data.notes:
         say(note)
     cost = data.cost
@@ -166,6 +178,9 @@ def add_commands(commands, neighbourhood_type) -> None:
                          "GeoTIFF: the band number (default 1)")
     rp.add_argument("--land-variable", metavar="NAME",
                     help="chart variable holding the land mask (default: 'land' if present)")
+    rp.add_argument("--grid", type=grid, metavar="S,N,W,E,RES",
+                    help="lat/lon grid (degrees) to rasterise a SIGRID-3 chart onto (default: the "
+                         "chart's extent at 1/1000 of its longer side)")
     rp.add_argument("--neighbourhood", type=neighbourhood_type, default=5, metavar="K",
                     help="k of the k x k stencil: odd, 3 to 15 (default 5, as in paper 000)")
     rp.add_argument("--edge-cost", default="max", choices=("max", "mean", "integral"),

@@ -34,7 +34,9 @@ class ChartData:
     notes: list = field(default_factory=list)
 
 
-def open_chart(path: str, *, variable=None, vessel=None, land_variable=None) -> ChartData:
+def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, grid=None) -> ChartData:
+    """grid: (south, north, west, east, resolution) in degrees for a SIGRID-3 chart; by default
+    the chart's own extent at 1/1000 of its longer side (geographic charts only)."""
     import xarray as xr
 
     if path.lower() in ("kara", "builtin:kara"):
@@ -48,7 +50,7 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None) -> 
         if ext in GEOTIFF:
             return _geotiff(path, variable, vessel)
         if ext in SIGRID:
-            ds, kind = _sigrid(path), "SIGRID-3 chart"
+            ds, kind = _sigrid(path, grid), "SIGRID-3 chart"
         else:
             from ._files import check_netcdf
 
@@ -121,13 +123,31 @@ def _impact(ds, vessel, notes):
         raise ChartError(str(exc)) from None
 
 
-def _sigrid(path):
-    # A SIGRID-3 chart is vector polygons: it needs a target grid (extent, resolution,
-    # projection) that the command line does not take yet.
-    raise ChartError(
-        f"{path}: SIGRID-3 charts must be rasterised onto a grid first: in Python, "
-        "seaway.ice.sigrid.read_sigrid3(path, grid) gives a Dataset; save it with "
-        "ds.to_netcdf('chart.nc') and pass chart.nc with --vessel")
+def _sigrid(path, grid):
+    """Rasterise a SIGRID-3 chart onto a lat/lon grid (seaway.ice.sigrid, the [ice] extra)."""
+    try:
+        import pyogrio
+
+        from .ice.grids import latlon_grid
+        from .ice.sigrid import read_sigrid3
+    except ImportError as exc:
+        raise ChartError(f"{path}: reading SIGRID-3 charts needs the [ice] extra ({exc}): "
+                         'pip install "seaway[ice]"') from None
+    if grid is None:
+        info = pyogrio.read_info(path)
+        west, south, east, north = info["total_bounds"]
+        if not (-180 <= west <= east <= 360 and -90 <= south <= north <= 90):
+            raise ChartError(f"{path}: the chart is not in degrees ({info['crs']}); give the lat/lon "
+                             "grid to rasterise onto with --grid SOUTH,NORTH,WEST,EAST,RES")
+        res = max(north - south, east - west) / 1000
+        north = south + np.ceil((north - south) / res - 1e-9) * res  # whole pixels
+        east = west + np.ceil((east - west) / res - 1e-9) * res
+        grid = (south, north, west, east, res)
+    south, north, west, east, res = grid
+    try:
+        return read_sigrid3(path, latlon_grid(south, north, west, east, res))
+    except ValueError as exc:
+        raise ChartError(str(exc)) from None
 
 
 def _geotiff(path, variable, vessel):
