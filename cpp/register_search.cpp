@@ -91,13 +91,22 @@ void register_search(py::module_& m) {
       .def_readwrite("dlon", &Grid::dlon)
       .def_readwrite("wrap", &Grid::wrap);
 
+  py::class_<CancelToken>(m, "CancelToken", "Set it to stop the searches that were given it")
+      .def(py::init<>())
+      .def("set", [](CancelToken& t) { t.flag = true; })
+      .def_property_readonly("is_set", [](const CancelToken& t) { return t.flag.load(); });
+  py::register_exception<Cancelled>(m, "SearchCancelled", PyExc_KeyboardInterrupt);
+
   py::class_<StaticRouter>(m, "Router", "A chart prepared for routing: shared, thread-safe")
       .def("route",
-           [](StaticRouter& r, std::int64_t start, std::int64_t target, double weight) {
+           [](StaticRouter& r, std::int64_t start, std::int64_t target, double weight,
+              const CancelToken* cancel) {
              RouteResult out;
              {
                py::gil_scoped_release release;
-               out = r.with_model([&](const auto& model) { return r.grid->route(model, start, target, weight); });
+               out = r.with_model([&](const auto& model) {
+                 return r.grid->route(model, start, target, weight, flag_of(cancel));
+               });
              }
              return py::make_tuple(out.cost,
                                    py::array_t<std::int64_t>(py::ssize_t(out.path.size()), out.path.data()),
@@ -105,19 +114,23 @@ void register_search(py::module_& m) {
                                    py::array_t<double>(py::ssize_t(out.cumulative.size()), out.cumulative.data()));
            },
            py::arg("start"), py::arg("target"), py::arg("heuristic_weight"),
+           py::arg("cancel") = nullptr,
            "(cost, flat path, stats, cost to each path pixel); weight 0: Dijkstra, 1: A*, > 1: weighted A*")
       .def("field",
-           [](StaticRouter& r, std::int64_t start, std::int64_t rows, std::int64_t cols) {
+           [](StaticRouter& r, std::int64_t start, std::int64_t rows, std::int64_t cols,
+              const CancelToken* cancel) {
              py::array_t<double> out({rows, cols});
              double* d = out.mutable_data();
              SearchStats stats;
              {
                py::gil_scoped_release release;
-               stats = r.with_model([&](const auto& model) { return r.grid->field(model, start, d); });
+               stats = r.with_model([&](const auto& model) {
+                 return r.grid->field(model, start, d, flag_of(cancel));
+               });
              }
              return py::make_tuple(out, stats_dict(stats));
            },
-           py::arg("start"), py::arg("rows"), py::arg("cols"))
+           py::arg("start"), py::arg("rows"), py::arg("cols"), py::arg("cancel") = nullptr)
       .def_property_readonly("shared_bytes", [](const StaticRouter& r) { return r.grid->shared_bytes(); });
 
   auto bind = [&](auto tag) {

@@ -69,7 +69,7 @@ py::tuple as_tuple(const RouteResult& out) {
 
 py::tuple route_time(StaticRouter& r, std::int64_t start, std::int64_t target, double weight,
                      const py::dict& fields, std::int64_t frames, double first_h, double step_h,
-                     const py::dict& ship, double best_speed_kn) {
+                     const py::dict& ship, double best_speed_kn, const CancelToken* cancel) {
   const Grid& g = r.grid->grid();
   const Forecast f = forecast(g, fields, frames, first_h, step_h);
   const Vessel v = vessel(ship);
@@ -77,7 +77,7 @@ py::tuple route_time(StaticRouter& r, std::int64_t start, std::int64_t target, d
   {
     py::gil_scoped_release release;
     const WeatherTime model(g, r.grid->stencil(), f, v, best_speed_kn);
-    out = r.grid->route(model, start, target, weight);
+    out = r.grid->route(model, start, target, weight, flag_of(cancel));
   }
   return as_tuple(out);
 }
@@ -85,7 +85,8 @@ py::tuple route_time(StaticRouter& r, std::int64_t start, std::int64_t target, d
 // Least fuel + lambda x time; also each step's chosen setting, hours and fuel.
 py::tuple route_fuel(StaticRouter& r, std::int64_t start, std::int64_t target, double weight,
                      const py::dict& fields, const py::dict& ship, std::vector<double> settings_kn,
-                     std::vector<double> rate_t_per_h, double lambda, double best_extra_kn) {
+                     std::vector<double> rate_t_per_h, double lambda, double best_extra_kn,
+                     const CancelToken* cancel) {
   const Grid& g = r.grid->grid();
   if (settings_kn.empty() || settings_kn.size() != rate_t_per_h.size())
     throw std::invalid_argument("give one fuel rate per engine setting");
@@ -98,7 +99,7 @@ py::tuple route_fuel(StaticRouter& r, std::int64_t start, std::int64_t target, d
     py::gil_scoped_release release;
     const WeatherTime physics(g, r.grid->stencil(), f, v, 1.0);
     const FuelLagrangian model(physics, settings_kn, rate_t_per_h, lambda, best_extra_kn);
-    out = r.grid->route(model, start, target, weight);
+    out = r.grid->route(model, start, target, weight, flag_of(cancel));
     for (std::size_t i = 1; i < out.path.size(); ++i) {
       const std::int64_t a = out.path[i - 1], b = out.path[i], row = a / g.cols;
       std::int64_t dj = b % g.cols - a % g.cols;
@@ -115,7 +116,8 @@ py::tuple route_fuel(StaticRouter& r, std::int64_t start, std::int64_t target, d
 }
 
 py::tuple route_danger(StaticRouter& r, std::int64_t start, std::int64_t target, double weight,
-                       const py::dict& fields, double ship_length_m, double speed_kn) {
+                       const py::dict& fields, double ship_length_m, double speed_kn,
+                       const CancelToken* cancel) {
   const Grid& g = r.grid->grid();
   if (!g.geographic) throw std::invalid_argument("wave danger routing needs a lat/lon chart");
   const float* h = field(fields, "wave_height", g, 1);
@@ -126,7 +128,7 @@ py::tuple route_danger(StaticRouter& r, std::int64_t start, std::int64_t target,
   {
     py::gil_scoped_release release;
     const WaveDangerCost model(g, r.grid->stencil(), h, d, t, ship_length_m, speed_kn);
-    out = r.grid->route(model, start, target, weight);
+    out = r.grid->route(model, start, target, weight, flag_of(cancel));
   }
   return as_tuple(out);
 }
@@ -136,14 +138,16 @@ py::tuple route_danger(StaticRouter& r, std::int64_t start, std::int64_t target,
 void register_weather(py::module_& m) {
   m.def("route_time", &route_time, py::arg("router"), py::arg("start"), py::arg("target"),
         py::arg("heuristic_weight"), py::arg("fields"), py::arg("frames"), py::arg("first_h"),
-        py::arg("step_h"), py::arg("vessel"), py::arg("best_speed_kn"),
+        py::arg("step_h"), py::arg("vessel"), py::arg("best_speed_kn"), py::arg("cancel") = nullptr,
         "Time-optimal route (cost in hours) through a forecast on a prepared lat/lon chart.");
   m.def("route_fuel", &route_fuel, py::arg("router"), py::arg("start"), py::arg("target"),
         py::arg("heuristic_weight"), py::arg("fields"), py::arg("vessel"), py::arg("settings_kn"),
         py::arg("rate_t_per_h"), py::arg("lambda_t_per_h"), py::arg("best_extra_kn"),
+        py::arg("cancel") = nullptr,
         "Least fuel + lambda x time route with an engine setting per step (paper 004).");
   m.def("route_danger", &route_danger, py::arg("router"), py::arg("start"), py::arg("target"),
         py::arg("heuristic_weight"), py::arg("fields"), py::arg("ship_length_m"), py::arg("speed_kn"),
+        py::arg("cancel") = nullptr,
         "Least wave-danger route (paper 003 with MSC.1/Circ.1228's criteria), (1, rows, cols) fields.");
   m.def("wave_danger", &wave_danger, py::arg("hs_m"), py::arg("wave_length_m"), py::arg("alpha_rad"),
         py::arg("ship_length_m"), py::arg("speed_kn"), "Danger u in [1, 10] of one wave encounter.");

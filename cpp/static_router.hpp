@@ -2,6 +2,7 @@
 // binding files of each area).
 #pragma once
 
+#include <atomic>
 #include <memory>
 
 #include "seaway/cost_models.hpp"
@@ -10,6 +11,12 @@
 namespace seaway {
 
 enum class EdgeCost { max, mean, integral, entered };
+
+// Set from Python (e.g. on Ctrl-C) to stop a running search: it throws Cancelled.
+struct CancelToken {
+  std::atomic<bool> flag{false};
+};
+inline const std::atomic<bool>* flag_of(const CancelToken* t) { return t ? &t->flag : nullptr; }
 
 // A prepared chart with its static cost model. The raster is read in place:
 // seaway.PreparedChart keeps the arrays alive beside the router.

@@ -58,12 +58,13 @@ class PreparedGrid {
 
   // Least-cost route under `model`; weight 0: Dijkstra, 1: A*, > 1: weighted A*.
   template <class Model>
-  RouteResult route(const Model& model, std::int64_t start, std::int64_t target, double weight) {
+  RouteResult route(const Model& model, std::int64_t start, std::int64_t target, double weight,
+                    const std::atomic<bool>* cancel = nullptr) {
     check(start);
     check(target);
     Lease ws(*this);
     RouteResult out;
-    out.stats = run(model, start, target, weight, *ws);
+    out.stats = run(model, start, target, weight, *ws, cancel);
     out.cost = ws->cost(target);
     if (out.cost < inf) {
       out.path = trace_path(g_, stencil_, *ws, start, target);
@@ -74,10 +75,11 @@ class PreparedGrid {
 
   // Accumulated cost from start to every pixel (inf where unreachable) into out[size].
   template <class Model>
-  SearchStats field(const Model& model, std::int64_t start, double* out) {
+  SearchStats field(const Model& model, std::int64_t start, double* out,
+                    const std::atomic<bool>* cancel = nullptr) {
     check(start);
     Lease ws(*this);
-    SearchStats stats = run(model, start, -1, 0.0, *ws);
+    SearchStats stats = run(model, start, -1, 0.0, *ws, cancel);
     for (std::int64_t v = 0; v < g_.size(); ++v) out[v] = ws->cost(v);
     return stats;
   }
@@ -116,7 +118,7 @@ class PreparedGrid {
   // heap otherwise; a 4-ary heap for weighted A*, whose keys are not monotone.
   template <class Model>
   SearchStats run(const Model& model, std::int64_t start, std::int64_t target, double weight,
-                  Workspace& ws) const {
+                  Workspace& ws, const std::atomic<bool>* cancel) const {
     const StepBounds b = model.bounds(pass_);
     const double rmin = b.per_length ? rmin_ : 1.0, rmax = b.per_length ? rmax_ : 1.0;
     const bool astar = weight == 1 && target >= 0 && b.per_length;
@@ -128,7 +130,7 @@ class PreparedGrid {
     const double span = 1.000001 * (b.max_rate + (astar ? b.min_rate : 0.0)) * rmax + 1e-300;
     const bool buckets = weight <= 1 && width > 0 && span < inf &&
                          BucketQueue::buckets_needed(width, span) < 65536;
-    SearchSpec spec{&g_, &stencil_, rule_, target >= 0 && b.per_length ? weight : 0.0};
+    SearchSpec spec{&g_, &stencil_, rule_, target >= 0 && b.per_length ? weight : 0.0, cancel};
     if (buckets && astar) spec.heuristic_weight = 1 - eps;
     const std::uint8_t* clear = clearance_.data();
     SearchStats stats;

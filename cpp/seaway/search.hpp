@@ -3,6 +3,7 @@
 // The search is a template over the edge-cost model, so new costs are new functors.
 #pragma once
 
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -70,6 +71,12 @@ struct SearchSpec {
   const std::vector<Offset>* stencil;
   LandRule land_rule = LandRule::segment;
   double heuristic_weight = 0;  // 0: Dijkstra; 1: A*; w > 1: weighted A* (cost <= w * optimum)
+  const std::atomic<bool>* cancel = nullptr;  // polled every 4096 expansions; set: throw Cancelled
+};
+
+// Thrown out of a search whose cancel flag was set (e.g. Ctrl-C in Python).
+struct Cancelled : std::runtime_error {
+  Cancelled() : std::runtime_error("search cancelled") {}
 };
 
 // Runs from `start` until `target` is settled (target < 0: until every reachable pixel is).
@@ -109,7 +116,8 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
     const double dv = dist[v];
     if (std::signbit(dv)) continue;  // an older, costlier entry of an expanded pixel
     dist[v] = -dv;                   // expanded: never reopened (weighted A* keeps its bound)
-    ++stats.settled;
+    if ((++stats.settled & 4095) == 0 && spec.cancel && spec.cancel->load(std::memory_order_relaxed))
+      throw Cancelled();
     if (v == target) break;
     const std::int64_t row = v / C, col = v - row * C;
     const double* len = lengths.row(row);

@@ -6,6 +6,7 @@ import numpy as np
 
 from . import _core
 from ._chart import Chart, as_chart
+from ._interrupt import interruptible
 from .errors import NoRouteError
 from .route import Route
 
@@ -189,7 +190,8 @@ class PreparedChart:
     def _search(self, s, e, weight):
         """(cost, flat path, stats, cost to each path pixel) between two located pixels; cost is
         inf if unreachable."""
-        return self._router.route(self._flat(s), self._flat(e), weight)
+        return interruptible(lambda cancel: self._router.route(self._flat(s), self._flat(e),
+                                                               weight, cancel))
 
     def route(self, start, end, *, method="astar", weight=None) -> Route:
         """The least-cost route from `start` to `end` (see seaway.route)."""
@@ -215,7 +217,8 @@ class PreparedChart:
         DataArray chart gives a DataArray, in the dimension order it came in."""
         chart = self.chart
         s = locate(chart, start, "start")
-        field, _ = self._router.field(self._flat(s), *chart.shape)
+        field, _ = interruptible(lambda cancel: self._router.field(self._flat(s), *chart.shape,
+                                                                   cancel))
         if not np.isfinite(field).all():
             _check_overflow(chart, self.neighbourhood)
         if chart.template is None:

@@ -17,6 +17,7 @@ import numpy as np
 
 from . import _core
 from ._engine import _describe, _heuristic_weight, locate
+from ._interrupt import interruptible
 from .errors import NoRouteError
 from .route import Route
 from .weather import Vessel, _ForecastChart, _vessel_dict, best_extra_kn
@@ -61,10 +62,11 @@ def route_fuel(forecast, start, end, *, vessel: Vessel, fuel: FuelCurve, time_va
     cols = fc.chart.shape[1]
     max_wind = vessel.max_wind_ms if vessel.danger_wind_ms is None else min(vessel.max_wind_ms,
                                                                              vessel.danger_wind_ms)
-    (cost, path, stats, cumulative), setting, hours, burnt = _core.route_fuel(
-        fc.prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, frame,
-        _vessel_dict(vessel, max_wind), list(fuel.speeds_kn), list(fuel.rates_t_per_h),
-        float(time_value_t_per_h), best_extra_kn(frame, vessel))
+    (cost, path, stats, cumulative), setting, hours, burnt = interruptible(
+        lambda cancel: _core.route_fuel(
+            fc.prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, frame,
+            _vessel_dict(vessel, max_wind), list(fuel.speeds_kn), list(fuel.rates_t_per_h),
+            float(time_value_t_per_h), best_extra_kn(frame, vessel), cancel))
     if not np.isfinite(cost):
         raise NoRouteError(f"no route from {_describe(fc.chart, s)} to {_describe(fc.chart, e)} "
                            "at any engine setting within the vessel's limits")

@@ -30,6 +30,7 @@ import numpy as np
 from . import _core
 from ._chart import as_chart
 from ._engine import PreparedChart, _check_options, _describe, _heuristic_weight, locate
+from ._interrupt import interruptible
 from .errors import NoRouteError
 from .forecast import STANDARD_NAMES, find_fields
 from .route import Route
@@ -109,9 +110,9 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
                                                                              vessel.danger_wind_ms)
     s, e = locate(chart, start, "start"), locate(chart, end, "end")
     cols = chart.shape[1]
-    hours, path, stats, cumulative = _core.route_time(
+    hours, path, stats, cumulative = interruptible(lambda cancel: _core.route_time(
         fc.prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, fc.arrays, fc.frames,
-        fc.first_h, fc.step_h, _vessel_dict(vessel, max_wind), best)
+        fc.first_h, fc.step_h, _vessel_dict(vessel, max_wind), best, cancel))
     if not np.isfinite(hours):
         raise NoRouteError(f"no route from {_describe(chart, s)} to {_describe(chart, e)} within "
                            "the vessel's wind and wave limits (and danger zones) of this forecast; "
@@ -200,9 +201,9 @@ def route_safest(forecast, start, end, *, ship_length_m, speed_kn, at_hours=0.0,
     s, e = locate(fc.chart, start, "start"), locate(fc.chart, end, "end")
     cols = fc.chart.shape[1]
     frame = {role: fc.frame(role, at_hours) for role in ("wave_height", "wave_from", "wave_period")}
-    cost, path, stats, cumulative = _core.route_danger(
+    cost, path, stats, cumulative = interruptible(lambda cancel: _core.route_danger(
         fc.prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, frame,
-        float(ship_length_m), float(speed_kn))
+        float(ship_length_m), float(speed_kn), cancel))
     if not np.isfinite(cost):
         raise NoRouteError(f"no route at sea from {_describe(fc.chart, s)} to {_describe(fc.chart, e)}")
     return fc.route(path, cost, cumulative, dict(stats), method, "wave danger", speed_kn=speed_kn)
