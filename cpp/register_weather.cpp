@@ -52,7 +52,11 @@ Vessel vessel(const py::dict& d) {
   const std::string loss = d["speed_loss"].cast<std::string>();
   if (loss == "khokhlov") v.speed_loss = SpeedLoss::khokhlov;
   else if (loss == "none") v.speed_loss = SpeedLoss::none;
-  else throw std::invalid_argument("speed_loss must be 'khokhlov' or 'none', got '" + loss + "'");
+  else if (loss == "stawave1") v.speed_loss = SpeedLoss::stawave1;
+  else throw std::invalid_argument("speed_loss must be 'khokhlov', 'stawave1' or 'none', got '" + loss + "'");
+  v.beam_m = d["beam_m"].cast<double>();
+  v.length_m = d["length_m"].cast<double>();
+  v.calm_resistance_kn = d["calm_resistance_kn"].cast<double>();
   v.max_wind_ms = d["max_wind_ms"].cast<double>();
   v.max_wave_m = d["max_wave_m"].cast<double>();
   return v;
@@ -153,6 +157,9 @@ void register_weather(py::module_& m) {
         py::arg("ship_length_m"), py::arg("speed_kn"), "Danger u in [1, 10] of one wave encounter.");
   m.def("khokhlov_speed_kn", &khokhlov_speed_kn, py::arg("v0_kn"), py::arg("h3_m"), py::arg("q_rad"),
         py::arg("displacement_t"), "Speed through water in wind waves (paper 001, eq. 8).");
+  m.def("stawave1_speed_kn", &stawave1_speed_kn, py::arg("v0_kn"), py::arg("hs_m"), py::arg("beam_m"),
+        py::arg("length_m"), py::arg("calm_resistance_kn"),
+        "Speed at constant power in head waves from STAWAVE-1's added resistance.");
   m.def("speed_over_ground_kn", &speed_over_ground_kn, py::arg("v_kn"), py::arg("current_kn"),
         py::arg("q_rad"), "Speed over ground holding the track through a current (paper 001, eq. 6).");
 }

@@ -165,7 +165,7 @@ def test_paper_004_great_circle_versus_rhumb_line():
 
 
 def test_khokhlov_outside_its_range_is_refused_or_warned():
-    with pytest.raises(ValueError, match="speed_loss='none'"):
+    with pytest.raises(ValueError, match="speed_loss='stawave1' covers other ships"):
         route_time(forecast(hs=1.0), (61.0, 0.5), (61.0, 2.5), vessel=Vessel(displacement_t=40000))
     with pytest.warns(UserWarning, match="5000-25000 t"):
         route_time(forecast(hs=1.0), (61.0, 0.5), (61.0, 2.5),
@@ -295,3 +295,27 @@ def test_safest_route_names_missing_wave_fields():
     with pytest.raises(ValueError, match="sea_surface_wave_mean_period"):
         route_safest(forecast(hs=2.0, wdir=0.0), (61.0, 0.5), (61.0, 2.5), ship_length_m=100,
                      speed_kn=12)
+
+
+def test_stawave1_speed_loss_by_hand_and_on_a_route():
+    # B = 32 m, L = 200 m, Hs = 2 m: R_aw = 1025 x 9.80665 x 4 x 32 x sqrt(0.16) / 16 = 32.166 kN.
+    # Calm resistance 500 kN at 14 kn, constant power: x^3 + (32.166 / 500) x - 1 = 0.
+    a = 1025 * 9.80665 * 4 * 32 * 0.4 / 16 / 1000 / 500
+    roots = np.roots([1, 0, a, -1])
+    x = float(roots[np.isreal(roots)].real[0])
+    assert x == pytest.approx(0.97856, abs=1e-5)  # 0.97856^3 + 0.064332 x 0.97856 = 1.00000
+    assert _core.stawave1_speed_kn(14, 2.0, 32, 200, 500) == pytest.approx(14 * x, rel=1e-12)
+    # A large ship outside Khokhlov's range, heading into 2 m head seas (waves from the east).
+    ship = Vessel(speed_kn=14.0, displacement_t=90000, speed_loss="stawave1", beam_m=32,
+                  length_m=200, calm_resistance_kn=500)
+    calm = route_time(forecast(), (61.0, 0.5), (61.0, 2.5), vessel=CALM, neighbourhood=3).cost
+    head = route_time(forecast(hs=2.0, wdir=90.0), (61.0, 0.5), (61.0, 2.5), vessel=ship,
+                      neighbourhood=3).cost
+    follow = route_time(forecast(hs=2.0, wdir=270.0), (61.0, 0.5), (61.0, 2.5), vessel=ship,
+                        neighbourhood=3).cost
+    assert head == pytest.approx(calm * 12 / (14 * x), rel=1e-6)  # CALM sails at 12 kn
+    assert follow == pytest.approx(calm * 12 / 14, rel=1e-9)  # no added resistance from astern
+    with pytest.raises(ValueError, match="2.25 sqrt"):  # 2.25 sqrt(2) = 3.18 m
+        route_time(forecast(hs=4.0, wdir=90.0), (61.0, 0.5), (61.0, 2.5), vessel=ship)
+    with pytest.raises(ValueError, match="beam_m, length_m and calm_resistance_kn"):
+        route_time(forecast(), (61.0, 0.5), (61.0, 2.5), vessel=Vessel(speed_loss="stawave1"))

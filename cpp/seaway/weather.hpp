@@ -31,12 +31,14 @@ struct Forecast {
   const float* wind_speed = nullptr;    // m/s
 };
 
-enum class SpeedLoss { none, khokhlov };
+enum class SpeedLoss { none, khokhlov, stawave1 };
 
 struct Vessel {
   double speed_kn = 12;           // speed through calm water
   double displacement_t = 15000;  // for Khokhlov's formula
   SpeedLoss speed_loss = SpeedLoss::khokhlov;
+  // For STAWAVE-1: waterline breadth and length (m), calm-water resistance (kN) at speed_kn.
+  double beam_m = 0, length_m = 0, calm_resistance_kn = 0;
   double max_wind_ms = 25, max_wave_m = 5;  // limits (paper 001); also danger-zone winds (004)
 };
 
@@ -44,6 +46,19 @@ struct Vessel {
 // q the waves' bearing from the bow in radians (0: head seas, pi: following seas).
 inline double khokhlov_speed_kn(double v0, double h3, double q, double displacement_t) {
   return v0 - (0.745 * h3 - 0.275 * q * h3) * (1 - 1.35e-6 * displacement_t * v0);
+}
+
+// Speed at constant delivered power in head waves, from STAWAVE-1 (ITTC 7.5-04-01-01.1, ISO
+// 15016): added resistance R_aw = rho g Hs^2 B sqrt(B / L) / 16 (sea water rho = 1025 kg/m^3),
+// valid for waves within 45 degrees of the bow and Hs <= 2.25 sqrt(L / 100); with calm
+// resistance R0 at v0 growing as V^2, power R0 v0 = R0 (V/v0)^2 V + R_aw V gives V = x v0, x
+// the real root of x^3 + (R_aw / R0) x - 1 = 0.
+inline double stawave1_speed_kn(double v0, double hs_m, double beam_m, double length_m,
+                                double calm_resistance_kn) {
+  const double raw_kn = 1025.0 * 9.80665 * hs_m * hs_m * beam_m * std::sqrt(beam_m / length_m) / 16 / 1000;
+  const double a = raw_kn / calm_resistance_kn;
+  const double d = std::sqrt(0.25 + a * a * a / 27);
+  return v0 * (std::cbrt(0.5 + d) + std::cbrt(0.5 - d));
 }
 
 // Speed over ground holding the track through a current of speed vt at angle q to the
@@ -90,14 +105,19 @@ class WeatherTime {
     if (f_.wave_height) {
       const double hv = at(f_.wave_height, v), hw = at(f_.wave_height, w);
       if (std::max(hv, hw) > v_.max_wave_m) return 0;
-      if (v_.speed_loss == SpeedLoss::khokhlov) {
+      if (v_.speed_loss != SpeedLoss::none) {
         double q = 0;  // waves of unknown direction: head seas, the largest loss
         if (f_.wave_from) {
           const double dv = at(f_.wave_from, v) * deg, dw = at(f_.wave_from, w) * deg;
           const double from = std::atan2(std::sin(dv) + std::sin(dw), std::cos(dv) + std::cos(dw));
           q = std::fabs(std::remainder(from - course, 2 * pi));
         }
-        speed = khokhlov_speed_kn(speed, 1.32 * 0.5 * (hv + hw), q, v_.displacement_t);
+        const double hs = 0.5 * (hv + hw);
+        if (v_.speed_loss == SpeedLoss::khokhlov)
+          speed = khokhlov_speed_kn(speed, 1.32 * hs, q, v_.displacement_t);
+        else if (q <= pi / 4)  // STAWAVE-1 covers bow waves only; the calm resistance scales as v0^2
+          speed = stawave1_speed_kn(speed, hs, v_.beam_m, v_.length_m,
+                                    v_.calm_resistance_kn * (speed / v_.speed_kn) * (speed / v_.speed_kn));
       }
     }
     if (f_.current_east) {

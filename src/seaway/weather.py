@@ -42,27 +42,46 @@ class Vessel:
 
     speed_kn: float = 15.0
     displacement_t: float = 15000.0
-    speed_loss: str = "khokhlov"  # or "none": waves only limit where the ship may go
+    #: "khokhlov" (paper 001; 5000-25000 t, 9-20 kn), "stawave1" (any size: STAWAVE-1's added
+    #: resistance in bow waves at constant power; needs beam_m, length_m, calm_resistance_kn),
+    #: or "none" (waves only limit where the ship may go).
+    speed_loss: str = "khokhlov"
     max_wind_ms: float = 25.0
     max_wave_m: float = 5.0
     danger_wind_ms: float | None = None  # paper 004: 11 m/s zones avoided while forecast
-    outside_validity: str = "refuse"  # Khokhlov outside 5000-25000 t / 9-20 kn: or "warn"
+    outside_validity: str = "refuse"  # a speed-loss model outside its range: or "warn"
+    beam_m: float | None = None  # waterline breadth
+    length_m: float | None = None  # waterline length
+    calm_resistance_kn: float | None = None  # calm-water resistance at speed_kn, kN
+
+    def _outside(self, msg):
+        if self.outside_validity == "warn":
+            warnings.warn(msg, stacklevel=4)
+        else:
+            raise ValueError(msg + "; pass outside_validity='warn' to go on, or another speed_loss")
+
+    def check_waves(self, max_hs_m: float):
+        """STAWAVE-1 holds for Hs <= 2.25 sqrt(L / 100) (ITTC 7.5-04-01-01.1)."""
+        if self.speed_loss == "stawave1" and max_hs_m > 2.25 * np.sqrt(self.length_m / 100):
+            self._outside(f"STAWAVE-1 holds for significant heights up to 2.25 sqrt(L/100) = "
+                          f"{2.25 * np.sqrt(self.length_m / 100):.2f} m; the forecast has {max_hs_m:.2f} m")
 
     def check(self):
         if not (np.isfinite(self.speed_kn) and self.speed_kn > 0):
             raise ValueError(f"speed_kn must be positive, got {self.speed_kn!r}")
-        if self.speed_loss not in ("khokhlov", "none"):
-            raise ValueError(f"speed_loss must be 'khokhlov' or 'none', got {self.speed_loss!r}")
+        if self.speed_loss not in ("khokhlov", "stawave1", "none"):
+            raise ValueError(f"speed_loss must be 'khokhlov', 'stawave1' or 'none', got {self.speed_loss!r}")
+        if self.speed_loss == "stawave1":
+            sizes = (self.beam_m, self.length_m, self.calm_resistance_kn)
+            if not all(v is not None and np.isfinite(v) and v > 0 for v in sizes):
+                raise ValueError("speed_loss='stawave1' needs positive beam_m, length_m and "
+                                 "calm_resistance_kn (kN at speed_kn)")
         if self.speed_loss == "khokhlov":
             inside = 5000 <= self.displacement_t <= 25000 and 9 <= self.speed_kn <= 20
             if not inside:
-                msg = (f"Khokhlov's speed-loss formula holds for 5000-25000 t and 9-20 kn; this "
-                       f"vessel is {self.displacement_t:g} t at {self.speed_kn:g} kn")
-                if self.outside_validity == "warn":
-                    warnings.warn(msg, stacklevel=3)
-                else:
-                    raise ValueError(msg + "; pass speed_loss='none' (waves then only limit where "
-                                     "the ship may go) or outside_validity='warn'")
+                self._outside(f"Khokhlov's speed-loss formula holds for 5000-25000 t and 9-20 kn; "
+                              f"this vessel is {self.displacement_t:g} t at {self.speed_kn:g} kn "
+                              "(speed_loss='stawave1' covers other ships)")
 
 
 def _time_axis(ds, departure):
@@ -105,6 +124,8 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
     w = _heuristic_weight(method, None)
     fc = _ForecastChart(forecast, variables, land, neighbourhood, departure)
     chart, arrays = fc.chart, fc.arrays
+    if "wave_height" in arrays:
+        vessel.check_waves(float(arrays["wave_height"].max()))
     best = vessel.speed_kn + best_extra_kn(fc.arrays, vessel)
     max_wind = vessel.max_wind_ms if vessel.danger_wind_ms is None else min(vessel.max_wind_ms,
                                                                              vessel.danger_wind_ms)
@@ -140,7 +161,9 @@ def best_extra_kn(arrays: dict, vessel: Vessel) -> float:
 def _vessel_dict(vessel: Vessel, max_wind_ms: float) -> dict:
     return {"speed_kn": vessel.speed_kn, "displacement_t": vessel.displacement_t,
             "speed_loss": vessel.speed_loss, "max_wind_ms": max_wind_ms,
-            "max_wave_m": vessel.max_wave_m}
+            "max_wave_m": vessel.max_wave_m, "beam_m": vessel.beam_m or 0.0,
+            "length_m": vessel.length_m or 0.0,
+            "calm_resistance_kn": vessel.calm_resistance_kn or 0.0}
 
 
 class _ForecastChart:
