@@ -11,6 +11,7 @@
 #include <string>
 #include <type_traits>
 
+#include "results.hpp"
 #include "static_router.hpp"
 
 namespace py = pybind11;
@@ -49,14 +50,6 @@ void check_shape(const Grid& g, const Raster<T>& a, const char* what) {
     throw std::invalid_argument(std::string(what) + " must be a C-contiguous array of the grid's shape");
 }
 
-py::dict stats_dict(const SearchStats& s) {
-  py::dict d;
-  d["settled"] = s.settled;
-  d["heap_peak"] = s.heap_peak;
-  d["state_bytes"] = s.state_bytes;
-  d["min_cost"] = s.min_cost;
-  return d;
-}
 
 template <class T>
 StaticRouter make_router(const Raster<T>& cost, const std::optional<Mask>& land, const Grid& g,
@@ -108,10 +101,7 @@ void register_search(py::module_& m) {
                  return r.grid->route(model, start, target, weight, flag_of(cancel));
                });
              }
-             return py::make_tuple(out.cost,
-                                   py::array_t<std::int64_t>(py::ssize_t(out.path.size()), out.path.data()),
-                                   stats_dict(out.stats),
-                                   py::array_t<double>(py::ssize_t(out.cumulative.size()), out.cumulative.data()));
+             return route_tuple(out);
            },
            py::arg("start"), py::arg("target"), py::arg("heuristic_weight"),
            py::arg("cancel") = nullptr,
@@ -130,8 +120,7 @@ void register_search(py::module_& m) {
              }
              return py::make_tuple(out, stats_dict(stats));
            },
-           py::arg("start"), py::arg("rows"), py::arg("cols"), py::arg("cancel") = nullptr)
-      .def_property_readonly("shared_bytes", [](const StaticRouter& r) { return r.grid->shared_bytes(); });
+           py::arg("start"), py::arg("rows"), py::arg("cols"), py::arg("cancel") = nullptr);
 
   auto bind = [&](auto tag) {
     using T = decltype(tag);

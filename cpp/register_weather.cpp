@@ -9,6 +9,7 @@
 
 #include "seaway/waves.hpp"
 #include "seaway/weather.hpp"
+#include "results.hpp"
 #include "static_router.hpp"
 
 namespace py = pybind11;
@@ -62,14 +63,6 @@ Vessel vessel(const py::dict& d) {
   return v;
 }
 
-// (cost, flat path, stats, cost to each path pixel), as seaway.PreparedChart expects.
-py::tuple as_tuple(const RouteResult& out) {
-  py::dict stats;
-  stats["settled"] = out.stats.settled;
-  stats["state_bytes"] = out.stats.state_bytes;
-  return py::make_tuple(out.cost, py::array_t<std::int64_t>(py::ssize_t(out.path.size()), out.path.data()),
-                        stats, py::array_t<double>(py::ssize_t(out.cumulative.size()), out.cumulative.data()));
-}
 
 py::tuple route_time(StaticRouter& r, std::int64_t start, std::int64_t target, double weight,
                      const py::dict& fields, std::int64_t frames, double first_h, double step_h,
@@ -83,7 +76,7 @@ py::tuple route_time(StaticRouter& r, std::int64_t start, std::int64_t target, d
     const WeatherTime model(g, r.grid->stencil(), f, v, best_speed_kn);
     out = r.grid->route(model, start, target, weight, flag_of(cancel));
   }
-  return as_tuple(out);
+  return route_tuple(out);
 }
 
 // Least fuel + lambda x time; also each step's chosen setting, hours and fuel.
@@ -116,7 +109,7 @@ py::tuple route_fuel(StaticRouter& r, std::int64_t start, std::int64_t target, d
       fuel.push_back(c.fuel_t);
     }
   }
-  return py::make_tuple(as_tuple(out), py::cast(setting), py::cast(hours), py::cast(fuel));
+  return py::make_tuple(route_tuple(out), py::cast(setting), py::cast(hours), py::cast(fuel));
 }
 
 py::tuple route_danger(StaticRouter& r, std::int64_t start, std::int64_t target, double weight,
@@ -134,7 +127,7 @@ py::tuple route_danger(StaticRouter& r, std::int64_t start, std::int64_t target,
     const WaveDangerCost model(g, r.grid->stencil(), h, d, t, ship_length_m, speed_kn);
     out = r.grid->route(model, start, target, weight, flag_of(cancel));
   }
-  return as_tuple(out);
+  return route_tuple(out);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "cost_models.hpp"
 #include "heap.hpp"
 #include "passability.hpp"
 #include "search.hpp"
@@ -44,16 +45,12 @@ class PreparedGrid {
 
   const Grid& grid() const { return g_; }
   const std::vector<Offset>& stencil() const { return stencil_; }
-  const Passability& passability() const { return pass_; }
   const Grid::Lengths& lengths() const { return lengths_; }
   // Index of the stencil offset (di, dj), or -1.
   int offset_index(int di, int dj) const {
     for (std::size_t o = 0; o < stencil_.size(); ++o)
       if (stencil_[o].di == di && stencil_[o].dj == dj) return int(o);
     return -1;
-  }
-  std::size_t shared_bytes() const {
-    return clearance_.capacity() + lengths_.table.capacity() * sizeof(double);
   }
 
   // Least-cost route under `model`; weight 0: Dijkstra, 1: A*, > 1: weighted A*.
