@@ -9,6 +9,7 @@ import pytest
 
 import seaway
 
+from tests.reference import refraction_optimum
 from .conftest import record
 
 
@@ -40,22 +41,10 @@ def test_uniform_great_circle(benchmark):
     _check(benchmark, "smooth uniform great circle", r, gc, 0.1)
 
 
-def _snell(u1, u2, a, b, y0):
-    def slope(x):
-        return (u1 * (x - a[1]) / np.hypot(x - a[1], y0 - a[0])
-                - u2 * (b[1] - x) / np.hypot(b[1] - x, b[0] - y0))
-    lo, hi = a[1], b[1]
-    for _ in range(200):
-        mid = (lo + hi) / 2
-        lo, hi = (mid, hi) if slope(mid) < 0 else (lo, mid)
-    x = (lo + hi) / 2
-    return u1 * np.hypot(x - a[1], y0 - a[0]) + u2 * np.hypot(b[1] - x, b[0] - y0)
-
-
 @pytest.mark.parametrize("edge_cost", ["integral", "max", "mean"])
 def test_two_media_snell(benchmark, edge_cost):
     cost = np.ones((400, 600))
     cost[200:] = 2.5  # interface at y = 199.5
     r = seaway.route(cost, (20, 10), (380, 590), neighbourhood=5, edge_cost=edge_cost)
-    best = _snell(1.0, 2.5, (20, 10), (380, 590), 199.5)
+    best, _ = refraction_optimum(1.0, 2.5, (20, 10), (380, 590), 199.5)
     _check(benchmark, f"smooth two media {edge_cost}", r, best, 0.5)

@@ -193,3 +193,17 @@ def reference_costs(cost, start_rc, *, lat=None, lon=None, dx=1.0, dy=1.0, land=
     g = RefGraph(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, k=k, directions=directions,
                  edge_cost=edge_cost)
     return g.costs(start_rc)
+
+
+def refraction_optimum(u1, u2, a, b, y0):
+    """(cost, x): the exact least cost from a to b ((y, x)) across the straight interface y = y0
+    between media of cost u1 (a's side) and u2, and where it crosses (bisection on Snell's law)."""
+    def slope(x):
+        return (u1 * (x - a[1]) / np.hypot(x - a[1], y0 - a[0])
+                - u2 * (b[1] - x) / np.hypot(b[1] - x, b[0] - y0))
+    lo, hi = a[1], b[1]
+    for _ in range(200):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if slope(mid) < 0 else (lo, mid)
+    x = (lo + hi) / 2
+    return u1 * np.hypot(x - a[1], y0 - a[0]) + u2 * np.hypot(b[1] - x, b[0] - y0), x

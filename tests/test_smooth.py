@@ -7,6 +7,8 @@ import seaway
 from seaway._segments import Segments
 from seaway.smooth import smooth
 
+from reference import refraction_optimum
+
 
 @pytest.mark.parametrize("edge_cost", ["max", "mean", "integral"])
 @pytest.mark.parametrize("k", [3, 5, 7])
@@ -63,25 +65,12 @@ def test_island_is_rounded_at_its_corners_without_touching_it():
     assert seg.leg(np.array([100.0, 10.0]), np.array([100.0, 290.0]))[0] == np.inf
 
 
-def _snell(u1, u2, a, b, y0):
-    """Exact least cost from a to b ((y, x)) across the interface y = y0 (bisection on Snell)."""
-    def slope(x):
-        return (u1 * (x - a[1]) / np.hypot(x - a[1], y0 - a[0])
-                - u2 * (b[1] - x) / np.hypot(b[1] - x, b[0] - y0))
-    lo, hi = a[1], b[1]
-    for _ in range(200):
-        mid = (lo + hi) / 2
-        lo, hi = (mid, hi) if slope(mid) < 0 else (lo, mid)
-    x = (lo + hi) / 2
-    return u1 * np.hypot(x - a[1], y0 - a[0]) + u2 * np.hypot(b[1] - x, b[0] - y0), x
-
-
 def test_two_media_refract_as_snell():
     cost = np.ones((200, 300))
     cost[100:] = 2.0  # interface between rows 99 and 100: y = 99.5
     r = seaway.route(cost, (10, 5), (190, 290), neighbourhood=5, edge_cost="integral")
     s = r.smoothed()
-    best, x = _snell(1.0, 2.0, (10, 5), (190, 290), 99.5)
+    best, x = refraction_optimum(1.0, 2.0, (10, 5), (190, 290), 99.5)
     assert best <= s.cost <= best * 1.0005 and s.cost < r.cost
     assert len(s.points) == 3 and s.points[1] == pytest.approx([99.5, x], abs=0.5)
 

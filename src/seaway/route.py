@@ -4,7 +4,6 @@ navigator uses: waypoints at the course changes, legs with course, distance, tim
 from __future__ import annotations
 
 import dataclasses
-import json
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -224,6 +223,3 @@ class Route:
             coords = coords * 2  # a LineString needs two positions; start == end
         return {"type": "Feature", "geometry": {"type": "LineString", "coordinates": coords},
                 "properties": props}
-
-    def to_geojson_str(self) -> str:
-        return json.dumps(self.to_geojson())
