@@ -237,3 +237,25 @@ def test_ctrl_c_in_the_cli_exits_130_and_writes_nothing(tmp_path):
     assert proc.returncode == 130, err
     assert "seaway route: interrupted" in err
     assert sorted(p.name for p in tmp_path.iterdir()) == []
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+def test_an_interrupt_that_passed_through_PyRun_String_still_exits_130(tmp_path):
+    """The race behind a once-flaky run of the test above, made deterministic: the SIGINT lands
+    while CPython runs code through PyRun_String (as Cython modules do on import), the
+    KeyboardInterrupt is caught by the CLI, yet `python -m` would end the process by SIGINT
+    (status -2). The entry point must exit 130 whatever the timing."""
+    (tmp_path / "interrupted_in_pyrun.py").write_text(
+        "import ctypes\n"
+        "import seaway.__main__ as cli\n"
+        "run = ctypes.pythonapi.PyRun_String\n"
+        "run.argtypes = [ctypes.c_char_p, ctypes.c_int, ctypes.py_object, ctypes.py_object]\n"
+        "run.restype = ctypes.py_object\n"
+        "def route(args):\n"
+        "    run(b'raise KeyboardInterrupt', 257, {}, {})  # 257: Py_file_input\n"
+        "cli._cli.run_route = route\n"
+        "cli.entry(['route', 'kara', '--from', '70.3,58.5', '--to', '77.7,104'])\n")
+    proc = subprocess.run([sys.executable, "-m", "interrupted_in_pyrun"], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 130, proc.stderr
+    assert proc.stderr.strip().endswith("seaway route: interrupted")

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 
@@ -148,5 +149,25 @@ def main(argv=None) -> int:
         return 130
 
 
+def entry(argv=None) -> None:
+    """The program's entry point (``seaway`` and ``python -m seaway``): exit with main's status.
+
+    An interrupted run leaves by ``os._exit(130)`` after flushing its output. ``sys.exit(130)``
+    is not enough: under ``python -m``, CPython 3.11 remembers a KeyboardInterrupt that escaped
+    any ``PyRun_String`` call while it arrived (Cython modules run one while they are imported)
+    even when the program caught it later, and then ends the process by SIGINT (status -2)
+    instead of 130. Exports are written atomically and cleaned up before main returns, so
+    nothing is left for the interpreter's shutdown to do."""
+    status = main(argv)
+    if status == 130:
+        for stream in (sys.stdout, sys.stderr):
+            try:
+                stream.flush()
+            except (OSError, ValueError):
+                pass
+        os._exit(130)
+    sys.exit(status)
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    entry()
