@@ -12,7 +12,6 @@
 #include <type_traits>
 
 #include "results.hpp"
-#include "static_router.hpp"
 
 namespace py = pybind11;
 using namespace seaway;
@@ -36,14 +35,6 @@ LandRule parse_land_rule(const std::string& s) {
   throw std::invalid_argument("land_rule must be 'segment' or 'ends', got '" + s + "'");
 }
 
-EdgeCost parse_edge_cost(const std::string& s) {
-  if (s == "max") return EdgeCost::max;
-  if (s == "mean") return EdgeCost::mean;
-  if (s == "integral") return EdgeCost::integral;
-  if (s == "entered") return EdgeCost::entered;
-  throw std::invalid_argument("edge_cost must be 'max', 'mean' or 'integral', got '" + s + "'");
-}
-
 template <class T>
 void check_shape(const Grid& g, const Raster<T>& a, const char* what) {
   if (a.rows() != g.rows || a.cols() != g.cols || a.outerStride() != g.cols)
@@ -52,20 +43,62 @@ void check_shape(const Grid& g, const Raster<T>& a, const char* what) {
 
 
 template <class T>
-StaticRouter make_router(const Raster<T>& cost, const std::optional<Mask>& land, const Grid& g,
-                         int k, const std::string& directions, const std::string& edge_cost,
-                         const std::string& land_rule) {
+Router make_router(const Raster<T>& cost, const std::optional<Mask>& land, const Grid& g, int k,
+                   const std::string& directions, const std::string& land_rule) {
   check_shape(g, cost, "cost");
   if (land) check_shape(g, *land, "land");
   if (g.size() >= std::int64_t(0xffffffffu)) throw std::invalid_argument("the chart has 2**32 pixels or more");
   const Directions dirs = parse_directions(directions);
   const LandRule rule = parse_land_rule(land_rule);
-  StaticRouter r{nullptr, cost.data(), std::is_same_v<T, float>, parse_edge_cost(edge_cost)};
   const T* u = cost.data();
   const std::uint8_t* l = land ? land->data() : nullptr;
   py::gil_scoped_release release;
-  r.grid = std::make_unique<PreparedGrid>(g, u, l, k, dirs, rule);
-  return r;
+  return Router{std::make_unique<PreparedGrid>(g, u, l, k, dirs, rule)};
+}
+
+// Router.route(model, ...) and Router.field(model, ...) for one model type.
+template <class M>
+void def_queries(py::class_<Router>& router) {
+  router.def("route",
+             [](Router& r, const M& m, std::int64_t start, std::int64_t target, double weight,
+                const CancelToken* cancel) {
+               RouteResult out;
+               StepValues steps;
+               {
+                 py::gil_scoped_release release;
+                 m.visit(*r.grid, [&](const auto& model) {
+                   out = r.grid->route(model, start, target, weight, flag_of(cancel));
+                   steps = m.step_values(model, *r.grid, out);
+                   return 0;
+                 });
+               }
+               return route_tuple(out, steps);
+             },
+             py::arg("model"), py::arg("start"), py::arg("target"), py::arg("heuristic_weight"),
+             py::arg("cancel") = nullptr,
+             "(cost, flat path, stats, cost to each path pixel, per-step values); weight 0: "
+             "Dijkstra, 1: A*, > 1: weighted A*");
+  router.def("field",
+             [](Router& r, const M& m, std::int64_t start, const CancelToken* cancel) {
+               const Grid& g = r.grid->grid();
+               py::array_t<double> out({g.rows, g.cols});
+               double* d = out.mutable_data();
+               SearchStats stats;
+               {
+                 py::gil_scoped_release release;
+                 stats = m.visit(*r.grid, [&](const auto& model) {
+                   return r.grid->field(model, start, d, flag_of(cancel));
+                 });
+               }
+               return py::make_tuple(out, stats_dict(stats));
+             },
+             py::arg("model"), py::arg("start"), py::arg("cancel") = nullptr,
+             "(accumulated cost from start to every pixel, stats)");
+}
+
+template <class... M>
+void def_all_queries(py::class_<Router>& router, ModelList<M...>) {
+  (def_queries<M>(router), ...);
 }
 
 }  // namespace
@@ -90,43 +123,13 @@ void register_search(py::module_& m) {
       .def_property_readonly("is_set", [](const CancelToken& t) { return t.flag.load(); });
   py::register_exception<Cancelled>(m, "SearchCancelled", PyExc_KeyboardInterrupt);
 
-  py::class_<StaticRouter>(m, "Router", "A chart prepared for routing: shared, thread-safe")
-      .def("route",
-           [](StaticRouter& r, std::int64_t start, std::int64_t target, double weight,
-              const CancelToken* cancel) {
-             RouteResult out;
-             {
-               py::gil_scoped_release release;
-               out = r.with_model([&](const auto& model) {
-                 return r.grid->route(model, start, target, weight, flag_of(cancel));
-               });
-             }
-             return route_tuple(out);
-           },
-           py::arg("start"), py::arg("target"), py::arg("heuristic_weight"),
-           py::arg("cancel") = nullptr,
-           "(cost, flat path, stats, cost to each path pixel); weight 0: Dijkstra, 1: A*, > 1: weighted A*")
-      .def("field",
-           [](StaticRouter& r, std::int64_t start, std::int64_t rows, std::int64_t cols,
-              const CancelToken* cancel) {
-             py::array_t<double> out({rows, cols});
-             double* d = out.mutable_data();
-             SearchStats stats;
-             {
-               py::gil_scoped_release release;
-               stats = r.with_model([&](const auto& model) {
-                 return r.grid->field(model, start, d, flag_of(cancel));
-               });
-             }
-             return py::make_tuple(out, stats_dict(stats));
-           },
-           py::arg("start"), py::arg("rows"), py::arg("cols"), py::arg("cancel") = nullptr);
+  py::class_<Router> router(m, "Router", "A chart prepared for routing: shared, thread-safe");
+  def_all_queries(router, Models{});
 
   auto bind = [&](auto tag) {
     using T = decltype(tag);
     m.def("make_router", &make_router<T>, py::arg("cost").noconvert(), py::arg("land").noconvert(),
-          py::arg("grid"), py::arg("neighbourhood"), py::arg("directions"), py::arg("edge_cost"),
-          py::arg("land_rule"),
+          py::arg("grid"), py::arg("neighbourhood"), py::arg("directions"), py::arg("land_rule"),
           "Prepare a chart for routing (builds the land clearance once). The caller keeps the "
           "cost and land arrays alive and unchanged while the router is in use.");
   };

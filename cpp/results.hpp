@@ -4,7 +4,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
-#include "seaway/router.hpp"
+#include "models.hpp"
 
 namespace seaway {
 
@@ -17,12 +17,16 @@ inline pybind11::dict stats_dict(const SearchStats& s) {
   return d;
 }
 
-// (cost, flat path, stats, cost to each path pixel), as seaway.PreparedChart expects.
-inline pybind11::tuple route_tuple(const RouteResult& out) {
+// (cost, flat path, stats, cost to each path pixel, {name: value per step}), as
+// seaway.PreparedChart expects.
+inline pybind11::tuple route_tuple(const RouteResult& out, const StepValues& steps) {
   namespace py = pybind11;
+  py::dict per_step;
+  for (const auto& [name, v] : steps) per_step[name.c_str()] = py::array_t<double>(py::ssize_t(v.size()), v.data());
   return py::make_tuple(out.cost, py::array_t<std::int64_t>(py::ssize_t(out.path.size()), out.path.data()),
                         stats_dict(out.stats),
-                        py::array_t<double>(py::ssize_t(out.cumulative.size()), out.cumulative.data()));
+                        py::array_t<double>(py::ssize_t(out.cumulative.size()), out.cumulative.data()),
+                        per_step);
 }
 
 }  // namespace seaway

@@ -48,7 +48,7 @@ def test_a_cancel_token_stops_the_engine_from_any_thread(big):
     token = _core.CancelToken()
     token.set()
     with pytest.raises(KeyboardInterrupt, match="search cancelled"):
-        chart._router.route(0, big.size - 1, 0.0, token)
+        chart._router.route(chart.model.engine(chart), 0, big.size - 1, 0.0, token)
     assert token.is_set
     fresh = seaway.route(big, (0, 0), (0, 5), neighbourhood=5, method="dijkstra").cost
-    assert chart._router.route(0, 5, 0.0)[0] == fresh
+    assert chart._router.route(chart.model.engine(chart), 0, 5, 0.0)[0] == fresh

@@ -23,6 +23,7 @@ struct RouteResult {
   double cost = inf;               // inf when the target was not reached
   std::vector<std::int64_t> path;  // flat pixel indices, start first
   std::vector<double> cumulative;  // the cost from the start to each pixel of the path
+  std::vector<int> offsets;        // the stencil offset of each step (path.size() - 1)
   SearchStats stats;
 };
 
@@ -46,12 +47,6 @@ class PreparedGrid {
   const Grid& grid() const { return g_; }
   const std::vector<Offset>& stencil() const { return stencil_; }
   const Grid::Lengths& lengths() const { return lengths_; }
-  // Index of the stencil offset (di, dj), or -1.
-  int offset_index(int di, int dj) const {
-    for (std::size_t o = 0; o < stencil_.size(); ++o)
-      if (stencil_[o].di == di && stencil_[o].dj == dj) return int(o);
-    return -1;
-  }
 
   // Least-cost route under `model`; weight 0: Dijkstra, 1: A*, > 1: weighted A*.
   template <class Model>
@@ -64,7 +59,7 @@ class PreparedGrid {
     out.stats = run(model, start, target, weight, *ws, cancel);
     out.cost = ws->cost(target);
     if (out.cost < inf) {
-      out.path = trace_path(g_, stencil_, *ws, start, target);
+      out.path = trace_path(g_, stencil_, *ws, start, target, &out.offsets);
       for (std::int64_t p : out.path) out.cumulative.push_back(ws->cost(p));
     }
     return out;

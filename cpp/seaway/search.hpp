@@ -3,6 +3,7 @@
 // The search is a template over the edge-cost model, so new costs are new functors.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -179,18 +180,21 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
 // The pixels of the route from start to `target`, start first, read back from the predecessors.
 inline std::vector<std::int64_t> trace_path(const Grid& g, const std::vector<Offset>& st,
                                             const Workspace& s, std::int64_t start,
-                                            std::int64_t target) {
+                                            std::int64_t target,
+                                            std::vector<int>* offsets = nullptr) {
   std::vector<std::int64_t> path{target};
   std::int64_t v = target;
   while (v != start) {
     const std::uint8_t o = s.pred[std::size_t(v)];
     if (o == no_pred) throw std::logic_error("broken predecessor chain");
+    if (offsets) offsets->push_back(o);
     std::int64_t r = v / g.cols - st[o].di, c = v % g.cols - st[o].dj;
     if (g.wrap) c = (c + g.cols) % g.cols;
     v = r * g.cols + c;
     path.push_back(v);
     if (path.size() > std::size_t(g.size())) throw std::logic_error("predecessor cycle");
   }
+  if (offsets) std::reverse(offsets->begin(), offsets->end());
   return {path.rbegin(), path.rend()};
 }
 

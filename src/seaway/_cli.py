@@ -10,6 +10,7 @@ import time
 import numpy as np
 
 from ._engine import _nearest_passable, locate, route
+from .models import EDGE_COSTS
 
 EPILOG = ("exit status: 0 done; 1 no route, or a chart or output file that cannot be used; "
           "2 a bad command line. Progress goes to stderr, results to stdout.")
@@ -183,7 +184,7 @@ def add_commands(commands, neighbourhood_type) -> None:
                          "chart's extent at 1/1000 of its longer side)")
     rp.add_argument("--neighbourhood", type=neighbourhood_type, default=5, metavar="K",
                     help="k of the k x k stencil: odd, 3 to 15 (default 5, as in paper 000)")
-    rp.add_argument("--edge-cost", default="max", choices=("max", "mean", "integral"),
+    rp.add_argument("--edge-cost", default="max", choices=tuple(EDGE_COSTS),
                     help="step cost: max (paper 000), mean (paper 003) or integral (exact line "
                          "integral); default max")
     rp.add_argument("--method", default="astar", choices=("astar", "dijkstra"),

@@ -24,26 +24,70 @@ class CancelToken:
 
 class SearchCancelled(KeyboardInterrupt): ...
 
+class MaxCost:
+    def __init__(self, cost: npt.NDArray[np.float32] | npt.NDArray[np.float64]) -> None: ...
+
+class MeanCost:
+    def __init__(self, cost: npt.NDArray[np.float32] | npt.NDArray[np.float64]) -> None: ...
+
+class IntegralCost:
+    def __init__(self, cost: npt.NDArray[np.float32] | npt.NDArray[np.float64]) -> None: ...
+
+class EnteredPixelCost:
+    def __init__(self, cost: npt.NDArray[np.float32] | npt.NDArray[np.float64]) -> None: ...
+
+class SpeedLoss:
+    none: SpeedLoss
+    khokhlov: SpeedLoss
+    stawave1: SpeedLoss
+    __members__: dict[str, SpeedLoss]
+
+class Vessel:
+    speed_kn: float
+    displacement_t: float
+    speed_loss: SpeedLoss
+    beam_m: float
+    length_m: float
+    calm_resistance_kn: float
+    max_wind_ms: float
+    max_wave_m: float
+    def __init__(self) -> None: ...
+
+class Forecast:
+    def __init__(self, first_h: float, step_h: float, *,
+                 current_east: npt.NDArray[np.float32] | None = ...,
+                 current_north: npt.NDArray[np.float32] | None = ...,
+                 wave_height: npt.NDArray[np.float32] | None = ...,
+                 wave_from: npt.NDArray[np.float32] | None = ...,
+                 wind_speed: npt.NDArray[np.float32] | None = ...,
+                 wave_period: npt.NDArray[np.float32] | None = ...) -> None: ...
+
+class TravelTimeModel:
+    def __init__(self, forecast: Forecast, vessel: Vessel, best_speed_kn: float) -> None: ...
+
+class FuelModel:
+    def __init__(self, forecast: Forecast, vessel: Vessel, settings_kn: list[float],
+                 rate_t_per_h: list[float], lambda_t_per_h: float, best_extra_kn: float) -> None: ...
+
+class WaveDangerModel:
+    def __init__(self, forecast: Forecast, ship_length_m: float, speed_kn: float) -> None: ...
+
+Model = (MaxCost | MeanCost | IntegralCost | EnteredPixelCost | TravelTimeModel | FuelModel
+         | WaveDangerModel)
+
 class Router:
-    def route(self, start: int, target: int, heuristic_weight: float,
+    def route(self, model: Model, start: int, target: int, heuristic_weight: float,
               cancel: CancelToken | None = None) -> tuple[
-        float, npt.NDArray[np.int64], dict, npt.NDArray[np.float64]]: ...
-    def field(self, start: int, rows: int, cols: int,
+        float, npt.NDArray[np.int64], dict, npt.NDArray[np.float64],
+        dict[str, npt.NDArray[np.float64]]]: ...
+    def field(self, model: Model, start: int,
               cancel: CancelToken | None = None) -> tuple[npt.NDArray[np.float64], dict]: ...
 
 def make_router(cost: npt.NDArray[np.float32] | npt.NDArray[np.float64],
                 land: npt.NDArray[np.uint8] | None, grid: Grid, neighbourhood: int,
-                directions: str, edge_cost: str, land_rule: str) -> Router: ...
-def route_time(router: Router, start: int, target: int, heuristic_weight: float, fields: dict,
-               frames: int, first_h: float, step_h: float, vessel: dict,
-               best_speed_kn: float, cancel: CancelToken | None = None) -> tuple: ...
-def route_fuel(router: Router, start: int, target: int, heuristic_weight: float, fields: dict,
-               vessel: dict, settings_kn: list[float], rate_t_per_h: list[float],
-               lambda_t_per_h: float, best_extra_kn: float,
-               cancel: CancelToken | None = None) -> tuple: ...
-def route_danger(router: Router, start: int, target: int, heuristic_weight: float, fields: dict,
-                 ship_length_m: float, speed_kn: float,
-                 cancel: CancelToken | None = None) -> tuple: ...
+                directions: str, land_rule: str) -> Router: ...
+def max_pair_costs(a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+def mean_pair_costs(a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
 def stencil(k: int, directions: str) -> list: ...
 def haversine_km(lat1: float, lon1: float, lat2: float, lon2: float) -> float: ...
 def khokhlov_speed_kn(v0_kn: float, h3_m: float, q_rad: float, displacement_t: float) -> float: ...

@@ -1,4 +1,5 @@
-"""route() and cost_field(): validate in Python, search in C++ (seaway._core)."""
+"""PreparedChart.route(): the one query, for every cost model (seaway.models); route() and
+cost_field() on top. Validate in Python, search in C++ (seaway._core)."""
 
 from __future__ import annotations
 
@@ -8,14 +9,14 @@ from . import _core
 from ._chart import Chart, as_chart
 from ._interrupt import interruptible
 from .errors import NoRouteError
+from .models import CostModel, EdgeCost, as_model
 from .route import Route
 
-EDGE_COSTS = ("max", "mean", "integral")
 DIRECTIONS = ("full", "unique")
 METHODS = ("dijkstra", "astar")
 
 
-def _check_options(neighbourhood, directions, edge_cost):
+def _check_options(neighbourhood, directions):
     if isinstance(neighbourhood, bool) or not isinstance(neighbourhood, (int, np.integer)):
         raise TypeError(f"neighbourhood must be an odd integer from 3 to 15, got {neighbourhood!r}")
     if neighbourhood < 3 or neighbourhood > 15 or neighbourhood % 2 == 0:
@@ -25,8 +26,6 @@ def _check_options(neighbourhood, directions, edge_cost):
         )
     if directions not in DIRECTIONS:
         raise ValueError(f"directions must be one of {DIRECTIONS}, got {directions!r}")
-    if edge_cost not in EDGE_COSTS:
-        raise ValueError(f"edge_cost must be one of {EDGE_COSTS}, got {edge_cost!r}")
 
 
 def _heuristic_weight(method, weight) -> float:
@@ -155,71 +154,81 @@ def _check_overflow(chart: Chart, neighbourhood: int) -> None:
 
 
 class PreparedChart:
-    """A chart validated and prepared once for many routes.
+    """A chart validated and prepared once for many routes, under any cost model.
 
     The land clearance and step lengths are built at construction; every query borrows a
     search workspace that is kept for the next one, so repeated queries allocate nothing
     large, and queries from several threads run at once (the GIL is released). The cost and
-    land arrays are read in place: do not modify them while the PreparedChart is in use."""
+    land arrays are read in place: do not modify them while the PreparedChart is in use.
+    `edge_cost` is the default model of route() and cost_field()."""
 
     def __init__(self, cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
                  directions="full", edge_cost="max"):
-        _check_options(neighbourhood, directions, edge_cost)
+        _check_options(neighbourhood, directions)
+        model = EdgeCost(edge_cost)
         chart = as_chart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land)
-        self._setup(chart, neighbourhood, directions, edge_cost, "segment")
+        self._setup(chart, neighbourhood, directions, model, "segment")
         self._dims = getattr(cost, "dims", None)
 
     @classmethod
-    def _from_chart(cls, chart: Chart, neighbourhood, directions, edge_cost, land_rule):
+    def _from_chart(cls, chart: Chart, neighbourhood, directions, model: CostModel, land_rule):
         """A prepared chart with engine options the public API does not offer (seaway.compat)."""
         self = cls.__new__(cls)
-        self._setup(chart, neighbourhood, directions, edge_cost, land_rule)
+        self._setup(chart, neighbourhood, directions, model, land_rule)
         self._dims = None
         return self
 
-    def _setup(self, chart, neighbourhood, directions, edge_cost, land_rule):
+    def _setup(self, chart, neighbourhood, directions, model, land_rule):
         _check_tiny(chart, neighbourhood)
-        self.chart = chart
-        self.neighbourhood, self.directions, self.edge_cost = neighbourhood, directions, edge_cost
+        self.chart, self.model = chart, model
+        self.neighbourhood, self.directions = neighbourhood, directions
         self._router = _core.make_router(chart.values, chart.land, chart.grid, neighbourhood,
-                                         directions, edge_cost, land_rule)
+                                         directions, land_rule)
+
+    @property
+    def edge_cost(self) -> str:
+        """The name of the default model."""
+        return self.model.name
 
     def _flat(self, rc) -> int:
         return rc[0] * self.chart.shape[1] + rc[1]
 
-    def _search(self, s, e, weight):
-        """(cost, flat path, stats, cost to each path pixel) between two located pixels; cost is
-        inf if unreachable."""
-        return interruptible(lambda cancel: self._router.route(self._flat(s), self._flat(e),
+    def _search(self, s, e, weight, model: CostModel):
+        """(cost, flat path, stats, cost to each path pixel, per-step values) between two
+        located pixels; cost is inf if unreachable."""
+        engine = model.engine(self)
+        return interruptible(lambda cancel: self._router.route(engine, self._flat(s), self._flat(e),
                                                                weight, cancel))
 
-    def route(self, start, end, *, method="astar", weight=None) -> Route:
-        """The least-cost route from `start` to `end` (see seaway.route)."""
+    def route(self, start, end, *, model=None, method="astar", weight=None) -> Route:
+        """The least-cost route from `start` to `end` under `model` (a seaway.models.CostModel
+        or an edge-cost name; default the chart's edge_cost). See seaway.route."""
         w = _heuristic_weight(method, weight)
+        model = self.model if model is None else as_model(model)
         chart = self.chart
         s, e = locate(chart, start, "start"), locate(chart, end, "end")
-        total, path, stats, cumulative = self._search(s, e, w)
+        total, path, stats, cumulative, per_step = self._search(s, e, w, model)
         if not np.isfinite(total):
-            _check_overflow(chart, self.neighbourhood)
-            raise NoRouteError(
-                f"no route from start {_describe(chart, s)} to end {_describe(chart, e)}: no "
-                f"chain of passable steps joins them with neighbourhood={self.neighbourhood} "
-                "(separate water bodies, or a passage narrower than the land rule allows); try a "
-                "larger neighbourhood, check the land mask, or choose another end point"
-            )
+            if isinstance(model, EdgeCost):
+                _check_overflow(chart, self.neighbourhood)
+            where = f"from start {_describe(chart, s)} to end {_describe(chart, e)}"
+            raise NoRouteError(model.no_route(where, self))
         pixels = np.column_stack(np.divmod(path, chart.shape[1])).astype(np.int64)
-        return Route(chart=chart, cost=float(total), pixels=pixels, method=method,
-                     neighbourhood=self.neighbourhood, edge_cost=self.edge_cost, stats=dict(stats),
-                     step_costs=np.diff(cumulative))
+        route = Route(chart=chart, cost=float(total), pixels=pixels, method=method,
+                      neighbourhood=self.neighbourhood, model=model, stats=dict(stats),
+                      step_costs=np.diff(cumulative))
+        return model.finish(route, per_step)
 
-    def cost_field(self, start):
-        """The accumulated least cost from `start` to every pixel (inf where unreachable); a
-        DataArray chart gives a DataArray, in the dimension order it came in."""
+    def cost_field(self, start, *, model=None):
+        """The accumulated least cost from `start` to every pixel (inf where unreachable) under
+        `model` (default the chart's edge_cost); a DataArray chart gives a DataArray, in the
+        dimension order it came in."""
+        model = self.model if model is None else as_model(model)
+        engine = model.engine(self)
         chart = self.chart
         s = locate(chart, start, "start")
-        field, _ = interruptible(lambda cancel: self._router.field(self._flat(s), *chart.shape,
-                                                                   cancel))
-        if not np.isfinite(field).all():
+        field, _ = interruptible(lambda cancel: self._router.field(engine, self._flat(s), cancel))
+        if isinstance(model, EdgeCost) and not np.isfinite(field).all():
             _check_overflow(chart, self.neighbourhood)
         if chart.template is None:
             return field
@@ -227,7 +236,8 @@ class PreparedChart:
         if self._dims is not None and out.dims != tuple(self._dims):
             out = out.transpose(*self._dims)  # the chart was turned to (lat, lon): give it back
         out.name = "accumulated_cost"
-        out.attrs = {"long_name": "least accumulated cost from the start", "start": str(tuple(start))}
+        out.attrs = {"long_name": "least accumulated cost from the start", "start": str(tuple(start)),
+                     "units": model.unit(chart.geographic)}
         return out
 
 
@@ -253,7 +263,8 @@ def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, ne
     neighbourhood: k of the k x k stencil (odd, 3..15).
     directions: "full" (every offset of the square) or "unique" (only offsets with
         gcd(|di|, |dj|) = 1).
-    edge_cost: "max" (paper 000), "mean" (paper 003) or "integral" (exact line integral).
+    edge_cost: one of seaway.models.EDGE_COSTS: "max" (paper 000), "mean" (paper 003) or
+        "integral" (exact line integral).
     method: "dijkstra" or "astar" (exact); with weight=w > 1, weighted A* (cost <= w x optimum).
 
     For many routes on one chart, prepare it once with seaway.prepare().

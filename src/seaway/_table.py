@@ -36,7 +36,7 @@ def route_table(route) -> str:
     head = (f"{route.name}: {fmt_point(s['start'], geo)} -> {fmt_point(s['end'], geo)}; "
             f"{len(legs)} legs, {route.course_changes} course changes")
     dist = f"{s['length']:.1f} {units}" + (f" ({s['length_nm']:.1f} nm)" if geo else "")
-    lines = [head, f"distance {dist}; cost {route.cost:.6g} (edge cost {route.edge_cost!r}, "
+    lines = [head, f"distance {dist}; cost {route.cost:.6g} {route.unit} (edge cost {route.edge_cost!r}, "
                    f"{route.neighbourhood}x{route.neighbourhood} stencil)"]
     if "time_h" in s:
         lines[-1] += f"; {fmt_hours(s['time_h'])} at {s['speed_kn']:g} kn"

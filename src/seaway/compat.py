@@ -15,6 +15,7 @@ import numpy as np
 from ._chart import as_chart
 from ._engine import PreparedChart
 from .errors import NoRouteError
+from .models import EdgeCost, EnteredPixel
 
 
 def route_through_array(costs, start, end, fully_connected=True, geometric=True):
@@ -46,9 +47,10 @@ def route_through_array(costs, start, end, fully_connected=True, geometric=True)
                          "which seaway does not handle: start from a pixel with cost >= 0")
     if not geometric and not chart.values[s] < np.inf:  # +inf or NaN start: skimage finds no path
         raise NoRouteError("no minimum-cost path was found to the specified end point")
-    prepared = PreparedChart._from_chart(chart, 3, "full" if fully_connected else "axis",
-                                         "mean" if geometric else "entered", "ends")
-    total, path, _, _ = prepared._search(s, e, 0.0)
+    model = EdgeCost("mean") if geometric else EnteredPixel()
+    prepared = PreparedChart._from_chart(chart, 3, "full" if fully_connected else "axis", model,
+                                         "ends")
+    total, path, *_ = prepared._search(s, e, 0.0, model)
     if not np.isfinite(total):
         raise NoRouteError("no minimum-cost path was found to the specified end point")
     if not geometric:

@@ -17,7 +17,8 @@ Two graphs:
   stats["planar_length_error"] gives the largest relative error of the engine's step lengths on
   that route (~(row offset / R)^2 and the track's curvature: below 1 % for corridors a few hundred
   nm wide).
-Edge cost: edge_cost="max": max(u_a, u_b) x km; "mean": (u_a + u_b)/2 x km (papers 000/003)."""
+Edge cost: edge_cost="max": max(u_a, u_b) x km; "mean": (u_a + u_b)/2 x km (papers 000/003),
+priced by the engine's models (seaway.models.EdgeCost.pair_costs)."""
 
 from __future__ import annotations
 
@@ -28,6 +29,7 @@ import numpy as np
 from . import _geometry as geo
 from ._chart import as_chart
 from .errors import NoRouteError
+from .models import EdgeCost
 from .route import Route
 
 
@@ -79,11 +81,12 @@ class Corridor:
         """The least-cost route along the corridor from the start to the end node."""
         if edge_cost not in ("max", "mean"):
             raise ValueError(f"edge_cost must be 'max' or 'mean' on a corridor, got {edge_cost!r}")
+        model = EdgeCost(edge_cost)
         u = self.sample(env)
         u = np.where(np.isfinite(u) & (u >= 0), u, np.inf)
         rows, layers = u.shape
         if steps == "forward":
-            path = self._forward(u, env, max_shift or rows, edge_cost, checks)
+            path = self._forward(u, env, max_shift or rows, model, checks)
             extra = {}
         elif steps == "stencil":
             from ._engine import route as engine_route
@@ -96,18 +99,16 @@ class Corridor:
         chart = as_chart(u, dx=self.leg_km, dy=self.row_km)
         ll = np.column_stack([self.lat[path[:, 0], path[:, 1]], self.lon[path[:, 0], path[:, 1]]])
         km = geo.distance_km(ll[:-1, 0], ll[:-1, 1], ll[1:, 0], ll[1:, 1])
-        ua, ub = u[path[:-1, 0], path[:-1, 1]], u[path[1:, 0], path[1:, 1]]
-        f = np.maximum(ua, ub) if edge_cost == "max" else (ua + ub) / 2
-        costs = f * km
+        costs = model.pair_costs(u[path[:-1, 0], path[:-1, 1]], u[path[1:, 0], path[1:, 1]], km)
         if steps == "stencil":
             d = np.diff(path, axis=0)
             planar = np.hypot(d[:, 0] * self.row_km, d[:, 1] * self.leg_km)
             extra["planar_length_error"] = float(np.max(np.abs(planar / km - 1))) if len(km) else 0.0
         return Route(chart=chart, cost=float(costs.sum()), pixels=path, method=f"corridor-{steps}",
-                     neighbourhood=neighbourhood, edge_cost=edge_cost, stats=extra, latlon=ll,
+                     neighbourhood=neighbourhood, model=model, stats=extra, latlon=ll,
                      step_costs=costs, speed_kn=speed_kn, name="great-circle corridor route")
 
-    def _forward(self, u, env, max_shift, edge_cost, checks):
+    def _forward(self, u, env, max_shift, model, checks):
         rows, layers = u.shape
         best = np.full(rows, np.inf)
         best[self.m] = 0.0
@@ -118,9 +119,7 @@ class Corridor:
             la0, lo0 = self.lat[a, i], self.lon[a, i]
             la1, lo1 = self.lat[b, i + 1], self.lon[b, i + 1]
             km = geo.distance_km(la0, lo0, la1, lo1)
-            ua, ub = u[a, i], u[b, i + 1]
-            f = np.maximum(ua, ub) if edge_cost == "max" else (ua + ub) / 2
-            w = f * km
+            w = model.pair_costs(u[a, i].ravel(), u[b, i + 1].ravel(), km.ravel()).reshape(km.shape)
             w[np.abs(a - b) > max_shift] = np.inf
             if checks and env is not None:
                 w[self._blocked(env, la0, lo0, la1, lo1, checks)] = np.inf

@@ -15,14 +15,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _core
-from ._engine import _describe, _heuristic_weight, locate
-from ._interrupt import interruptible
-from .errors import NoRouteError
+from ._engine import _heuristic_weight
+from .models import Fuel
 from .route import Route
-from .weather import Vessel, _ForecastChart, _vessel_dict, best_extra_kn
-
-WEATHER_ROLES = ("current_east", "current_north", "wave_height", "wave_from", "wind_speed")
+from .vessel import Vessel
+from .weather import ForecastGrid
 
 
 @dataclass(frozen=True)
@@ -52,27 +49,10 @@ def route_fuel(forecast, start, end, *, vessel: Vessel, fuel: FuelCurve, time_va
                at_hours=0.0, land=None, neighbourhood=5, method="astar", variables=None) -> Route:
     """The route and settings minimising fuel + time_value x hours. Route.cost is that sum;
     stats hold fuel_t, hours and speeds_kn (the setting of each step)."""
-    vessel.check()
-    if not (np.isfinite(time_value_t_per_h) and time_value_t_per_h >= 0):
-        raise ValueError(f"time_value_t_per_h must be >= 0, got {time_value_t_per_h!r}")
-    w = _heuristic_weight(method, None)
-    fc = _ForecastChart(forecast, variables, land, neighbourhood, None)
-    frame = {role: fc.frame(role, at_hours) for role in WEATHER_ROLES if role in fc.arrays}
-    s, e = locate(fc.chart, start, "start"), locate(fc.chart, end, "end")
-    cols = fc.chart.shape[1]
-    max_wind = vessel.max_wind_ms if vessel.danger_wind_ms is None else min(vessel.max_wind_ms,
-                                                                             vessel.danger_wind_ms)
-    (cost, path, stats, cumulative), setting, hours, burnt = interruptible(
-        lambda cancel: _core.route_fuel(
-            fc.prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, frame,
-            _vessel_dict(vessel, max_wind), list(fuel.speeds_kn), list(fuel.rates_t_per_h),
-            float(time_value_t_per_h), best_extra_kn(frame, vessel), cancel))
-    if not np.isfinite(cost):
-        raise NoRouteError(f"no route from {_describe(fc.chart, s)} to {_describe(fc.chart, e)} "
-                           "at any engine setting within the vessel's limits")
-    stats = dict(stats, fuel_t=float(np.sum(burnt)), hours=float(np.sum(hours)),
-                 speeds_kn=np.asarray(fuel.speeds_kn)[setting], time_value_t_per_h=time_value_t_per_h)
-    return fc.route(path, cost, cumulative, stats, method, "fuel")
+    _heuristic_weight(method, None)
+    fc = ForecastGrid(forecast, variables)
+    model = Fuel(fc, vessel, fuel, time_value_t_per_h, at_hours)
+    return fc.prepare(land, neighbourhood).route(start, end, model=model, method=method)
 
 
 def tradeoff(forecast, start, end, *, vessel: Vessel, fuel: FuelCurve, time_values=None,

@@ -11,7 +11,8 @@ import numpy as np
 from . import _geometry as geo
 from ._chart import Chart
 from ._core import haversine_km
-from ._segments import Segments, index_coords
+from ._segments import index_coords
+from .models import CostModel, EdgeCost
 
 
 @dataclass
@@ -38,7 +39,8 @@ class Route:
     pixels: np.ndarray  # (n, 2) row, col; both ends included
     method: str = "astar"
     neighbourhood: int = 5
-    edge_cost: str = "max"
+    #: What the route minimises (seaway.models); its unit is .unit.
+    model: CostModel = field(default_factory=EdgeCost)
     stats: dict = field(default_factory=dict, repr=False)
     #: (n, 2) fractional (row, col) of the vertices when they are not pixel centres (smoothed).
     points: np.ndarray | None = field(default=None, repr=False)
@@ -66,6 +68,16 @@ class Route:
         return self.chart.pixel_coords(self.pixels)
 
     @property
+    def edge_cost(self) -> str:
+        """The name of the route's cost model ("max", "mean", "integral", "time", ...)."""
+        return self.model.name
+
+    @property
+    def unit(self) -> str:
+        """The unit of .cost and of each leg's cost."""
+        return self.model.unit(self.geographic)
+
+    @property
     def geographic(self) -> bool:
         return self.latlon is not None or self.chart.geographic
 
@@ -87,11 +99,12 @@ class Route:
         return float(self.leg_lengths.sum())
 
     # -- readable form -----------------------------------------------------------------------
-    def segments(self) -> Segments:
-        """The chart's leg model (cost and land test of arbitrary legs) for this route."""
+    def segments(self):
+        """The cost and land test of arbitrary legs under the route's model (ValueError for a
+        model that prices only the engine's steps)."""
         seg = self.__dict__.get("_segments")
         if seg is None:
-            seg = self.__dict__["_segments"] = Segments(self.chart, self.edge_cost, self.neighbourhood)
+            seg = self.__dict__["_segments"] = self.model.segments(self.chart, self.neighbourhood)
         return seg
 
     def costs(self) -> np.ndarray:
@@ -184,7 +197,8 @@ class Route:
                "end": tuple(map(float, self.coords[-1])), "cost": self.cost,
                "length": self.length, "length_units": "km" if self.geographic else "grid units",
                "legs": len(legs), "course_changes": self.course_changes,
-               "edge_cost": self.edge_cost, "neighbourhood": self.neighbourhood}
+               "edge_cost": self.edge_cost, "cost_unit": self.unit,
+               "neighbourhood": self.neighbourhood}
         if self.geographic:
             out["length_nm"] = self.length / geo.KM_PER_NM
             if speed:
@@ -217,7 +231,7 @@ class Route:
         props = {"cost": self.cost, "length": self.length,
                  "length_units": "km" if self.geographic else "grid units",
                  "method": self.method, "neighbourhood": self.neighbourhood,
-                 "edge_cost": self.edge_cost}
+                 "edge_cost": self.edge_cost, "cost_unit": self.unit}
         coords = positions.tolist()
         if len(coords) == 1:
             coords = coords * 2  # a LineString needs two positions; start == end

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..models import EdgeCost
 from .codes import stage_name
 
 BANDS = (("ice free <1/10", -np.inf, 1.0), ("very open 1-3/10", 1.0, 4.0),
@@ -59,9 +60,8 @@ def summarize(route, chart, *, time_cost=None, polaris=None) -> dict:
     leg_time = None
     if time_cost is not None:
         tc = _layer(time_cost, px)
-        pair = np.column_stack([tc[:-1], tc[1:]])
-        per = pair.max(axis=1) if route.edge_cost == "max" else pair.mean(axis=1)
-        leg_time = legs * per
+        rule = route.model if isinstance(route.model, EdgeCost) else EdgeCost("mean")
+        leg_time = rule.pair_costs(tc[:-1], tc[1:], legs)
     by_stage, by_band = {}, {}
     for k, length in enumerate(legs):
         for end in (k, k + 1):

@@ -1,0 +1,149 @@
+// Cost models as Python objects. Each bound model is a small struct that keeps its data alive
+// and, for one query, builds its C++ functor (seaway/cost_models.hpp, weather.hpp, waves.hpp)
+// on a prepared chart:
+//   template <class F> auto visit(const PreparedGrid&, F&& f) const;  // calls f(functor)
+//   template <class Fn> StepValues step_values(const Fn&, const PreparedGrid&,
+//                                              const RouteResult&) const;  // per-step extras
+// visit() runs without the GIL: it must not touch Python objects.
+// Adding a model: a functor in cpp/seaway/, a struct here, its name in the Models list below,
+// its class in register_models.cpp, and a Python class in seaway/models.py.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "seaway/cost_models.hpp"
+#include "seaway/router.hpp"
+#include "seaway/waves.hpp"
+#include "seaway/weather.hpp"
+
+namespace seaway {
+
+// Set from Python (e.g. on Ctrl-C) to stop a running search: it throws Cancelled.
+struct CancelToken {
+  std::atomic<bool> flag{false};
+};
+inline const std::atomic<bool>* flag_of(const CancelToken* t) { return t ? &t->flag : nullptr; }
+
+// A chart prepared for routing (geometry, stencil, land clearance): one serves every model.
+struct Router {
+  std::unique_ptr<PreparedGrid> grid;
+};
+
+// Named per-step values a model reports beside the route (e.g. fuel's engine setting).
+using StepValues = std::vector<std::pair<std::string, std::vector<double>>>;
+
+struct NoStepValues {
+  template <class Fn>
+  StepValues step_values(const Fn&, const PreparedGrid&, const RouteResult&) const { return {}; }
+};
+
+inline void check_on_grid(const PreparedGrid& p, std::int64_t rows, std::int64_t cols, const char* what) {
+  const Grid& g = p.grid();
+  if (rows != g.rows || cols != g.cols)
+    throw std::invalid_argument(std::string(what) + " has " + std::to_string(rows) + " x " +
+                                std::to_string(cols) + " pixels but the chart " + std::to_string(g.rows) +
+                                " x " + std::to_string(g.cols) + ": build the model on the chart's grid");
+}
+
+// A static cost per unit length (float32 or float64 raster), priced by Functor (max, mean,
+// integral, entered pixel).
+template <template <class> class Functor>
+struct RasterModel : NoStepValues {
+  pybind11::object keep;  // the raster
+  const void* u = nullptr;
+  bool single = false;
+  std::int64_t rows = 0, cols = 0;
+
+  template <class F>
+  auto visit(const PreparedGrid& g, F&& f) const {
+    check_on_grid(g, rows, cols, "the cost raster");
+    return single ? f(make<float>(g)) : f(make<double>(g));
+  }
+  template <class T>
+  Functor<T> make(const PreparedGrid& g) const {
+    const T* p = static_cast<const T*>(u);
+    if constexpr (std::is_same_v<Functor<T>, IntegralCost<T>>)
+      return {p, &g.stencil()};
+    else
+      return {p};
+  }
+};
+
+// Forecast fields on the chart grid, float32 (frames, rows, cols); kept alive here.
+struct ForecastFields {
+  Forecast f;
+  const float* wave_period = nullptr;
+  std::int64_t rows = 0, cols = 0;
+  std::vector<pybind11::object> keep;
+};
+using ForecastPtr = std::shared_ptr<const ForecastFields>;
+
+// Hours through a forecast (papers 001, 004).
+struct TravelTimeModel : NoStepValues {
+  ForecastPtr forecast;
+  Vessel vessel;
+  double best_speed_kn;
+
+  template <class F>
+  auto visit(const PreparedGrid& g, F&& f) const {
+    check_on_grid(g, forecast->rows, forecast->cols, "the forecast");
+    return f(WeatherTime(g.grid(), g.stencil(), forecast->f, vessel, best_speed_kn));
+  }
+};
+
+// Fuel + lambda x time with an engine setting per step (paper 004), on the forecast's first frame.
+struct FuelModel {
+  ForecastPtr forecast;
+  Vessel vessel;
+  std::vector<double> settings_kn, rate_t_per_h;
+  double lambda_t_per_h, best_extra_kn;
+
+  template <class F>
+  auto visit(const PreparedGrid& g, F&& f) const {
+    check_on_grid(g, forecast->rows, forecast->cols, "the forecast");
+    const WeatherTime physics(g.grid(), g.stencil(), forecast->f, vessel, 1.0);
+    return f(FuelLagrangian(physics, settings_kn, rate_t_per_h, lambda_t_per_h, best_extra_kn));
+  }
+  // The chosen setting (index), hours and fuel (t) of each step.
+  StepValues step_values(const FuelLagrangian& m, const PreparedGrid& g, const RouteResult& out) const {
+    std::vector<double> setting, hours, fuel;
+    for (std::size_t i = 0; i < out.offsets.size(); ++i) {
+      const std::int64_t a = out.path[i], row = a / g.grid().cols;
+      const int o = out.offsets[i];
+      const auto c = m.best(a, out.path[i + 1], o, g.lengths().row(row)[o]);
+      setting.push_back(c.setting);
+      hours.push_back(c.hours);
+      fuel.push_back(c.fuel_t);
+    }
+    return {{"setting", setting}, {"hours", hours}, {"fuel_t", fuel}};
+  }
+};
+
+// Wave danger by heading (paper 003, MSC.1/Circ.1228) on the forecast's first frame.
+struct WaveDangerModel : NoStepValues {
+  ForecastPtr forecast;
+  double ship_length_m, speed_kn;
+
+  template <class F>
+  auto visit(const PreparedGrid& g, F&& f) const {
+    check_on_grid(g, forecast->rows, forecast->cols, "the forecast");
+    const ForecastFields& w = *forecast;
+    return f(WaveDangerCost(g.grid(), g.stencil(), w.f.wave_height, w.f.wave_from, w.wave_period,
+                            ship_length_m, speed_kn));
+  }
+};
+
+// Every model a query takes: Router.route and Router.field get one overload each.
+template <class... M>
+struct ModelList {};
+using Models = ModelList<RasterModel<MaxCost>, RasterModel<MeanCost>, RasterModel<IntegralCost>,
+                         RasterModel<EnteredPixelCost>, TravelTimeModel, FuelModel, WaveDangerModel>;
+
+}  // namespace seaway
