@@ -15,15 +15,19 @@ What real charts contain, and what the reader does with it:
 * partial concentrations missing while stages are given (DMI charts give SA, SB without CA,
   CB): the part of CT no partial accounts for goes to the first such stage, i.e. the thickest
   (SIGRID-3 orders SA thickest): conservative.
-* invalid rings (self-intersections) -> shapely.make_valid, polygonal parts kept.
-A pixel takes the polygon containing its centre (all_touched=False); pixels no polygon
-covers are off_chart with NaN layers."""
+* invalid rings (self-intersections, wrong winding), rings across the antimeridian or around
+  a pole -> made valid in the grid's CRS by seaway.ice.geometry (antimeridian, shapely, pyproj).
+A pixel takes the polygon containing its centre (all_touched=False; where polygons overlap,
+the later one in the file); pixels no polygon covers are off_chart with NaN layers."""
 
 from __future__ import annotations
+
+import warnings
 
 import numpy as np
 
 from .codes import concentration_tenths, parse_code, stage_code
+from .geometry import to_grid_crs, wrap_copies
 from .grids import Grid
 
 _STAGES = ("SA", "SB", "SC")
@@ -37,29 +41,10 @@ def _require():
         import pyproj  # noqa: F401
         import rasterio.features  # noqa: F401
         import shapely  # noqa: F401
+        import antimeridian  # noqa: F401
     except ImportError as exc:
         raise ImportError(f"seaway.ice.sigrid needs the optional packages pyogrio, shapely, "
-                          f"rasterio and pyproj ({exc.name} is missing): {EXTRA}") from exc
-
-
-def _polygonal(geom):
-    """make_valid, keeping only the (multi)polygon parts."""
-    import shapely
-
-    fixed = shapely.make_valid(geom)
-    parts = [p for p in shapely.get_parts(fixed) if p.geom_type in ("Polygon", "MultiPolygon")]
-    return shapely.unary_union(parts) if parts else shapely.Polygon()
-
-
-def _reproject(geoms, src_crs, grid: Grid):
-    import pyproj
-    import shapely
-
-    src, dst = pyproj.CRS.from_user_input(src_crs), pyproj.CRS.from_user_input(grid.crs)
-    if src.equals(dst):
-        return geoms
-    tr = pyproj.Transformer.from_crs(src, dst, always_xy=True)
-    return shapely.transform(geoms, lambda xy: np.column_stack(tr.transform(xy[:, 0], xy[:, 1])))
+                          f"rasterio, pyproj and antimeridian ({exc.name} is missing): {EXTRA}") from exc
 
 
 def _check_contents(path, meta, fields, wkb):
@@ -123,17 +108,19 @@ def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_tou
     from affine import Affine
 
     try:
-        meta, _, wkb, field_data = pyogrio.raw.read(path, layer=layer)
+        with warnings.catch_warnings():  # GDAL's ring winding notes: rings are regrouped anyway
+            warnings.filterwarnings("ignore", message=".*winding order", category=RuntimeWarning)
+            meta, _, wkb, field_data = pyogrio.raw.read(path, layer=layer)
     except Exception as exc:  # pyogrio's DataSourceError, DataLayerError, ...
         raise ValueError(f"{path}: cannot read it as a SIGRID-3 vector file ({exc})") from None
     fields = {str(k).upper(): v for k, v in zip(meta["fields"], field_data)}
     _check_contents(path, meta, fields, wkb)
-    geoms = shapely.from_wkb(wkb)
-    bad = ~shapely.is_valid(geoms)
-    geoms[bad] = [_polygonal(g) for g in geoms[bad]]
-    geoms = _reproject(geoms, meta["crs"] or "EPSG:4326", grid)
+    geoms, repaired = to_grid_crs(shapely.from_wkb(wkb), meta["crs"] or "EPSG:4326", grid.crs)
     n = len(geoms)
-    shapes = [(g, i) for i, g in enumerate(geoms) if g is not None and not g.is_empty]
+    if grid.geographic:
+        shapes = wrap_copies(geoms, grid.x[0], grid.x[-1])
+    else:
+        shapes = [(g, i) for i, g in enumerate(geoms) if not g.is_empty]
     index = rasterio.features.rasterize(shapes, out_shape=grid.shape, fill=-1, dtype="int32",
                                         transform=Affine(*grid.transform()),
                                         all_touched=all_touched)
@@ -161,7 +148,7 @@ def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_tou
     data["polygon"] = (dims, index, {"long_name": "index of the source polygon (-1 none)"})
     ds = xr.Dataset(data, coords=grid.coords())
     ds.attrs.update(source=str(path), crs=grid.crs, source_crs=str(meta["crs"])[:200],
-                    concentration_rule=concentration, polygons=n, repaired_polygons=int(bad.sum()),
+                    concentration_rule=concentration, polygons=n, repaired_polygons=repaired,
                     Conventions="CF-1.8")
     return ds
 
