@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "seaway/danger_time.hpp"
 #include "seaway/waves.hpp"
 #include "seaway/weather.hpp"
 #include "results.hpp"
@@ -130,9 +131,34 @@ py::tuple route_danger(StaticRouter& r, std::int64_t start, std::int64_t target,
   return route_tuple(out);
 }
 
+// Paper 004's fallback: least hours in danger, then least hours; also each step's danger hours.
+py::tuple least_danger(StaticRouter& r, std::int64_t start, std::int64_t target, double weight,
+                             const py::dict& fields, std::int64_t frames, double first_h,
+                             double step_h, const py::dict& ship, double best_speed_kn,
+                             double danger_wind_ms, double danger_wave_m, const CancelToken* cancel) {
+  const Grid& g = r.grid->grid();
+  const Forecast f = forecast(g, fields, frames, first_h, step_h);
+  const Vessel v = vessel(ship);
+  DangerRoute out;
+  {
+    py::gil_scoped_release release;
+    const WeatherTime physics(g, r.grid->stencil(), f, v, best_speed_kn);
+    const DangerZones zones{&g, f, danger_wind_ms, danger_wave_m};
+    out = route_least_danger(*r.grid, physics, zones, v.speed_kn, best_speed_kn, start, target,
+                             weight, flag_of(cancel));
+  }
+  return py::make_tuple(route_tuple(out.route), py::cast(out.danger_h));
+}
+
 }  // namespace
 
 void register_weather(py::module_& m) {
+  m.def("route_least_danger", &least_danger, py::arg("router"), py::arg("start"),
+        py::arg("target"), py::arg("heuristic_weight"), py::arg("fields"), py::arg("frames"),
+        py::arg("first_h"), py::arg("step_h"), py::arg("vessel"), py::arg("best_speed_kn"),
+        py::arg("danger_wind_ms"), py::arg("danger_wave_m"), py::arg("cancel") = nullptr,
+        "Least hours in danger, then least hours (paper 004 when no route avoids the danger "
+        "zones): ((hours, flat path, stats, hours to each path pixel), danger hours per step).");
   m.def("route_time", &route_time, py::arg("router"), py::arg("start"), py::arg("target"),
         py::arg("heuristic_weight"), py::arg("fields"), py::arg("frames"), py::arg("first_h"),
         py::arg("step_h"), py::arg("vessel"), py::arg("best_speed_kn"), py::arg("cancel") = nullptr,

@@ -163,8 +163,12 @@ class PreparedChart:
     land arrays are read in place: do not modify them while the PreparedChart is in use."""
 
     def __init__(self, cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-                 directions="full", edge_cost="max"):
+                 directions="full", edge_cost="max", keep_away=(), zones=()):
         _check_options(neighbourhood, directions, edge_cost)
+        if keep_away or zones:  # rasterised once, with the chart (seaway.constraints)
+            from .constraints import constrain
+            cost = constrain(cost, keep_away=keep_away, zones=zones, lat=lat, lon=lon, dx=dx,
+                             dy=dy, land=land)
         chart = as_chart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land)
         self._setup(chart, neighbourhood, directions, edge_cost, "segment")
         self._dims = getattr(cost, "dims", None)
@@ -193,24 +197,43 @@ class PreparedChart:
         return interruptible(lambda cancel: self._router.route(self._flat(s), self._flat(e),
                                                                weight, cancel))
 
-    def route(self, start, end, *, method="astar", weight=None) -> Route:
-        """The least-cost route from `start` to `end` (see seaway.route)."""
+    def route(self, start, end, *, method="astar", weight=None, via=(), turn_penalty=None) -> Route:
+        """The least-cost route from `start` to `end` (see seaway.route), through the `via`
+        points in order (each leg optimal), with an optional turn penalty."""
+        from ._via import incoming_offset, search_leg, turn_table
+
         w = _heuristic_weight(method, weight)
+        turns = turn_table(turn_penalty)
         chart = self.chart
-        s, e = locate(chart, start, "start"), locate(chart, end, "end")
-        total, path, stats, cumulative = self._search(s, e, w)
-        if not np.isfinite(total):
-            _check_overflow(chart, self.neighbourhood)
-            raise NoRouteError(
-                f"no route from start {_describe(chart, s)} to end {_describe(chart, e)}: no "
-                f"chain of passable steps joins them with neighbourhood={self.neighbourhood} "
-                "(separate water bodies, or a passage narrower than the land rule allows); try a "
-                "larger neighbourhood, check the land mask, or choose another end point"
-            )
-        pixels = np.column_stack(np.divmod(path, chart.shape[1])).astype(np.int64)
-        return Route(chart=chart, cost=float(total), pixels=pixels, method=method,
-                     neighbourhood=self.neighbourhood, edge_cost=self.edge_cost, stats=dict(stats),
-                     step_costs=np.diff(cumulative))
+        points = [start, *_via_list(via), end]
+        names = ["start"] + [f"via point {i + 1}" for i in range(len(points) - 2)] + ["end"]
+        located = [locate(chart, p, n) for p, n in zip(points, names)]
+        pixels, steps, stats = np.zeros((0, 2), np.int64), [], {}
+        for i, (s, e) in enumerate(zip(located[:-1], located[1:])):
+            incoming = -1 if turns is None else incoming_offset(self, pixels)
+            total, path, leg_stats, cumulative = search_leg(self, s, e, w, turns, incoming)
+            if not np.isfinite(total):
+                _check_overflow(chart, self.neighbourhood)
+                raise NoRouteError(
+                    f"no route from {names[i]} {_describe(chart, s)} to {names[i + 1]} "
+                    f"{_describe(chart, e)}: no chain of passable steps joins them with "
+                    f"neighbourhood={self.neighbourhood} (separate water bodies, or a passage "
+                    "narrower than the land rule allows); try a larger neighbourhood, check the "
+                    "land mask, or choose another end point"
+                )
+            leg = np.column_stack(np.divmod(path, chart.shape[1])).astype(np.int64)
+            pixels = leg if i == 0 else np.concatenate([pixels, leg[1:]])
+            steps.append(np.diff(cumulative))
+            for k, v in leg_stats.items():  # settled adds up over legs; peaks take the largest
+                stats[k] = stats.get(k, 0) + v if k == "settled" else max(stats.get(k, v), v)
+        if len(located) > 2:
+            stats["via_pixels"] = [tuple(p) for p in located[1:-1]]
+        if turns is not None:
+            stats["turn_penalty"] = dict(zip(*turns))
+        step_costs = np.concatenate(steps)
+        return Route(chart=chart, cost=float(step_costs.sum()), pixels=pixels, method=method,
+                     neighbourhood=self.neighbourhood, edge_cost=self.edge_cost, stats=stats,
+                     step_costs=step_costs)
 
     def cost_field(self, start):
         """The accumulated least cost from `start` to every pixel (inf where unreachable); a
@@ -231,15 +254,29 @@ class PreparedChart:
         return out
 
 
+def _via_list(via) -> list:
+    if via is None:
+        return []
+    if isinstance(via, np.ndarray):
+        via = via.tolist()
+    if not isinstance(via, (list, tuple)):
+        raise TypeError(f"via must be a list of points ((lat, lon) or (row, col)), got {type(via).__name__}")
+    if len(via) == 2 and all(isinstance(v, (int, float, np.integer, np.floating)) for v in via):
+        raise TypeError(f"via must be a list of points, got one point {tuple(via)}; write via=[{tuple(via)}]")
+    return list(via)
+
+
 def prepare(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-            directions="full", edge_cost="max") -> PreparedChart:
+            directions="full", edge_cost="max", keep_away=(), zones=()) -> PreparedChart:
     """Validate and prepare a chart once for many routes; arguments as in route()."""
     return PreparedChart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land,
-                         neighbourhood=neighbourhood, directions=directions, edge_cost=edge_cost)
+                         neighbourhood=neighbourhood, directions=directions, edge_cost=edge_cost,
+                         keep_away=keep_away, zones=zones)
 
 
 def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-          directions="full", edge_cost="max", method="astar", weight=None) -> Route:
+          directions="full", edge_cost="max", method="astar", weight=None, via=(),
+          turn_penalty=None, keep_away=(), zones=()) -> Route:
     """The least-cost route from `start` to `end` over the raster `cost`.
 
     cost: 2-D numpy array or xarray.DataArray of cost per unit length (>= 0; inf or NaN is
@@ -255,13 +292,19 @@ def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, ne
         gcd(|di|, |dj|) = 1).
     edge_cost: "max" (paper 000), "mean" (paper 003) or "integral" (exact line integral).
     method: "dijkstra" or "astar" (exact); with weight=w > 1, weighted A* (cost <= w x optimum).
+    via: points the route must pass, in order; each leg between consecutive points is optimal.
+    turn_penalty: cost (in the route's units) per degree of course change, or a table
+        {angle_deg: cost} linear between its points; searched exactly over (pixel, last step).
+    keep_away: seaway.constraints.KeepAway buffers from land or severe ice (hard and soft).
+    zones: seaway.constraints.Zone exclusion or penalty areas (polygons).
 
     For many routes on one chart, prepare it once with seaway.prepare().
     """
     _heuristic_weight(method, weight)  # reject a bad method before the chart is prepared
     return prepare(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, neighbourhood=neighbourhood,
-                   directions=directions, edge_cost=edge_cost).route(start, end, method=method,
-                                                                     weight=weight)
+                   directions=directions, edge_cost=edge_cost, keep_away=keep_away,
+                   zones=zones).route(start, end, method=method, weight=weight, via=via,
+                                      turn_penalty=turn_penalty)
 
 
 def cost_field(cost, start, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,

@@ -49,6 +49,7 @@ class Vessel:
     max_wind_ms: float = 25.0
     max_wave_m: float = 5.0
     danger_wind_ms: float | None = None  # paper 004: 11 m/s zones avoided while forecast
+    danger_wave_m: float | None = None  # danger zones by significant wave height, avoided too
     outside_validity: str = "refuse"  # a speed-loss model outside its range: or "warn"
     beam_m: float | None = None  # waterline breadth
     length_m: float | None = None  # waterline length
@@ -111,15 +112,23 @@ def _frames(field, chart_dims, frames) -> np.ndarray:
 
 
 def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=None, land=None,
-               neighbourhood=5, method="astar", variables=None) -> Route:
+               neighbourhood=5, method="astar", variables=None,
+               if_no_safe_route="least_danger") -> Route:
     """The quickest route from `start` to `end` (lat, lon) through a forecast.
 
     forecast: xarray.Dataset on a regular lat/lon grid, optionally with a `time` dimension
         (regular steps, e.g. 6-hourly); fields found by CF standard name (STANDARD_NAMES) or
         `variables`. NaN in every field at a pixel marks land, as do True pixels of `land`.
     departure: a datetime (numpy/pandas/str) within or before the forecast; default its first time.
+    if_no_safe_route: when no route avoids the vessel's danger zones (danger_wind_ms,
+        danger_wave_m), "least_danger" returns the route with the least hours in danger, then
+        the least hours (paper 004), flagged stats["through_danger"] = True with
+        stats["danger_h"] and stats["danger_legs"] (where, when and how long); "raise" raises
+        NoRouteError. The hard limits (max_wind_ms, max_wave_m) are never crossed.
     Returns a Route whose cost is the passage time in hours (stats hold departure and arrival).
     """
+    if if_no_safe_route not in ("least_danger", "raise"):
+        raise ValueError(f"if_no_safe_route must be 'least_danger' or 'raise', got {if_no_safe_route!r}")
     vessel.check()
     w = _heuristic_weight(method, None)
     fc = _ForecastChart(forecast, variables, land, neighbourhood, departure)
@@ -129,12 +138,24 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
     best = vessel.speed_kn + best_extra_kn(fc.arrays, vessel)
     max_wind = vessel.max_wind_ms if vessel.danger_wind_ms is None else min(vessel.max_wind_ms,
                                                                              vessel.danger_wind_ms)
+    ship = _vessel_dict(vessel, max_wind)
+    if vessel.danger_wave_m is not None:
+        ship["max_wave_m"] = min(vessel.max_wave_m, vessel.danger_wave_m)
     s, e = locate(chart, start, "start"), locate(chart, end, "end")
     cols = chart.shape[1]
     hours, path, stats, cumulative = interruptible(lambda cancel: _core.route_time(
         fc.prepared._router, s[0] * cols + s[1], e[0] * cols + e[1], w, fc.arrays, fc.frames,
-        fc.first_h, fc.step_h, _vessel_dict(vessel, max_wind), best, cancel))
-    if not np.isfinite(hours):
+        fc.first_h, fc.step_h, ship, best, cancel))
+    r = None
+    zones = vessel.danger_wind_ms is not None or vessel.danger_wave_m is not None
+    if not np.isfinite(hours) and zones and if_no_safe_route == "least_danger":
+        from ._danger import least_danger_route
+
+        r = least_danger_route(fc, s, e, w, vessel, best, _vessel_dict(vessel, vessel.max_wind_ms),
+                               method)
+        if r is not None:
+            hours, stats = r.cost, r.stats
+    if r is None and not np.isfinite(hours):
         raise NoRouteError(f"no route from {_describe(chart, s)} to {_describe(chart, e)} within "
                            "the vessel's wind and wave limits (and danger zones) of this forecast; "
                            "try a later departure, other limits or another end point")
@@ -143,6 +164,9 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
         dep = forecast["time"].values[0] if departure is None else np.datetime64(departure)
         stats["departure"] = dep
         stats["arrival"] = dep + np.timedelta64(int(round(hours * 3600)), "s")
+    if r is not None:
+        r.stats = stats
+        return r
     return fc.route(path, hours, cumulative, stats, method, "time", speed_kn=vessel.speed_kn)
 
 
