@@ -20,6 +20,7 @@
 
 #include "seaway/cost_models.hpp"
 #include "seaway/router.hpp"
+#include "seaway/timed_zones.hpp"
 #include "seaway/waves.hpp"
 #include "seaway/weather.hpp"
 
@@ -144,6 +145,7 @@ struct WaveDangerModel : NoStepValues {
 template <class... M>
 struct ModelList {};
 using Models = ModelList<RasterModel<MaxCost>, RasterModel<MeanCost>, RasterModel<IntegralCost>,
-                         RasterModel<EnteredPixelCost>, TravelTimeModel, FuelModel, WaveDangerModel>;
+                         RasterModel<EnteredPixelCost>, TravelTimeModel, FuelModel, WaveDangerModel,
+                         Zoned<TravelTimeModel>>;
 
 }  // namespace seaway

@@ -42,11 +42,22 @@ class PreparedGrid {
     const auto [rmin, rmax] = std::minmax_element(lengths_.table.begin(), lengths_.table.end());
     rmin_ = *rmin;
     rmax_ = *rmax;
+    for (const Offset& o : stencil_) half_ = std::max({half_, std::abs(o.di), std::abs(o.dj)});
   }
 
   const Grid& grid() const { return g_; }
   const std::vector<Offset>& stencil() const { return stencil_; }
   const Grid::Lengths& lengths() const { return lengths_; }
+  const std::uint8_t* clearance() const { return clearance_.data(); }
+  const Passability& passability() const { return pass_; }
+  LandRule land_rule() const { return rule_; }
+  int half_width() const { return half_; }  // largest |di| or |dj| of the stencil
+  // Index of the stencil offset (di, dj), or -1.
+  int offset_index(int di, int dj) const {
+    for (std::size_t o = 0; o < stencil_.size(); ++o)
+      if (stencil_[o].di == di && stencil_[o].dj == dj) return int(o);
+    return -1;
+  }
 
   // Least-cost route under `model`; weight 0: Dijkstra, 1: A*, > 1: weighted A*.
   template <class Model>
@@ -147,6 +158,7 @@ class PreparedGrid {
   std::vector<std::uint8_t> clearance_;
   Passability pass_;
   double rmin_ = 0, rmax_ = 0;
+  int half_ = 0;
   std::mutex pool_mutex_;
   std::vector<std::unique_ptr<Workspace>> pool_;
 };

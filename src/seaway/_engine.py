@@ -163,9 +163,13 @@ class PreparedChart:
     `edge_cost` is the default model of route() and cost_field()."""
 
     def __init__(self, cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-                 directions="full", edge_cost="max"):
+                 directions="full", edge_cost="max", keep_away=(), zones=()):
         _check_options(neighbourhood, directions)
         model = EdgeCost(edge_cost)
+        if keep_away or zones:  # rasterised once, with the chart (seaway.constraints)
+            from .constraints import constrain
+            cost = constrain(cost, keep_away=keep_away, zones=zones, lat=lat, lon=lon, dx=dx,
+                             dy=dy, land=land)
         chart = as_chart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land)
         self._setup(chart, neighbourhood, directions, model, "segment")
         self._dims = getattr(cost, "dims", None)
@@ -200,11 +204,16 @@ class PreparedChart:
         return interruptible(lambda cancel: self._router.route(engine, self._flat(s), self._flat(e),
                                                                weight, cancel))
 
-    def route(self, start, end, *, model=None, method="astar", weight=None) -> Route:
+    def route(self, start, end, *, model=None, method="astar", weight=None, via=(),
+              turn_penalty=None) -> Route:
         """The least-cost route from `start` to `end` under `model` (a seaway.models.CostModel
-        or an edge-cost name; default the chart's edge_cost). See seaway.route."""
+        or an edge-cost name; default the chart's edge_cost), through the `via` points in order
+        and with an optional turn penalty (seaway._via). See seaway.route."""
         w = _heuristic_weight(method, weight)
         model = self.model if model is None else as_model(model)
+        if (via is not None and len(via)) or turn_penalty is not None:
+            from ._via import route_constrained
+            return route_constrained(self, start, end, model, method, w, via, turn_penalty)
         chart = self.chart
         s, e = locate(chart, start, "start"), locate(chart, end, "end")
         total, path, stats, cumulative, per_step = self._search(s, e, w, model)
@@ -242,14 +251,16 @@ class PreparedChart:
 
 
 def prepare(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-            directions="full", edge_cost="max") -> PreparedChart:
+            directions="full", edge_cost="max", keep_away=(), zones=()) -> PreparedChart:
     """Validate and prepare a chart once for many routes; arguments as in route()."""
     return PreparedChart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land,
-                         neighbourhood=neighbourhood, directions=directions, edge_cost=edge_cost)
+                         neighbourhood=neighbourhood, directions=directions, edge_cost=edge_cost,
+                         keep_away=keep_away, zones=zones)
 
 
 def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-          directions="full", edge_cost="max", method="astar", weight=None) -> Route:
+          directions="full", edge_cost="max", method="astar", weight=None, via=(),
+          turn_penalty=None, keep_away=(), zones=()) -> Route:
     """The least-cost route from `start` to `end` over the raster `cost`.
 
     cost: 2-D numpy array or xarray.DataArray of cost per unit length (>= 0; inf or NaN is
@@ -266,13 +277,19 @@ def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, ne
     edge_cost: one of seaway.models.EDGE_COSTS: "max" (paper 000), "mean" (paper 003) or
         "integral" (exact line integral).
     method: "dijkstra" or "astar" (exact); with weight=w > 1, weighted A* (cost <= w x optimum).
+    via: points the route must pass, in order; each leg between consecutive points is optimal.
+    turn_penalty: cost (in the route's units) per degree of course change, or a table
+        {angle_deg: cost} linear between its points; searched exactly over (pixel, last step).
+    keep_away: seaway.constraints.KeepAway buffers from land or severe ice (hard and soft).
+    zones: seaway.constraints.Zone exclusion or penalty areas (polygons).
 
     For many routes on one chart, prepare it once with seaway.prepare().
     """
     _heuristic_weight(method, weight)  # reject a bad method before the chart is prepared
     return prepare(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, neighbourhood=neighbourhood,
-                   directions=directions, edge_cost=edge_cost).route(start, end, method=method,
-                                                                     weight=weight)
+                   directions=directions, edge_cost=edge_cost, keep_away=keep_away,
+                   zones=zones).route(start, end, method=method, weight=weight, via=via,
+                                      turn_penalty=turn_penalty)
 
 
 def cost_field(cost, start, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,

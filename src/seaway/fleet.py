@@ -28,7 +28,8 @@ COLUMNS = ["chart", "vessel", "voyage", "start", "end", "cost", "length", "settl
 
 def route_many(charts, voyages, *, vessels=None, lat=None, lon=None, dx=1.0, dy=1.0, land=None,
                neighbourhood=5, directions="full", edge_cost="max", method="astar", weight=None,
-               threads=None, cluster=None, progress=None, keep_routes=False, time_dim="time"):
+               threads=None, cluster=None, progress=None, keep_routes=False, time_dim="time",
+               keep_away=(), zones=(), turn_penalty=None):
     """Route every voyage for every vessel on every chart; a pandas DataFrame, one row per route.
 
     charts: one chart (2-D array or DataArray, or an xarray.Dataset when vessels turn it into a
@@ -36,12 +37,14 @@ def route_many(charts, voyages, *, vessels=None, lat=None, lon=None, dx=1.0, dy=
         a `time_dim` dimension (one chart per time step, ids = the times; may be dask-backed).
         None when every vessel is a cost raster.
     voyages: a sequence of (start, end) pairs (ids 0, 1, ...), a mapping id -> (start, end), or a
-        DataFrame with start and end columns (ids = its index). Points as in seaway.route().
+        DataFrame with start and end columns (ids = its index). Points as in seaway.route(). A
+        voyage (start, end, via) passes the via points in order (a DataFrame: a `via` column).
     vessels: None (the chart is the cost), or a mapping name -> cost raster, or name -> callable
         turning a chart into a cost raster, e.g. ``lambda ds: ice_impact(ds.stage_of_development,
         "Arc7")``. A list gives ids 0, 1, ...
-    lat, lon, dx, dy, land, neighbourhood, directions, edge_cost, method, weight: as in
-        seaway.route(), for every route. When land is None and a chart is a Dataset with a
+    lat, lon, dx, dy, land, neighbourhood, directions, edge_cost, method, weight, keep_away,
+        zones, turn_penalty: as in seaway.route(), for every route (buffers and zones are
+        rasterised once per chart and vessel). When land is None and a chart is a Dataset with a
         `land` variable, that variable is the land mask.
     threads: worker threads (default os.cpu_count(); 1 runs serially in the calling thread;
         not used with a cluster, whose workers have their own threads).
@@ -60,8 +63,10 @@ def route_many(charts, voyages, *, vessels=None, lat=None, lon=None, dx=1.0, dy=
     if threads < 1:
         raise ValueError(f"threads must be >= 1, got {threads}")
     opts = dict(chart=dict(lat=lat, lon=lon, dx=dx, dy=dy, neighbourhood=neighbourhood,
-                           directions=directions, edge_cost=edge_cost),
-                method=method, weight=weight, land=land, keep=bool(keep_routes))
+                           directions=directions, edge_cost=edge_cost, keep_away=keep_away,
+                           zones=zones),
+                method=method, weight=weight, land=land, keep=bool(keep_routes),
+                turn_penalty=turn_penalty)
     chart_items = _chart_items(charts, time_dim)
     vessel_items = [(None, None)] if vessels is None else _items(vessels, "vessels")
     voyage_items = _voyage_items(voyages)
@@ -107,6 +112,8 @@ def _chart_items(charts, time_dim):
 
 def _voyage_items(voyages):
     if hasattr(voyages, "columns") and {"start", "end"} <= set(voyages.columns):
+        if "via" in voyages.columns:
+            return list(zip(voyages.index, zip(voyages["start"], voyages["end"], voyages["via"])))
         return list(zip(voyages.index, zip(voyages["start"], voyages["end"])))
     return _items(voyages, "voyages")
 
@@ -134,7 +141,8 @@ def _target(chart, vessel, opts):
         cost = vessel(chart) if callable(vessel) else vessel
     cost, land = _loaded(cost), _loaded(land)
     prepared = seaway.prepare(cost, land=land, **opts["chart"])  # once; a workspace per thread
-    return lambda s, e: prepared.route(s, e, method=opts["method"], weight=opts["weight"])
+    return lambda s, e, via=(): prepared.route(s, e, method=opts["method"], weight=opts["weight"],
+                                               via=via, turn_penalty=opts.get("turn_penalty"))
 
 
 def _status(exc):
@@ -147,9 +155,14 @@ def _status(exc):
 
 def _route_one(get_target, voyage, keep):
     """One row: the route for `voyage` or the reason it failed (never raises)."""
-    malformed = False
+    malformed, via = False, ()
     try:
-        start, end = voyage
+        start, end, *rest = voyage
+        if len(rest) > 1:
+            raise ValueError
+        via = rest[0] if rest else ()
+        if via is None or (isinstance(via, float) and math.isnan(via)):  # a DataFrame's empty cell
+            via = ()
     except (TypeError, ValueError):
         start, end, malformed = voyage, None, True
     row = dict(start=start, end=end, cost=math.nan, length=math.nan, settled=None, time_s=0.0)
@@ -157,10 +170,10 @@ def _route_one(get_target, voyage, keep):
     t0 = time.perf_counter()
     try:
         if malformed:
-            raise TypeError(f"a voyage must be a (start, end) pair, got {voyage!r}")
+            raise TypeError(f"a voyage must be a (start, end) pair or a (start, end, via) triple, got {voyage!r}")
         target = get_target()
         t0 = time.perf_counter()
-        route = target(start, end)
+        route = target(start, end, via) if len(via) else target(start, end)
         row.update(cost=float(route.cost), length=float(route.length),
                    settled=route.stats.get("settled"), status="ok", error="")
     except Exception as exc:  # noqa: BLE001 - a failing route is reported in its row

@@ -143,14 +143,23 @@ class TravelTime(_OnForecast):
 
     name = "time"
 
-    def __init__(self, forecast, vessel: Vessel | None = None):
+    def __init__(self, forecast, vessel: Vessel | None = None, zones=()):
         vessel = Vessel() if vessel is None else vessel
         vessel.check()
         if "wave_height" in forecast.arrays:
             vessel.check_waves(float(forecast.arrays["wave_height"].max()))
         self.forecast, self.vessel = forecast, vessel
-        best = vessel.speed_kn + forecast.best_extra_kn(vessel)
-        self._engine = _core.TravelTimeModel(forecast.engine(), vessel.to_core(), best)
+        self.best_speed_kn = vessel.speed_kn + forecast.best_extra_kn(vessel)
+        self._engine = _core.TravelTimeModel(forecast.engine(), vessel.to_core(), self.best_speed_kn)
+        self.zones = (zones,) if hasattr(zones, "geometry") else tuple(zones)
+        if self.zones:  # exclusions, open or closed in time windows (seaway.constraints)
+            from .constraints import timed_zone_engine
+            self._engine = timed_zone_engine(forecast, self._engine, self.zones)
+
+    def later(self, hours: float) -> TravelTime:
+        """The model for a ship leaving `hours` after this model's departure (the next leg of a
+        route through via points)."""
+        return TravelTime(self.forecast.later(hours), self.vessel, self.zones)
 
     def unit(self, geographic):
         return "h"
@@ -167,6 +176,8 @@ class TravelTime(_OnForecast):
             route.stats["departure"] = dep
             route.stats["arrival"] = dep + np.timedelta64(int(round(hours * 3600)), "s")
         route.speed_kn = self.vessel.speed_kn
+        if "wait_h" in per_step:  # hours waited for zones to open, per step
+            route.stats["wait_h"] = per_step["wait_h"]
         return route
 
     def no_route(self, where, prepared):

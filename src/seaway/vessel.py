@@ -25,6 +25,7 @@ class Vessel:
     max_wind_ms: float = 25.0
     max_wave_m: float = 5.0
     danger_wind_ms: float | None = None  # paper 004: 11 m/s zones avoided while forecast
+    danger_wave_m: float | None = None  # danger zones by significant wave height, avoided too
     outside_validity: str = "refuse"  # a speed-loss model outside its range: or "warn"
     beam_m: float | None = None  # waterline breadth
     length_m: float | None = None  # waterline length
@@ -60,15 +61,19 @@ class Vessel:
                               "(speed_loss='stawave1' covers other ships)")
 
 
-    def to_core(self, max_wind_ms: float | None = None) -> _core.Vessel:
-        """The engine's typed vessel (with the wind limit lowered to danger_wind_ms if set)."""
+    def to_core(self, max_wind_ms: float | None = None, danger: bool = True) -> _core.Vessel:
+        """The engine's typed vessel, with the wind and wave limits lowered to danger_wind_ms
+        and danger_wave_m if set (danger=False: the hard limits only)."""
+        max_wave_m = self.max_wave_m
+        if danger and self.danger_wave_m is not None:
+            max_wave_m = min(max_wave_m, self.danger_wave_m)
         if max_wind_ms is None:
-            max_wind_ms = (self.max_wind_ms if self.danger_wind_ms is None
+            max_wind_ms = (self.max_wind_ms if self.danger_wind_ms is None or not danger
                            else min(self.max_wind_ms, self.danger_wind_ms))
         v = _core.Vessel()
         v.speed_kn, v.displacement_t = self.speed_kn, self.displacement_t
         v.speed_loss = getattr(_core.SpeedLoss, self.speed_loss)
-        v.max_wind_ms, v.max_wave_m = max_wind_ms, self.max_wave_m
+        v.max_wind_ms, v.max_wave_m = max_wind_ms, max_wave_m
         v.beam_m, v.length_m = self.beam_m or 0.0, self.length_m or 0.0
         v.calm_resistance_kn = self.calm_resistance_kn or 0.0
         return v

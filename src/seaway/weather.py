@@ -27,6 +27,7 @@ import numpy as np
 from . import _core
 from ._chart import as_chart
 from ._engine import PreparedChart, _check_options, _heuristic_weight
+from .errors import NoRouteError
 from .forecast import STANDARD_NAMES, find_fields
 from .models import EdgeCost, TravelTime, WaveDanger
 from .route import Route
@@ -92,11 +93,15 @@ class ForecastGrid:
             self.departure = (forecast["time"].values[0] if departure is None
                               else np.datetime64(departure))
 
-    def prepare(self, land=None, neighbourhood=5) -> PreparedChart:
+    def prepare(self, land=None, neighbourhood=5, keep_away=()) -> PreparedChart:
         """The forecast's lat/lon grid as a chart: land where every field is NaN or `land` is
-        True; its static cost is 1 per km (distance), the weather models bring their own."""
+        True, or within a hard keep-away buffer (seaway.constraints.KeepAway); its static cost
+        is 1 per km (distance), the weather models bring their own."""
         _check_options(neighbourhood, "full")
         km = self.template.copy(data=np.ones(self.shape, np.float32))
+        if keep_away:
+            from .constraints import hard_only
+            land = hard_only(km, keep_away, self.dry if land is None else (np.asarray(land, bool) | self.dry))
         chart = as_chart(km, land=self.dry if land is None else (np.asarray(land, bool) | self.dry))
         if not chart.geographic:
             raise ValueError("weather routing needs a forecast on a lat/lon grid (coordinates lat/lon)")
@@ -115,6 +120,16 @@ class ForecastGrid:
                       if r in self.arrays}
         return out
 
+    def later(self, hours: float) -> ForecastGrid:
+        """The same forecast for a ship leaving `hours` after this departure (frame times and
+        departure shifted; `shift_h` adds up, for zone windows given in hours)."""
+        out = object.__new__(ForecastGrid)
+        out.__dict__.update(self.__dict__, first_h=self.first_h - hours,
+                            shift_h=getattr(self, "shift_h", 0.0) + hours)
+        if self.departure is not None:
+            out.departure = self.departure + np.timedelta64(int(round(hours * 3.6e12)), "ns")
+        return out
+
     def best_extra_kn(self, vessel: Vessel) -> float:
         """The most the weather can add to a calm-water speed: following seas under Khokhlov's
         formula, plus the strongest current (for A*'s admissible bound)."""
@@ -128,21 +143,44 @@ class ForecastGrid:
 
 
 def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=None, land=None,
-               neighbourhood=5, method="astar", variables=None) -> Route:
+               neighbourhood=5, method="astar", variables=None, zones=(), keep_away=(), via=(),
+               if_no_safe_route="least_danger") -> Route:
     """The quickest route from `start` to `end` (lat, lon) through a forecast.
 
     forecast: xarray.Dataset on a regular lat/lon grid, optionally with a `time` dimension
         (regular steps, e.g. 6-hourly); fields found by CF standard name (STANDARD_NAMES) or
         `variables`. NaN in every field at a pixel marks land, as do True pixels of `land`.
     departure: a datetime (numpy/pandas/str) within or before the forecast; default its first time.
+    zones: seaway.constraints.Zone exclusions, each optionally closed only in a time window
+        (`active=(t0, t1)`): the ship waits or detours only while a zone is closed.
+    keep_away: hard seaway.constraints.KeepAway buffers (from land or a boolean ice mask).
+    via: points to pass in order; each leg departs when the previous one arrives.
+    if_no_safe_route: when no route avoids the vessel's danger zones (danger_wind_ms,
+        danger_wave_m), "least_danger" returns the route with the least hours in danger, then
+        the least hours (paper 004), flagged stats["through_danger"] = True with
+        stats["danger_h"] and stats["danger_legs"] (where, when and how long); "raise" raises
+        NoRouteError. The hard limits (max_wind_ms, max_wave_m) are never crossed.
     Returns a Route whose cost is the passage time in hours (stats hold departure and arrival).
     The same as ForecastGrid(forecast).prepare().route(start, end, model=TravelTime(...)).
     """
+    if if_no_safe_route not in ("least_danger", "raise"):
+        raise ValueError(f"if_no_safe_route must be 'least_danger' or 'raise', got {if_no_safe_route!r}")
     vessel.check()
     _heuristic_weight(method, None)
     fc = ForecastGrid(forecast, variables, departure)
-    model = TravelTime(fc, vessel)
-    return fc.prepare(land, neighbourhood).route(start, end, model=model, method=method)
+    model = TravelTime(fc, vessel, zones=zones)
+    prepared = fc.prepare(land, neighbourhood, keep_away)
+    try:
+        return prepared.route(start, end, model=model, method=method, via=via)
+    except NoRouteError:
+        danger = vessel.danger_wind_ms is not None or vessel.danger_wave_m is not None
+        if not danger or if_no_safe_route != "least_danger" or (via is not None and len(via)):
+            raise
+        from ._danger import least_danger_route
+        r = least_danger_route(prepared, model, start, end, method)
+        if r is None:
+            raise
+        return r
 
 
 def route_safest(forecast, start, end, *, ship_length_m, speed_kn, at_hours=0.0, land=None,

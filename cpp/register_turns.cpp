@@ -1,0 +1,57 @@
+// Bindings for the turn-penalty search (seaway/turns.hpp): route_turns(router, model, ...) for
+// the static edge-cost models. The time, fuel and wave-danger models are not offered: their
+// cost is not in the penalty's units and the time model's label is a clock (seaway._via says so).
+// Python (seaway/_via.py) validates the penalty table first; errors here are last-line guards.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+#include "results.hpp"
+#include "seaway/turns.hpp"
+
+namespace py = pybind11;
+using namespace seaway;
+
+namespace {
+
+template <class M>
+void def_route_turns(py::module_& m) {
+  m.def(
+      "route_turns",
+      [](Router& r, const M& model, std::int64_t start, std::int64_t target, double weight,
+         std::vector<double> angle_deg, std::vector<double> cost, int incoming,
+         const CancelToken* cancel) {
+        if (angle_deg.size() < 2 || angle_deg.size() != cost.size())
+          throw std::invalid_argument("the turn penalty needs matching angle and cost lists of 2+ points");
+        const TurnPenalty turn{std::move(angle_deg), std::move(cost)};
+        RouteResult out;
+        {
+          py::gil_scoped_release release;
+          model.visit(*r.grid, [&](const auto& f) {
+            out = route_with_turns(*r.grid, f, turn, start, target, incoming, weight, flag_of(cancel));
+            return 0;
+          });
+        }
+        return route_tuple(out, {});
+      },
+      py::arg("router"), py::arg("model"), py::arg("start"), py::arg("target"),
+      py::arg("heuristic_weight"), py::arg("angle_deg"), py::arg("cost"), py::arg("incoming") = -1,
+      py::arg("cancel") = nullptr,
+      "Least-cost route with a piecewise-linear penalty per course change (degrees -> cost), as "
+      "Router.route returns it. incoming: the offset index of the step that reached the start, "
+      "or -1.");
+}
+
+}  // namespace
+
+void register_turns(py::module_& m) {
+  def_route_turns<RasterModel<MaxCost>>(m);
+  def_route_turns<RasterModel<MeanCost>>(m);
+  def_route_turns<RasterModel<IntegralCost>>(m);
+  m.def(
+      "offset_index", [](Router& r, int di, int dj) { return r.grid->offset_index(di, dj); },
+      py::arg("router"), py::arg("di"), py::arg("dj"), "Index of the stencil offset (di, dj), or -1.");
+}

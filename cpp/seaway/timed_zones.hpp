@@ -1,0 +1,110 @@
+// Zones closed during a time window, for time routes (issue 11): a step that touches a closed
+// zone (either end inside) must end by the time the zone closes or start once it has opened
+// again; otherwise the ship waits at the step's start until the zone opens. A step's cost is
+// then wait + sailing time at the new departure. Waiting keeps the search exact: if the
+// weather is FIFO, leaving later never arrives earlier, so the earliest allowed departure is
+// the best one, and arrival stays monotone in departure (the premise of the label-setting
+// time search). A zone without a window is closed from -inf to +inf (an exclusion).
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "cost_models.hpp"
+#include "grid.hpp"
+
+namespace seaway {
+
+// Bit z of mask[p] is set when pixel p lies in zone z (at most 8 zones), closed on
+// [closes_h[z], opens_h[z]) in hours after departure.
+struct TimeWindows {
+  std::vector<std::uint8_t> mask;
+  std::vector<double> closes_h, opens_h;
+};
+
+template <class Inner>
+class ZonedTime {
+ public:
+  ZonedTime(const Inner& inner, const TimeWindows& z) : inner_(inner), z_(z) {}
+
+  auto bounds(const Passability& p) const { return inner_.bounds(p); }
+
+  template <class Cell>
+  double operator()(std::int64_t v, std::int64_t w, int o, double r, double t_h, Cell&& cell) const {
+    double h = inner_(v, w, o, r, t_h, cell);
+    const std::uint8_t bits = std::uint8_t(z_.mask[std::size_t(v)] | z_.mask[std::size_t(w)]);
+    if (!bits || !(h < inf)) return h;
+    const double dep = departure(v, w, o, r, t_h, h, bits, cell);
+    if (dep == t_h) return h;
+    return dep < inf ? dep - t_h + inner_(v, w, o, r, dep, cell) : inf;
+  }
+
+  // Hours after departure at which the step is started (>= t_h: the ship waits until then).
+  template <class Cell>
+  double departure(std::int64_t v, std::int64_t w, int o, double r, double t_h, double h,
+                   std::uint8_t bits, Cell&& cell) const {
+    double dep = t_h;
+    // Each zone can push the departure once (to its opening), so 8 rounds settle it.
+    for (int round = 0; round < 9; ++round) {
+      bool moved = false;
+      for (std::size_t z = 0; z < z_.closes_h.size(); ++z) {
+        if (!((bits >> z) & 1u)) continue;
+        if (dep < z_.opens_h[z] && dep + h > z_.closes_h[z]) {
+          dep = z_.opens_h[z];
+          if (!(dep < inf)) return inf;
+          h = inner_(v, w, o, r, dep, cell);
+          if (!(h < inf)) return inf;
+          moved = true;
+        }
+      }
+      if (!moved) break;
+    }
+    return dep;
+  }
+
+  const Inner& inner() const { return inner_; }
+  const TimeWindows& windows() const { return z_; }
+
+ private:
+  const Inner& inner_;
+  const TimeWindows& z_;
+};
+
+// Base (a time model struct of models.hpp) with zones closed in time windows on its grid.
+template <class Base>
+struct Zoned {
+  Base base;
+  TimeWindows zones;
+
+  template <class G, class F>
+  auto visit(const G& g, F&& f) const {
+    if (std::int64_t(zones.mask.size()) != g.grid().size())
+      throw std::invalid_argument("the zone mask must have one value per pixel of the chart");
+    return base.visit(g, [&](const auto& inner) {
+      return f(ZonedTime<std::decay_t<decltype(inner)>>(inner, zones));
+    });
+  }
+
+  // The hours each step waits for a zone to open ("wait_h"), beside the base model's values.
+  template <class Fn, class G, class R>
+  auto step_values(const Fn& m, const G& g, const R& out) const {
+    auto values = base.step_values(m.inner(), g, out);
+    std::vector<double> wait;
+    for (std::size_t i = 0; i < out.offsets.size(); ++i) {
+      const std::int64_t v = out.path[i], w = out.path[i + 1];
+      const int o = out.offsets[i];
+      const double r = g.lengths().row(v / g.grid().cols)[o], t = out.cumulative[i];
+      auto no_cell = [](std::size_t) { return std::int64_t(0); };
+      const double h = m.inner()(v, w, o, r, t, no_cell);
+      const std::uint8_t bits = std::uint8_t(zones.mask[std::size_t(v)] | zones.mask[std::size_t(w)]);
+      wait.push_back(bits && h < inf ? m.departure(v, w, o, r, t, h, bits, no_cell) - t : 0.0);
+    }
+    values.emplace_back("wait_h", std::move(wait));
+    return values;
+  }
+};
+
+}  // namespace seaway

@@ -1,0 +1,237 @@
+// Turn penalty: a cost per course change, by an expanded-state search over (pixel, incoming
+// step). A state's label is the least cost of reaching the pixel by its last step along offset
+// o; leaving it along offset o2 costs the model's step cost plus penalty(angle(o, o2)). The plain
+// search (search.hpp) is untouched: this one runs only when a penalty is asked for.
+//
+// Turn angle at pixel v: the angle between the two steps' directions in the local metric at
+// v's row, (di*dy, dj*dx) on planar grids and (di*dlat, dj*dlon*cos(lat_v)) on lat/lon grids,
+// 0..180 degrees. The first step from the start pays no penalty unless the start is given an
+// incoming step (a via-point continues the previous leg).
+//
+// Memory: 8 bytes of cost + 1 byte of predecessor per state, i.e. 9 x (number of stencil
+// offsets) bytes per pixel of address space (k=3: 72, k=5: 216, k=7: 432). It is allocated
+// zero-filled (calloc: the kernel maps pages only when they are first written, so a search
+// that reaches a small part of the chart uses physical memory only there).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <vector>
+
+#include "router.hpp"
+
+namespace seaway {
+
+// Piecewise-linear penalty of the course change: cost[i] at angle_deg[i] (ascending, from 0 to
+// 180), linear between, in the route's cost units. Per degree p: {0, 180} -> {0, 180 p}.
+struct TurnPenalty {
+  std::vector<double> angle_deg, cost;
+
+  double operator()(double a) const {
+    if (a <= angle_deg.front()) return cost.front();
+    for (std::size_t i = 1; i < angle_deg.size(); ++i)
+      if (a <= angle_deg[i]) {
+        const double slope = (cost[i] - cost[i - 1]) / (angle_deg[i] - angle_deg[i - 1]);
+        return slope * (a - angle_deg[i - 1]) + cost[i - 1];
+      }
+    return cost.back();
+  }
+};
+
+// Unit direction of every offset at every row (one row on planar grids), for turn angles.
+class TurnAngles {
+ public:
+  TurnAngles(const Grid& g, const std::vector<Offset>& st) : n_(std::int64_t(st.size())) {
+    rows_ = g.geographic ? g.rows : 1;
+    dir_.resize(std::size_t(rows_ * n_ * 2));
+    for (std::int64_t r = 0; r < rows_; ++r)
+      for (std::int64_t o = 0; o < n_; ++o) {
+        const Offset& s = st[std::size_t(o)];
+        const double y = g.geographic ? s.di * g.dlat : s.di * g.dy;
+        const double x = g.geographic ? s.dj * g.dlon * std::cos(g.lat(r) * deg) : s.dj * g.dx;
+        const double len = std::hypot(y, x);
+        dir_[std::size_t((r * n_ + o) * 2)] = y / len;
+        dir_[std::size_t((r * n_ + o) * 2 + 1)] = x / len;
+      }
+  }
+  // Degrees between offsets o1 and o2 at row r.
+  double operator()(std::int64_t r, std::int64_t o1, std::int64_t o2) const {
+    if (o1 == o2) return 0;
+    const double* a = &dir_[std::size_t(((rows_ == 1 ? 0 : r) * n_ + o1) * 2)];
+    const double* b = &dir_[std::size_t(((rows_ == 1 ? 0 : r) * n_ + o2) * 2)];
+    return std::acos(std::clamp(a[0] * b[0] + a[1] * b[1], -1.0, 1.0)) / deg;
+  }
+  std::size_t bytes() const { return dir_.capacity() * sizeof(double); }
+
+ private:
+  std::int64_t n_, rows_;
+  std::vector<double> dir_;
+};
+
+namespace detail {
+struct FreeDeleter {
+  void operator()(void* p) const { std::free(p); }
+};
+template <class T>
+std::unique_ptr<T[], FreeDeleter> zeroed(std::size_t n) {
+  void* p = std::calloc(n, sizeof(T));
+  if (!p) throw std::bad_alloc();
+  return std::unique_ptr<T[], FreeDeleter>(static_cast<T*>(p));
+}
+// Costs are stored as bits(d) ^ bits(inf), so zero-filled memory reads as inf.
+inline std::uint64_t bits_of(double d) {
+  std::uint64_t b;
+  std::memcpy(&b, &d, 8);
+  return b;
+}
+inline double from_bits(std::uint64_t b) {
+  double d;
+  std::memcpy(&d, &b, 8);
+  return d;
+}
+}  // namespace detail
+
+// Calls f(w, o, cell) for every step the chart allows out of pixel v: w the pixel reached along
+// stencil offset o, cell(m) the flat index of the m-th pixel of the offset's length shares.
+// The same rules as search.hpp: inside the grid (columns wrap on global charts), both ends
+// passable and, under LandRule::segment, no touched pixel impassable.
+template <class F>
+void for_each_step(const PreparedGrid& pg, std::int64_t v, F&& f) {
+  const Grid& g = pg.grid();
+  const std::vector<Offset>& st = pg.stencil();
+  const std::uint8_t* clear = pg.clearance();
+  const std::int64_t R = g.rows, C = g.cols, K = std::int64_t(st.size());
+  const std::int64_t row = v / C, col = v - row * C;
+  const int h = pg.half_width();
+  if (row >= h && row < R - h && col >= h && col < C - h && clear[v] > h) {
+    for (std::int64_t o = 0; o < K; ++o) {
+      const Offset& off = st[std::size_t(o)];
+      f(v + off.di * C + off.dj, o, [&](std::size_t m) { return v + off.shares[m].di * C + off.shares[m].dj; });
+    }
+    return;
+  }
+  auto wrap_col = [&](std::int64_t c) { return c < 0 ? c + C : (c >= C ? c - C : c); };
+  for (std::int64_t o = 0; o < K; ++o) {
+    const Offset& off = st[std::size_t(o)];
+    const std::int64_t r2 = row + off.di;
+    std::int64_t c2 = col + off.dj;
+    if (r2 < 0 || r2 >= R) continue;
+    if (g.wrap) c2 = wrap_col(c2);
+    else if (c2 < 0 || c2 >= C) continue;
+    const std::int64_t w = r2 * C + c2;
+    if (clear[w] == 0) continue;
+    auto at = [&](int di, int dj) { return (row + di) * C + (g.wrap ? wrap_col(col + dj) : col + dj); };
+    if (pg.land_rule() == LandRule::segment) {
+      bool blocked = false;
+      for (const CellShare& t : off.touched)
+        if (clear[at(t.di, t.dj)] == 0) { blocked = true; break; }
+      if (blocked) continue;
+    }
+    f(w, o, [&](std::size_t m) { return at(off.shares[m].di, off.shares[m].dj); });
+  }
+}
+
+// Least-cost route from `start` to `target` with turn penalties under `model`. `incoming`: the
+// offset of the step that reached the start (charged at the first turn), or -1 for none.
+// weight 0: Dijkstra, 1: A*, > 1: weighted A* (a 4-ary heap in every case).
+template <class Model>
+RouteResult route_with_turns(const PreparedGrid& pg, const Model& model, const TurnPenalty& turn,
+                             std::int64_t start, std::int64_t target, int incoming, double weight,
+                             const std::atomic<bool>* cancel = nullptr) {
+  const Grid& g = pg.grid();
+  const std::vector<Offset>& st = pg.stencil();
+  const Grid::Lengths& lengths = pg.lengths();
+  const std::int64_t C = g.cols, K = std::int64_t(st.size()), n = g.size();
+  if (start < 0 || start >= n || target < 0 || target >= n)
+    throw std::out_of_range("pixel index outside the grid");
+  if (incoming >= K) throw std::invalid_argument("incoming step is not a stencil offset");
+  if (double(n) * double(K) >= 4294967295.0)
+    throw std::invalid_argument("pixels x stencil offsets must stay below 2**32 for the turn penalty");
+  const StepBounds b = model.bounds(pg.passability());
+  const bool use_bound = weight > 0 && b.per_length;
+  // Exact A* with a heap: the bound is consistent; shave it by 1e-9 against rounding.
+  const DistanceBound bound(g, target, use_bound ? b.min_rate * (weight == 1 ? 1 - 1e-9 : weight) : 0);
+  const TurnAngles angles(g, st);
+
+  const std::size_t states = std::size_t(n * K);
+  auto cost_bits = detail::zeroed<std::uint64_t>(states);
+  auto pred = detail::zeroed<std::uint8_t>(states);  // 1 + offset into the predecessor; 0: start
+  const std::uint64_t inf_bits = detail::bits_of(inf);
+  auto dist = [&](std::int64_t s) { return detail::from_bits(cost_bits[std::size_t(s)] ^ inf_bits); };
+  auto set = [&](std::int64_t s, double d) { cost_bits[std::size_t(s)] = detail::bits_of(d) ^ inf_bits; };
+
+  QuaternaryHeap heap;
+  SearchStats stats;
+  stats.min_cost = b.min_rate;
+  // Every step out of pixel v (reached by offset `in`, -1: none) with label dv; `code` is what
+  // the new states record as their predecessor (0 from the start, else 1 + in).
+  auto expand = [&](std::int64_t v, std::int64_t in, double dv, std::uint8_t code) {
+    const std::int64_t row = v / C;
+    const double* len = lengths.row(row);
+    for_each_step(pg, v, [&](std::int64_t w, std::int64_t o, auto&& cell) {
+      const double c = model(v, w, int(o), len[o], dv, cell);
+      if (!(c < inf)) return;
+      const double nd = dv + c + (in >= 0 ? turn(angles(row, in, o)) : 0.0);
+      const std::int64_t s = w * K + o;
+      if (nd < dist(s)) {  // false for expanded states: their cost is negative
+        set(s, nd);
+        pred[std::size_t(s)] = code;
+        heap.push({use_bound ? nd + bound(w) : nd, std::uint32_t(s)});
+      }
+    });
+  };
+
+  RouteResult out;
+  std::int64_t reached = -1;  // the state at the target
+  if (start == target) {
+    out.cost = 0;
+    out.path = {start};
+    out.cumulative = {0.0};
+    return out;
+  }
+  expand(start, incoming, 0.0, 0);
+  while (!heap.empty()) {
+    const HeapEntry top = heap.pop();
+    const std::int64_t s = top.id;
+    const double ds = dist(s);
+    if (std::signbit(ds)) continue;
+    set(s, -ds);
+    if ((++stats.settled & 4095) == 0 && cancel && cancel->load(std::memory_order_relaxed))
+      throw Cancelled();
+    const std::int64_t v = s / K;
+    if (v == target) { reached = s; break; }
+    expand(v, s - v * K, ds, std::uint8_t(s - v * K + 1));
+  }
+  stats.heap_peak = heap.peak();
+  stats.state_bytes = states * 9 + heap.capacity_bytes() + angles.bytes();
+  out.stats = stats;
+  if (reached < 0) return out;
+  out.cost = std::fabs(dist(reached));
+  // Back along the predecessors: state (w, o) came from pixel w - offset o, in state pred - 1.
+  std::int64_t s = reached;
+  for (;;) {
+    const std::int64_t v = s / K, o = s - v * K;
+    out.path.push_back(v);
+    out.cumulative.push_back(std::fabs(dist(s)));
+    out.offsets.push_back(int(o));
+    std::int64_t r = v / C - st[std::size_t(o)].di, c = v % C - st[std::size_t(o)].dj;
+    if (g.wrap) c = (c + C) % C;
+    const std::int64_t u = r * C + c;
+    const int p = pred[std::size_t(s)];
+    if (p == 0) { out.path.push_back(u); out.cumulative.push_back(0.0); break; }
+    s = u * K + (p - 1);
+    if (out.path.size() > states) throw std::logic_error("predecessor cycle");
+  }
+  std::reverse(out.path.begin(), out.path.end());
+  std::reverse(out.cumulative.begin(), out.cumulative.end());
+  std::reverse(out.offsets.begin(), out.offsets.end());
+  return out;
+}
+
+}  // namespace seaway
