@@ -16,14 +16,16 @@ namespace {
 
 using Mask = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>;
 
-Zoned<TravelTimeModel> zoned_time(const TravelTimeModel& base, const Mask& mask,
+Zoned<TravelTimeModel> zoned_time(const TravelTimeModel& base, const Mask& mask, const Mask& near,
                                   std::vector<double> closes_h, std::vector<double> opens_h) {
   if (closes_h.size() != opens_h.size() || closes_h.size() > 8)
     throw std::invalid_argument("give at most 8 zones, each with a closing and an opening time");
   if (mask.ndim() != 2 || mask.shape(0) != base.forecast->rows || mask.shape(1) != base.forecast->cols)
     throw std::invalid_argument("the zone mask must be on the forecast's grid");
   Zoned<TravelTimeModel> z{base, {}};
+  if (near.size() != mask.size()) throw std::invalid_argument("near must have the mask's shape");
   z.zones.mask.assign(mask.data(), mask.data() + mask.size());
+  z.zones.near.assign(near.data(), near.data() + near.size());
   z.zones.closes_h = std::move(closes_h);
   z.zones.opens_h = std::move(opens_h);
   return z;
@@ -65,7 +67,7 @@ void def_least_danger(py::module_& m) {
 void register_constraints(py::module_& m) {
   py::class_<Zoned<TravelTimeModel>>(m, "ZonedTravelTimeModel",
                                      "Hours through a forecast with zones closed in time windows")
-      .def(py::init(&zoned_time), py::arg("model"), py::arg("mask"), py::arg("closes_h"),
+      .def(py::init(&zoned_time), py::arg("model"), py::arg("mask"), py::arg("near"), py::arg("closes_h"),
            py::arg("opens_h"));
   def_least_danger<TravelTimeModel>(m);
   def_least_danger<Zoned<TravelTimeModel>>(m);

@@ -1,6 +1,8 @@
 // Zones closed during a time window, for time routes (issue 11): a step that touches a closed
 // zone (either end inside) must end by the time the zone closes or start once it has opened
-// again; otherwise the ship waits at the step's start until the zone opens. A step's cost is
+// again; otherwise the ship waits at the step's start until the zone opens. A step touches a
+// zone when one of its ends or any pixel its closed segment meets lies in it (the land rule's
+// pixels, so no long step jumps over a thin closed zone). A step's cost is
 // then wait + sailing time at the new departure. Waiting keeps the search exact: if the
 // weather is FIFO, leaving later never arrives earlier, so the earliest allowed departure is
 // the best one, and arrival stays monotone in departure (the premise of the label-setting
@@ -15,27 +17,44 @@
 
 #include "cost_models.hpp"
 #include "grid.hpp"
+#include "stencil.hpp"
 
 namespace seaway {
 
 // Bit z of mask[p] is set when pixel p lies in zone z (at most 8 zones), closed on
 // [closes_h[z], opens_h[z]) in hours after departure.
+// near[p] is set when a zone pixel lies within 7 pixels (the widest stencil's reach) of p, so
+// that steps far from every zone cost one byte read.
 struct TimeWindows {
-  std::vector<std::uint8_t> mask;
+  std::vector<std::uint8_t> mask, near;
   std::vector<double> closes_h, opens_h;
 };
 
 template <class Inner>
 class ZonedTime {
  public:
-  ZonedTime(const Inner& inner, const TimeWindows& z) : inner_(inner), z_(z) {}
+  ZonedTime(const Inner& inner, const TimeWindows& z, const Grid& g, const std::vector<Offset>& st)
+      : inner_(inner), z_(z), g_(g), st_(st) {}
 
   auto bounds(const Passability& p) const { return inner_.bounds(p); }
+
+  // The zones the step v -> w along offset o touches, one bit each.
+  std::uint8_t bits(std::int64_t v, std::int64_t w, int o) const {
+    if (!z_.near[std::size_t(v)]) return 0;
+    std::uint8_t b = std::uint8_t(z_.mask[std::size_t(v)] | z_.mask[std::size_t(w)]);
+    const std::int64_t C = g_.cols, row = v / C, col = v - row * C;
+    for (const CellShare& t : st_[std::size_t(o)].touched) {
+      std::int64_t c = col + t.dj;
+      if (g_.wrap) c = c < 0 ? c + C : (c >= C ? c - C : c);
+      b = std::uint8_t(b | z_.mask[std::size_t((row + t.di) * C + c)]);
+    }
+    return b;
+  }
 
   template <class Cell>
   double operator()(std::int64_t v, std::int64_t w, int o, double r, double t_h, Cell&& cell) const {
     double h = inner_(v, w, o, r, t_h, cell);
-    const std::uint8_t bits = std::uint8_t(z_.mask[std::size_t(v)] | z_.mask[std::size_t(w)]);
+    const std::uint8_t bits = this->bits(v, w, o);
     if (!bits || !(h < inf)) return h;
     const double dep = departure(v, w, o, r, t_h, h, bits, cell);
     if (dep == t_h) return h;
@@ -71,6 +90,8 @@ class ZonedTime {
  private:
   const Inner& inner_;
   const TimeWindows& z_;
+  const Grid& g_;
+  const std::vector<Offset>& st_;
 };
 
 // Base (a time model struct of models.hpp) with zones closed in time windows on its grid.
@@ -81,10 +102,10 @@ struct Zoned {
 
   template <class G, class F>
   auto visit(const G& g, F&& f) const {
-    if (std::int64_t(zones.mask.size()) != g.grid().size())
+    if (std::int64_t(zones.mask.size()) != g.grid().size() || zones.near.size() != zones.mask.size())
       throw std::invalid_argument("the zone mask must have one value per pixel of the chart");
     return base.visit(g, [&](const auto& inner) {
-      return f(ZonedTime<std::decay_t<decltype(inner)>>(inner, zones));
+      return f(ZonedTime<std::decay_t<decltype(inner)>>(inner, zones, g.grid(), g.stencil()));
     });
   }
 
@@ -99,7 +120,7 @@ struct Zoned {
       const double r = g.lengths().row(v / g.grid().cols)[o], t = out.cumulative[i];
       auto no_cell = [](std::size_t) { return std::int64_t(0); };
       const double h = m.inner()(v, w, o, r, t, no_cell);
-      const std::uint8_t bits = std::uint8_t(zones.mask[std::size_t(v)] | zones.mask[std::size_t(w)]);
+      const std::uint8_t bits = m.bits(v, w, o);
       wait.push_back(bits && h < inf ? m.departure(v, w, o, r, t, h, bits, no_cell) - t : 0.0);
     }
     values.emplace_back("wait_h", std::move(wait));

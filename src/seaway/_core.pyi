@@ -73,7 +73,8 @@ class WaveDangerModel:
     def __init__(self, forecast: Forecast, ship_length_m: float, speed_kn: float) -> None: ...
 
 class ZonedTravelTimeModel:
-    def __init__(self, model: TravelTimeModel, mask: npt.NDArray[np.uint8], closes_h: list[float],
+    def __init__(self, model: TravelTimeModel, mask: npt.NDArray[np.uint8],
+                 near: npt.NDArray[np.uint8], closes_h: list[float],
                  opens_h: list[float]) -> None: ...
 
 Model = (MaxCost | MeanCost | IntegralCost | EnteredPixelCost | TravelTimeModel | FuelModel

@@ -341,4 +341,8 @@ def timed_zone_engine(forecast, base, zones):
             raise ValueError(f"zone {z.name!r}: its window must close before it opens again, got {z.active!r}")
         closes.append(a)
         opens.append(b)
-    return _core.ZonedTravelTimeModel(base, mask, closes, opens)
+    from scipy.ndimage import maximum_filter
+
+    # Pixels within 7 (the widest stencil's reach) of a zone: only their steps are checked.
+    near = maximum_filter(mask > 0, size=15, mode=("nearest", "wrap" if chart.grid.wrap else "nearest"))
+    return _core.ZonedTravelTimeModel(base, mask, near.astype(np.uint8), closes, opens)
