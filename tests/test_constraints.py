@@ -134,6 +134,29 @@ def test_exclusion_and_penalty_zones_on_a_route(tmp_path):
     assert p.pixels[:, 0].tolist() == [2] * 21
 
 
+def test_zone_from_a_shapefile_and_a_geojson_mapping(tmp_path):
+    """The same polygon as a shapefile (pyogrio), a GeoJSON mapping and a shapely geometry
+    rasterises to the same pixels, and as an exclusion the route detours around it."""
+    pyogrio = pytest.importorskip("pyogrio")
+    lat, lon = 70 + 0.1 * np.arange(30), 40 + 0.2 * np.arange(40)
+    chart = as_chart(np.ones((30, 40)), lat=lat, lon=lon)
+    poly = box(43.9, 70.5, 45.1, 72.45)  # columns 20-25, rows 5-24
+    path = tmp_path / "closed.shp"
+    pyogrio.raw.write(str(path), np.array([shapely.to_wkb(poly)], dtype=object), [], [],
+                      driver="ESRI Shapefile", crs="EPSG:4326", geometry_type="Polygon")
+    masks = [rasterise_zone(Zone(g), chart) for g in (str(path), shapely.geometry.mapping(poly), poly)]
+    want = np.zeros((30, 40), bool)
+    want[5:25, 20:26] = True
+    for m in masks:
+        np.testing.assert_array_equal(m, want)
+    r = seaway.route(np.ones((30, 40)), (71.5, 40.0), (71.5, 47.8), lat=lat, lon=lon,
+                     zones=[Zone(str(path), name="closed area")], neighbourhood=5)
+    assert not want[tuple(r.pixels.T)].any()
+    free = seaway.route(np.ones((30, 40)), (71.5, 40.0), (71.5, 47.8), lat=lat, lon=lon,
+                        neighbourhood=5)
+    assert want[tuple(free.pixels.T)].any() and r.cost > free.cost
+
+
 def test_via_points_each_leg_optimal():
     rng = np.random.default_rng(4)
     u = rng.uniform(1, 3, (30, 40))

@@ -109,3 +109,22 @@ def test_hard_limits_are_never_crossed():
         route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=SHIP, neighbourhood=3)
     with pytest.raises(ValueError, match="if_no_safe_route"):
         route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=SHIP, if_no_safe_route="maybe")
+
+
+def test_wave_danger_zone_fallback():
+    """Danger by significant wave height (danger_wave_m = 3): a 4 m sea across the chart (below
+    the 5 m hard limit) is crossed by the least-danger route on its narrowest row; with waves
+    of 2 m nowhere is in danger and the plain time route comes back unflagged."""
+    hs = np.full((21, 31), 1.0)
+    hs[:, 15] = 4.0
+    ship = Vessel(speed_kn=12.0, speed_loss="none", danger_wave_m=3.0)
+    fc = forecast(hs=hs, ce=0.0, cn=0.0)
+    r = route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=ship, neighbourhood=3)
+    step = _core.haversine_km(62.0, 0.0, 62.0, 0.1) / 1.852 / 12.0
+    assert r.stats["through_danger"] is True
+    assert r.stats["danger_h"] == pytest.approx(2 * step, rel=1e-9)
+    (leg,) = r.stats["danger_legs"]
+    assert leg["from"] == pytest.approx((62.0, 1.4)) and leg["to"] == pytest.approx((62.0, 1.6))
+    calm = route_time(forecast(hs=np.full((21, 31), 2.0), ce=0.0, cn=0.0), (61.0, 0.2),
+                      (61.0, 2.8), vessel=ship, neighbourhood=3)
+    assert "through_danger" not in calm.stats

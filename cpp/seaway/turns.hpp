@@ -74,6 +74,33 @@ class TurnAngles {
   std::vector<double> dir_;
 };
 
+// The penalty of every (incoming, outgoing) offset pair per row (one row on planar grids), so
+// a relaxation reads a number instead of taking an arccosine; computed on the fly when the
+// table would pass 64 MB (lat/lon grids with wide stencils).
+class TurnCosts {
+ public:
+  TurnCosts(const Grid& g, const std::vector<Offset>& st, const TurnPenalty& p)
+      : angles_(g, st), p_(p), k_(std::int64_t(st.size())), rows_(g.geographic ? g.rows : 1) {
+    if (double(rows_) * double(k_ * k_) * sizeof(double) > 64e6) return;
+    table_.resize(std::size_t(rows_ * k_ * k_));
+    for (std::int64_t r = 0; r < rows_; ++r)
+      for (std::int64_t a = 0; a < k_; ++a)
+        for (std::int64_t b = 0; b < k_; ++b) table_[std::size_t((r * k_ + a) * k_ + b)] = p(angles_(r, a, b));
+  }
+  double operator()(std::int64_t row, std::int64_t in, std::int64_t o) const {
+    if (table_.empty()) return p_(angles_(row, in, o));
+    return table_[std::size_t(((rows_ == 1 ? 0 : row) * k_ + in) * k_ + o)];
+  }
+  double largest() const { return *std::max_element(p_.cost.begin(), p_.cost.end()); }
+  std::size_t bytes() const { return angles_.bytes() + table_.capacity() * sizeof(double); }
+
+ private:
+  TurnAngles angles_;
+  const TurnPenalty& p_;
+  std::int64_t k_, rows_;
+  std::vector<double> table_;
+};
+
 namespace detail {
 struct FreeDeleter {
   void operator()(void* p) const { std::free(p); }
@@ -139,7 +166,10 @@ void for_each_step(const PreparedGrid& pg, std::int64_t v, F&& f) {
 
 // Least-cost route from `start` to `target` with turn penalties under `model`. `incoming`: the
 // offset of the step that reached the start (charged at the first turn), or -1 for none.
-// weight 0: Dijkstra, 1: A*, > 1: weighted A* (a 4-ary heap in every case).
+// weight 0: Dijkstra, 1: A*, > 1: weighted A*. The queue is chosen as in PreparedGrid::run:
+// buckets when every step (and so every step plus a penalty >= 0) costs at least a bucket's
+// width, exact A* then with its bound scaled by 0.95; a radix heap for other monotone keys; a
+// 4-ary heap for weighted A*.
 template <class Model>
 RouteResult route_with_turns(const PreparedGrid& pg, const Model& model, const TurnPenalty& turn,
                              std::int64_t start, std::int64_t target, int incoming, double weight,
@@ -153,11 +183,19 @@ RouteResult route_with_turns(const PreparedGrid& pg, const Model& model, const T
   if (incoming >= K) throw std::invalid_argument("incoming step is not a stencil offset");
   if (double(n) * double(K) >= 4294967295.0)
     throw std::invalid_argument("pixels x stencil offsets must stay below 2**32 for the turn penalty");
+  const TurnCosts penalty(g, st, turn);
   const StepBounds b = model.bounds(pg.passability());
+  const auto [rmin_it, rmax_it] = std::minmax_element(lengths.table.begin(), lengths.table.end());
+  const double rmin = b.per_length ? *rmin_it : 1.0, rmax = b.per_length ? *rmax_it : 1.0;
+  const bool astar = weight == 1 && b.per_length;
+  const double eps = astar ? 0.05 : 1.0;
+  const double width = 0.999999 * eps * b.min_rate * rmin;
+  const double span = 1.000001 * (b.max_rate + (astar ? b.min_rate : 0.0)) * rmax + penalty.largest() + 1e-300;
+  const bool buckets = weight <= 1 && width > 0 && span < inf && BucketQueue::buckets_needed(width, span) < 65536;
   const bool use_bound = weight > 0 && b.per_length;
-  // Exact A* with a heap: the bound is consistent; shave it by 1e-9 against rounding.
-  const DistanceBound bound(g, target, use_bound ? b.min_rate * (weight == 1 ? 1 - 1e-9 : weight) : 0);
-  const TurnAngles angles(g, st);
+  // A* in a heap: the bound is consistent; shave it by 1e-9 against rounding. In buckets: 0.95.
+  const double scale = weight != 1 ? weight : (buckets ? 1 - eps : 1 - 1e-9);
+  const DistanceBound bound(g, target, use_bound ? b.min_rate * scale : 0);
 
   const std::size_t states = std::size_t(n * K);
   auto cost_bits = detail::zeroed<std::uint64_t>(states);
@@ -166,52 +204,68 @@ RouteResult route_with_turns(const PreparedGrid& pg, const Model& model, const T
   auto dist = [&](std::int64_t s) { return detail::from_bits(cost_bits[std::size_t(s)] ^ inf_bits); };
   auto set = [&](std::int64_t s, double d) { cost_bits[std::size_t(s)] = detail::bits_of(d) ^ inf_bits; };
 
-  QuaternaryHeap heap;
   SearchStats stats;
   stats.min_cost = b.min_rate;
+  std::int64_t reached = -1;  // the state at the target
+  std::size_t queue_bytes = 0;
   // Every step out of pixel v (reached by offset `in`, -1: none) with label dv; `code` is what
   // the new states record as their predecessor (0 from the start, else 1 + in).
-  auto expand = [&](std::int64_t v, std::int64_t in, double dv, std::uint8_t code) {
-    const std::int64_t row = v / C;
-    const double* len = lengths.row(row);
-    for_each_step(pg, v, [&](std::int64_t w, std::int64_t o, auto&& cell) {
-      const double c = model(v, w, int(o), len[o], dv, cell);
-      if (!(c < inf)) return;
-      const double nd = dv + c + (in >= 0 ? turn(angles(row, in, o)) : 0.0);
-      const std::int64_t s = w * K + o;
-      if (nd < dist(s)) {  // false for expanded states: their cost is negative
-        set(s, nd);
-        pred[std::size_t(s)] = code;
-        heap.push({use_bound ? nd + bound(w) : nd, std::uint32_t(s)});
-      }
-    });
+  auto run = [&](auto heap) {
+    auto expand = [&](std::int64_t v, std::int64_t in, double dv, std::uint8_t code) {
+      const std::int64_t row = v / C;
+      const double* len = lengths.row(row);
+      for_each_step(pg, v, [&](std::int64_t w, std::int64_t o, auto&& cell) {
+        const double c = model(v, w, int(o), len[o], dv, cell);
+        if (!(c < inf)) return;
+        const double nd = dv + c + (in >= 0 ? penalty(row, in, o) : 0.0);
+        const std::int64_t s = w * K + o;
+        if (nd < dist(s)) {  // false for expanded states: their cost is negative
+          set(s, nd);
+          pred[std::size_t(s)] = code;
+          heap.push({use_bound ? nd + bound(w) : nd, std::uint32_t(s)});
+        }
+      });
+    };
+    // A first entry at the least key any state can have (the start's bound): the bucket queue
+    // starts its ring at the first key it is given. Popped, it is skipped.
+    constexpr std::uint32_t sentinel = 0xffffffffu;
+    heap.push({use_bound ? bound(start) : 0.0, sentinel});
+    expand(start, incoming, 0.0, 0);
+    while (!heap.empty()) {
+      const HeapEntry top = heap.pop();
+      if (top.id == sentinel) continue;
+      const std::int64_t s = top.id;
+      const double ds = dist(s);
+      if (std::signbit(ds)) continue;
+      set(s, -ds);
+      if ((++stats.settled & 4095) == 0 && cancel && cancel->load(std::memory_order_relaxed))
+        throw Cancelled();
+      const std::int64_t v = s / K;
+      if (v == target) { reached = s; break; }
+      expand(v, s - v * K, ds, std::uint8_t(s - v * K + 1));
+    }
+    stats.heap_peak = heap.peak();
+    queue_bytes = heap.capacity_bytes();
   };
 
   RouteResult out;
-  std::int64_t reached = -1;  // the state at the target
   if (start == target) {
     out.cost = 0;
     out.path = {start};
     out.cumulative = {0.0};
     return out;
   }
-  expand(start, incoming, 0.0, 0);
-  while (!heap.empty()) {
-    const HeapEntry top = heap.pop();
-    const std::int64_t s = top.id;
-    const double ds = dist(s);
-    if (std::signbit(ds)) continue;
-    set(s, -ds);
-    if ((++stats.settled & 4095) == 0 && cancel && cancel->load(std::memory_order_relaxed))
-      throw Cancelled();
-    const std::int64_t v = s / K;
-    if (v == target) { reached = s; break; }
-    expand(v, s - v * K, ds, std::uint8_t(s - v * K + 1));
-  }
-  stats.heap_peak = heap.peak();
-  stats.state_bytes = states * 9 + heap.capacity_bytes() + angles.bytes();
+  if (weight > 1) run(QuaternaryHeap{});
+  else if (buckets) run(BucketQueue(width, span));
+  else run(RadixHeap{});
+  stats.state_bytes = states * 9 + queue_bytes + penalty.bytes();
   out.stats = stats;
   if (reached < 0) return out;
+  // The target has one state per incoming step. A bucket empties in any order, so another of
+  // them may be cheaper than the first one popped; those in the same bucket are final already
+  // (no step is cheaper than a bucket's width) and later buckets hold only dearer labels.
+  for (std::int64_t o = 0; o < K; ++o)
+    if (std::fabs(dist(target * K + o)) < std::fabs(dist(reached))) reached = target * K + o;
   out.cost = std::fabs(dist(reached));
   // Back along the predecessors: state (w, o) came from pixel w - offset o, in state pred - 1.
   std::int64_t s = reached;
