@@ -118,3 +118,12 @@ def test_via_point_carries_the_incoming_step():
 def test_bad_turn_penalty(bad, err):
     with pytest.raises(err, match="turn_penalty"):
         seaway.route(np.ones((4, 4)), (0, 0), (3, 3), turn_penalty=bad)
+
+
+def test_turn_route_refuses_smoothing_and_names_its_model():
+    """Smoothing would price legs without the penalties that the route's cost holds: refused."""
+    u = np.ones((5, 9))
+    r = seaway.route(u, (0, 0), (4, 8), neighbourhood=3, turn_penalty=0.1, edge_cost="mean")
+    assert r.edge_cost == "mean" and r.step_costs.sum() == pytest.approx(r.cost)
+    with pytest.raises(ValueError, match="turn penalties"):
+        r.smoothed()

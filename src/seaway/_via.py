@@ -10,6 +10,7 @@ import numpy as np
 from . import _core
 from ._interrupt import interruptible
 from .errors import NoRouteError
+from .models import EdgeCost
 from .route import Route
 
 
@@ -87,6 +88,19 @@ def _check_turn_model(model):
             "clock that the penalty would shift); route without turn_penalty, or on a static cost")
 
 
+class TurnPenalised(EdgeCost):
+    """The model of a turn-penalty route: a static edge cost whose route cost also holds the
+    turn penalties, so arbitrary legs cannot be priced (no smoothing, which would drop them)."""
+
+    smoothable = False
+
+    def segments(self, chart, neighbourhood):
+        raise ValueError(
+            "a turn-penalty route's cost includes its turn penalties, which smoothing cannot "
+            "price along new legs; use the route as found, or smooth a route found without "
+            "turn_penalty")
+
+
 def search_leg(prepared, s, e, weight, model, turns, incoming):
     """(cost, flat path, stats, cumulative, per-step values) of one leg between located pixels."""
     if turns is None:
@@ -140,6 +154,7 @@ def route_constrained(prepared, start, end, model, method, weight, via, turn_pen
         stats["turn_penalty"] = dict(zip(*turns))
     step_costs = np.concatenate(steps)
     route = Route(chart=chart, cost=float(step_costs.sum()), pixels=pixels, method=method,
-                  neighbourhood=prepared.neighbourhood, model=model, stats=stats,
+                  neighbourhood=prepared.neighbourhood,
+                  model=model if turns is None else TurnPenalised(model.name), stats=stats,
                   step_costs=step_costs)
     return model.finish(route, per_step)

@@ -1,0 +1,51 @@
+"""What the turn penalty costs (issue 11): peak resident memory and time of the expanded-state
+search (pixel x incoming step) on the synthetic Kara-sized chart, each in a fresh process,
+beside the plain search in the same process. Slow (tens of seconds per case): run on its own,
+`pytest benchmarks/test_constraints.py -s` (see benchmarks/README.md)."""
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from .conftest import NOTES
+
+_SCRIPT = """
+import sys, time, resource, numpy as np, seaway
+def status(key):
+    for line in open("/proc/self/status"):
+        if line.startswith(key):
+            return int(line.split()[1]) * 1024
+cost = np.load(sys.argv[1]); start = tuple(map(int, sys.argv[2:4])); end = tuple(map(int, sys.argv[4:6]))
+k = int(sys.argv[6])
+chart = seaway.prepare(cost, neighbourhood=k, edge_cost="mean")
+cpu = lambda: resource.getrusage(resource.RUSAGE_SELF).ru_utime
+t = cpu(); plain = chart.route(start, end, method="dijkstra"); t_plain = cpu() - t
+with open("/proc/self/clear_refs", "w") as f:
+    f.write("5")  # reset the peak (VmHWM) to the current resident size
+before = status("VmRSS:")
+t = cpu(); r = chart.route(start, end, method="dijkstra", turn_penalty=0.1); t_turn = cpu() - t
+print((status("VmHWM:") - before) / cost.size, r.stats["state_bytes"] / cost.size,
+      r.stats["settled"], plain.stats["settled"], t_turn, t_plain, r.cost, plain.cost,
+      r.course_changes, plain.course_changes)
+"""
+
+
+@pytest.mark.parametrize("k", [3, 5])
+def test_turn_penalty_memory_and_time(chart, tmp_path, k):
+    cost, start, end = chart
+    np.save(tmp_path / "chart.npy", cost)
+    out = subprocess.run([sys.executable, "-c", _SCRIPT, str(tmp_path / "chart.npy"),
+                          *map(str, start), *map(str, end), str(k)],
+                         capture_output=True, text=True, check=True).stdout.split()
+    rss, own, states, pixels, t_turn, t_plain, c_turn, c_plain, turns, plain_turns = map(float, out)
+    offsets = k * k - 1
+    NOTES[f"turn penalty k={k}: peak RSS added"] = (
+        f"{rss:.0f} B/pixel (address space {own:.0f} = 9 x {offsets} offsets + queue), "
+        f"{states:,.0f} states vs {pixels:,.0f} pixels settled, CPU {t_turn:.1f} s vs {t_plain:.2f} s plain, "
+        f"course changes {turns:.0f} vs {plain_turns:.0f}")
+    print(f"\nk={k}: {NOTES[f'turn penalty k={k}: peak RSS added']}")
+    assert 9 * offsets <= own <= 9 * offsets + 16  # 8 B of cost + 1 of predecessor per state
+    assert rss <= own + 16  # pages never touched stay unmapped (calloc)
+    assert c_turn > c_plain and turns < plain_turns  # the penalty buys a straighter route
