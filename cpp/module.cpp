@@ -5,9 +5,11 @@ namespace py = pybind11;
 
 void register_search(py::module_& m);
 void register_weather(py::module_& m);
+void register_ice(py::module_& m);
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "seaway's C++ engine (private: use the seaway package)";
   register_search(m);
   register_weather(m);
+  register_ice(m);
 }
