@@ -130,3 +130,26 @@ def test_inputs_refused_with_the_fix(week, tmp_path):
         closed = week.copy()
         closed["CT"] = closed.CT.where(~((closed.lon > 62.5) & (closed.lon < 63)), 10.0)
         route_season(closed, (72.15, 62.75), (72.15, 63.95), ice_class="Arc4", v0_kn=14)
+
+
+def test_command_line_routes_through_dated_sigrid3_files(week, tmp_path, capsys):
+    from seaway.__main__ import main
+
+    for i, day in enumerate(DAYS):
+        write_chart(tmp_path / f"c{i}.shp", plug=i < 3)
+    charts = [f"{day}=" + str(tmp_path / f"c{i}.shp") for i, day in enumerate(DAYS)]
+    out = tmp_path / "arc4.geojson"
+    argv = ["season", *charts, "--grid", "72,72.3,60,64,0.1", "--from", "72.15,60.05", "--to",
+            "72.15,63.95", "--vessel", "Arc4", "--speed", "14", "--neighbourhood", "3", "-q",
+            "--out", str(out)]
+    assert main(argv) == 0
+    text = capsys.readouterr().out
+    api = route_season(week, (72.15, 60.05), (72.15, 63.95), ice_class="Arc4", v0_kn=14, neighbourhood=3)
+    assert f"{api.cost:.2f} h" in text and "wait " in text and "at 72.1500, 62.4500 from 2026-07-01" in text
+    assert out.exists()
+    # Bad command lines name the fix and exit 1.
+    assert main(["season", *charts, "--from", "72.15,60.05", "--to", "72.15,63.95", "-q"]) == 1
+    assert "--grid SOUTH,NORTH,WEST,EAST,RES" in capsys.readouterr().err
+    assert main(["season", charts[1], charts[0], "--grid", "72,72.3,60,64,0.1", "--from",
+                 "72.15,60.05", "--to", "72.15,63.95", "-q"]) == 1
+    assert "is followed by 2026-07-01T00:00:00: sorted(charts)" in capsys.readouterr().err

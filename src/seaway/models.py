@@ -319,7 +319,7 @@ class IceSeasonTime(CostModel):
         route.stats.update(hours=hours, departure=self.departure, arrival=at(hours),
                            hours_waiting=float(wait.sum()), hours_under_way=float(hours - wait.sum()),
                            waits=waits, charts_used=[times[k] for k in used], ice_class=self.ice_class)
-        route.speed_kn = self.v0_kn
+        # No route.speed_kn: legs at one speed would contradict the per-step times and waits.
         if hours > self.valid_from_h[-1] + self.season.last_valid_h:
             warnings.warn(f"the voyage arrives at {route.stats['arrival']}, beyond the last chart "
                           f"({times[-1]}) and its usual validity; the last chart was assumed to hold",
