@@ -51,46 +51,56 @@ class IceSeasonTime {
   StepBounds bounds(const Passability&) const { return {s_.min_hours_per_km, inf, true}; }
 
   template <class Cell>
-  double operator()(std::int64_t v, std::int64_t, int o, double r_km, double t_h, Cell&&) const {
-    return step(v, o, r_km, t_h).arrive_h - t_h;
+  double operator()(std::int64_t v, std::int64_t, int o, double r_km, double t_h, Cell&& cell) const {
+    return step(v, o, r_km, t_h, cell).arrive_h - t_h;
   }
 
   struct Step {
     double depart_h, arrive_h;  // the best departure at or after the arrival at v, and its arrival
   };
 
-  // The earliest arrival of the step v -> v + offset o (length r_km) for a ship at v at t_h.
-  Step step(std::int64_t v, int o, double r_km, double t_h) const {
+  // The earliest arrival of the step v -> v + offset o (length r_km) for a ship at v at t_h;
+  // cell(m) is the flat index of the step's m-th length share (the search's, or at()'s).
+  template <class Cell>
+  Step step(std::int64_t v, int o, double r_km, double t_h, Cell&& cell) const {
     const double* from = s_.valid_from_h;
     std::int64_t k = std::int64_t(std::upper_bound(from, from + s_.frames, t_h) - from) - 1;
     k = std::max<std::int64_t>(k, 0);
-    Step best{t_h, t_h + duration(v, o, r_km, k)};
+    Step best{t_h, t_h + duration(v, o, r_km, k, cell)};
     // Later charts can only help if they start before the best arrival so far.
     for (std::int64_t j = k + 1; j < s_.frames && from[j] < best.arrive_h; ++j) {
-      const double a = from[j] + duration(v, o, r_km, j);
+      const double a = from[j] + duration(v, o, r_km, j, cell);
       if (a < best.arrive_h) best = {from[j], a};
     }
     return best;
   }
-
-  // Hours to sail the step through chart k; inf when the step touches closed ice or land.
-  double duration(std::int64_t v, int o, double r_km, std::int64_t k) const {
-    const float* h = s_.hours_per_km + k * g_.size();
-    const std::int64_t row = v / g_.cols, col = v - row * g_.cols;
-    auto at = [&](int di, int dj) {
-      std::int64_t c = col + dj;
-      if (g_.wrap) c = c < 0 ? c + g_.cols : (c >= g_.cols ? c - g_.cols : c);
-      return h[(row + di) * g_.cols + c];
-    };
-    double sum = 0;
-    for (const CellShare& s : st_[std::size_t(o)].shares) sum += s.fraction * double(at(s.di, s.dj));
-    if (!(sum < inf)) return inf;
-    for (const CellShare& t : corners_[std::size_t(o)])
-      if (!(double(at(t.di, t.dj)) < inf)) return inf;
-    return sum * r_km;
+  Step step(std::int64_t v, int o, double r_km, double t_h) const {
+    const auto& shares = st_[std::size_t(o)].shares;
+    return step(v, o, r_km, t_h, [&](std::size_t m) { return at(v, shares[m].di, shares[m].dj); });
   }
 
  private:
+  // The flat index of the pixel (di, dj) from v, across the antimeridian on wrapping grids.
+  std::int64_t at(std::int64_t v, int di, int dj) const {
+    const std::int64_t row = v / g_.cols;
+    std::int64_t c = v - row * g_.cols + dj;
+    if (g_.wrap) c = c < 0 ? c + g_.cols : (c >= g_.cols ? c - g_.cols : c);
+    return (row + di) * g_.cols + c;
+  }
+
+  // Hours to sail the step through chart k; inf when the step touches closed ice or land.
+  template <class Cell>
+  double duration(std::int64_t v, int o, double r_km, std::int64_t k, Cell&& cell) const {
+    const float* h = s_.hours_per_km + k * g_.size();
+    const auto& shares = st_[std::size_t(o)].shares;
+    double sum = 0;
+    for (std::size_t m = 0; m < shares.size(); ++m) sum += shares[m].fraction * double(h[cell(m)]);
+    if (!(sum < inf)) return inf;
+    for (const CellShare& t : corners_[std::size_t(o)])
+      if (!(double(h[at(v, t.di, t.dj)]) < inf)) return inf;
+    return sum * r_km;
+  }
+
   const Grid& g_;
   const std::vector<Offset>& st_;
   IceSeries s_;

@@ -276,7 +276,7 @@ class IceSeasonTime(CostModel):
         if not self._open.any():
             raise ValueError(f"class {self.ice_class} may go nowhere in any chart of the season from "
                              f"{self.departure} on; try a stronger class or other speeds")
-        fastest = float(self.hours_per_km[np.isfinite(self.hours_per_km)].min())
+        fastest = float(np.min(self.hours_per_km, where=self._open[None], initial=np.inf))
         self._engine = _core.IceSeasonModel(self.hours_per_km, list(self.valid_from_h), fastest)
 
     def unit(self, geographic):

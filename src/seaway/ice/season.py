@@ -216,18 +216,18 @@ class SeasonGrid:
         if not (np.isfinite(v0_kn) and v0_kn > 0):
             raise ValueError(f"v0_kn must be a positive speed in knots, got {v0_kn!r}")
         dep, k0 = self.departure_frames(departure)
-        speeds = []
-        for k in range(k0, self.times.size):
+        if not (callable(getattr(speed, "get", None)) or (isinstance(speed, str) and speed == "andreeva")):
+            raise ValueError(f"speed must be 'andreeva' or a table {{stage: knots}}, got {speed!r}")
+        hours = np.empty((self.times.size - k0,) + self.shape, np.float32)
+        for i, k in enumerate(range(k0, self.times.size)):  # frame by frame: no 7-frame float64 copies
             frame = self.ds.isel(time=k)
-            if callable(getattr(speed, "get", None)):
-                speeds.append(table_speed_kn(frame, ice_class, speed, **speed_options))
-            elif isinstance(speed, str) and speed == "andreeva":
-                speeds.append(andreeva_speed_kn(frame, ice_class, v0_kn, **speed_options))
+            if isinstance(speed, str):
+                v = andreeva_speed_kn(frame, ice_class, v0_kn, **speed_options)
             else:
-                raise ValueError(f"speed must be 'andreeva' or a table {{stage: knots}}, got {speed!r}")
-        hours = andreeva.time_cost(np.stack(speeds) / v0_kn, v0_kn)
+                v = table_speed_kn(frame, ice_class, speed, **speed_options)
+            hours[i] = andreeva.time_cost(v / v0_kn, v0_kn)
         valid_from_h = (self.times[k0:] - dep) / np.timedelta64(1, "h")
-        return np.ascontiguousarray(hours, dtype=np.float32), valid_from_h.astype(float), dep
+        return hours, valid_from_h.astype(float), dep
 
 
 def route_season(season, start, end, *, ice_class="Arc7", v0_kn=12.0, departure=None,
