@@ -74,6 +74,47 @@ def test_season_route_equals_brute_force_over_all_paths(seed, k, shape, waits):
         assert (r.stats["hours_waiting"] > 0.1) == waits
 
 
+@pytest.mark.parametrize("seed", [6, 7, 13, 21, 24])
+def test_season_brute_force_on_lat_lon_with_interior_pixels(seed):
+    # 4 x 5 pixels of 0.5 deg lat x 1 deg lon at 70-72 N, 3x3 stencil: pixels of rows 1-2 and
+    # columns 1-3 take the search's interior path; steps are great-circle km.
+    rng = np.random.default_rng(seed)
+    frames, shape = 3, (4, 5)
+    stage = rng.choice([55, 87, 91, 93], size=(frames,) + shape, p=[0.35, 0.3, 0.2, 0.15])
+    start, end = (3, 0), (0, 4)
+    stage[:, 3, 0] = 55
+    hours = np.array([0.0, 20.0, 45.0])
+    lat, lon = np.array([71.75, 71.25, 70.75, 70.25]), np.arange(60.0, 65.0)
+    ds = planar_season(stage, hours=hours).rename(y="lat", x="lon").assign_coords(lat=lat, lon=lon)
+    length = lambda p, q: float(haversine(lat[p[0]], lon[p[1]], lat[q[0]], lon[q[1]]))  # noqa: E731
+    best = season_best_arrival(table_hours(stage), hours, start, end, 3, length)
+    for method in ("dijkstra", "astar"):
+        try:
+            got = route_season(ds, (lat[3], lon[0]), (lat[0], lon[4]), speed=TABLE,
+                               concentration_limit=False, neighbourhood=3, method=method).cost
+        except seaway.NoRouteError:
+            got = math.inf
+        assert got == pytest.approx(best, rel=1e-9)
+
+
+def test_season_across_the_antimeridian_equals_the_rolled_season():
+    # A 360-degree chart wraps: the route across +-180 (columns 34 -> 2) costs what the same
+    # season rolled by half a turn (columns 16 -> 20) costs, corners and shares wrapped alike.
+    rng = np.random.default_rng(11)
+    stage = rng.choice([55, 87, 91, 93], size=(3, 6, 36), p=[0.4, 0.3, 0.2, 0.1])
+    stage[:, 3, [34, 2, 16, 20]] = 55
+    lat, lon = 87.5 - np.arange(6), np.arange(-175.0, 180.0, 10.0)
+    ds = planar_season(stage, hours=[0.0, 12.0, 24.0]).rename(y="lat", x="lon")
+    ds = ds.assign_coords(lat=lat, lon=lon)
+    rolled = ds.copy(data={k: np.roll(v.values, 18, axis=-1) for k, v in ds.data_vars.items()})
+    a = route_season(ds, (lat[3], lon[34]), (lat[3], lon[2]), speed=TABLE, concentration_limit=False)
+    b = route_season(rolled, (lat[3], lon[16]), (lat[3], lon[20]), speed=TABLE,
+                     concentration_limit=False)
+    assert a.cost == pytest.approx(b.cost, rel=1e-12)
+    assert np.array_equal((a.pixels[:, 1] + 18) % 36, b.pixels[:, 1])
+    assert a.length < 1000  # across the seam (4 columns of about 106 km), not round the world
+
+
 def test_waiting_for_the_ice_to_clear_beats_the_detour():
     # 10-km pixels; a band of thick first-year ice across columns 2-3, open only at rows 0-1
     # (a 700-km detour); it breaks up into open water with the chart of 6 h (a third chart at
