@@ -90,6 +90,9 @@ def test_a_week_of_daily_sigrid3_charts_arc4_and_arc7_on_two_departures(week):
     assert [str(t)[:10] for t in arc4.stats["charts_used"]] == ["2026-07-01", "2026-07-04"]
     late4 = run["Arc4", "2026-07-05"]
     assert late4.cost == pytest.approx(hours_along_row(speeds(14, 1.75, 14), 0, 39), rel=1e-9)
+    # Its cost is hours with waits: legs cannot be re-priced, so smoothing is refused.
+    with pytest.raises(ValueError, match="prices only the engine's steps"):
+        arc4.smoothed()
     # FIFO: the later departure never arrives earlier (hours: Arc4 74.0 and 9.7, Arc7 9.7, 5.8).
     for cls in ("Arc4", "Arc7"):
         assert run[cls, "2026-07-05"].stats["arrival"] > run[cls, "2026-07-01"].stats["arrival"]
