@@ -324,3 +324,24 @@ def test_sigrid3_files_with_their_dates(tmp_path):
     # From there it is the quickest route on the open chart: 48 h + that passage.
     rest = route_season(ds.isel(time=[2]), (lat, lon), (71.05, 24.05), ice_class="Arc7", v0_kn=12)
     assert r.cost == pytest.approx(48.0 + rest.cost, rel=1e-12)
+
+
+def test_later_departures_never_arrive_earlier_and_threads_agree():
+    # FIFO, the property that makes the search exact, over departures every 6 h (Arc4 waits at
+    # the ice edge on some of them); one prepared chart and model set shared by 4 threads.
+    from concurrent.futures import ThreadPoolExecutor
+
+    from seaway.ice.season import SeasonGrid
+    from seaway.models import IceSeasonTime
+
+    grid = SeasonGrid(retreating_edge())
+    chart = grid.prepare()
+    days = [DAY0 + np.timedelta64(6 * i, "h") for i in range(12)]
+    models = [IceSeasonTime(grid, "Arc4", 14, departure=d) for d in days]
+    serial = [chart.route((71.0, 64.0), (76.0, 78.0), model=m) for m in models]
+    arrivals = [r.stats["arrival"] for r in serial]
+    assert all(a <= b for a, b in zip(arrivals[:-1], arrivals[1:]))
+    assert any(r.stats["hours_waiting"] > 0 for r in serial)
+    with ThreadPoolExecutor(4) as pool:
+        threaded = list(pool.map(lambda m: chart.route((71.0, 64.0), (76.0, 78.0), model=m), models * 2))
+    assert [r.cost for r in threaded] == [r.cost for r in serial] * 2

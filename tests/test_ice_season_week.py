@@ -126,6 +126,8 @@ def test_inputs_refused_with_the_fix(week, tmp_path):
         SeasonGrid(week.isel(time=[0, 2, 1]))
     with pytest.raises(ValueError, match=r"outside the season \(2026-07-01T00:00:00 to 2026-07-08"):
         IceSeasonTime(grid, "Arc7", 14, departure="2026-07-08T06")
+    with pytest.raises(ValueError, match=r"departure must be a date such as '2026-07-01T12'"):
+        IceSeasonTime(grid, "Arc7", 14, departure="next Tuesday")
     with pytest.raises(ValueError, match="may go nowhere in any chart"):
         IceSeasonTime(grid, "Arc4", 14, speed={55: 0.0, 87: 0.0, 91: 0.0})
     with pytest.raises(ValueError, match=r"start pixel \(1, 27\) at lat 72.1500, lon 62.7500 is in "

@@ -202,7 +202,11 @@ class SeasonGrid:
     def departure_frames(self, departure):
         """(departure, index of the chart valid then); refuses departures outside the season."""
         t = self.times
-        dep = t[0] if departure is None else np.datetime64(departure)
+        try:
+            dep = t[0] if departure is None else np.datetime64(departure)
+        except (TypeError, ValueError):
+            raise ValueError(f"departure must be a date such as '2026-07-01T12' (or a datetime64), "
+                             f"got {departure!r}") from None
         end = t[-1] + np.timedelta64(int(round(self.last_valid_h * 3600)), "s")
         if not (t[0] <= dep <= end):
             raise ValueError(f"departure {dep} is outside the season ({t[0]} to {end}, the last "
