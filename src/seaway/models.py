@@ -296,13 +296,15 @@ class IceSeasonTime(CostModel):
             if rc is None or self._open[rc]:
                 continue
             open_ = np.argwhere(self._open & ~self.season.dry)
-            near = open_[int(np.argmin(((open_ - np.asarray(rc)) ** 2).sum(axis=1)))]
+            near = (f"the nearest pixel it may use is "
+                    f"{_describe(prepared.chart, tuple(open_[np.argmin(((open_ - rc) ** 2).sum(1))]))}"
+                    if open_.size else "it may use no pixel of the chart")
             last = self.season.ds.isel(time=-1)
             ice = ", ".join(f"{k} {float(last[k].values[rc]):g}" for k in ("CT", "SA", "thickness")
                             if k in last)
             raise ValueError(f"{name} {_describe(prepared.chart, rc)} is in ice class {self.ice_class} "
                              f"may not enter in any chart from {self.departure} on (last chart: {ice}); "
-                             f"the nearest pixel it may use is {_describe(prepared.chart, tuple(near))}")
+                             f"{near}")
 
     def finish(self, route, per_step):
         import warnings
