@@ -64,8 +64,12 @@ class IceSeasonTime {
   template <class Cell>
   Step step(std::int64_t v, int o, double r_km, double t_h, Cell&& cell) const {
     const double* from = s_.valid_from_h;
-    std::int64_t k = std::int64_t(std::upper_bound(from, from + s_.frames, t_h) - from) - 1;
-    k = std::max<std::int64_t>(k, 0);
+    // The search relaxes a pixel's steps one after another at the same time: find its chart once.
+    if (t_h != memo_t_) {
+      memo_t_ = t_h;
+      memo_k_ = std::max<std::int64_t>(std::int64_t(std::upper_bound(from, from + s_.frames, t_h) - from) - 1, 0);
+    }
+    const std::int64_t k = memo_k_;
     Step best{t_h, t_h + duration(v, o, r_km, k, cell)};
     // Later charts can only help if they start before the best arrival so far.
     for (std::int64_t j = k + 1; j < s_.frames && from[j] < best.arrive_h; ++j) {
@@ -96,8 +100,10 @@ class IceSeasonTime {
     double sum = 0;
     for (std::size_t m = 0; m < shares.size(); ++m) sum += shares[m].fraction * double(h[cell(m)]);
     if (!(sum < inf)) return inf;
-    for (const CellShare& t : corners_[std::size_t(o)])
-      if (!(double(h[at(v, t.di, t.dj)]) < inf)) return inf;
+    for (const CellShare& t : corners_[std::size_t(o)]) {
+      const std::int64_t c = g_.wrap ? at(v, t.di, t.dj) : v + t.di * g_.cols + t.dj;
+      if (!(double(h[c]) < inf)) return inf;
+    }
     return sum * r_km;
   }
 
@@ -105,6 +111,8 @@ class IceSeasonTime {
   const std::vector<Offset>& st_;
   IceSeries s_;
   std::vector<std::vector<CellShare>> corners_;  // pixels each step meets only at a corner
+  mutable double memo_t_ = -inf;  // one functor per query (models.hpp): not shared by threads
+  mutable std::int64_t memo_k_ = 0;
 };
 
 }  // namespace seaway
