@@ -77,8 +77,12 @@ class ZonedTravelTimeModel:
                  near: npt.NDArray[np.uint8], closes_h: list[float],
                  opens_h: list[float]) -> None: ...
 
+class IceSeasonModel:
+    def __init__(self, hours_per_km: npt.NDArray[np.float32], valid_from_h: list[float],
+                 min_hours_per_km: float) -> None: ...
+
 Model = (MaxCost | MeanCost | IntegralCost | EnteredPixelCost | TravelTimeModel | FuelModel
-         | WaveDangerModel | ZonedTravelTimeModel)
+         | WaveDangerModel | IceSeasonModel | ZonedTravelTimeModel)
 
 class Router:
     def route(self, model: Model, start: int, target: int, heuristic_weight: float,

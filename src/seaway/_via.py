@@ -127,12 +127,17 @@ def route_constrained(prepared, start, end, model, method, weight, via, turn_pen
     points = [start, *via_list(via), end]
     names = ["start"] + [f"via point {i + 1}" for i in range(len(points) - 2)] + ["end"]
     located = [locate(chart, p, n) for p, n in zip(points, names)]
+    if len(located) > 2 and model.unit(chart.geographic) == "h" and not hasattr(model, "later"):
+        raise ValueError(f"via points on a {model.name!r} route need each leg to depart when the "
+                         "last one arrives, which this model cannot do yet; route the legs one by "
+                         "one with their departures")
     pixels, steps, stats, per_step = np.zeros((0, 2), np.int64), [], {}, {}
     leg_model, elapsed = model, 0.0
     for i, (s, e) in enumerate(zip(located[:-1], located[1:])):
         incoming = -1 if turns is None else incoming_offset(prepared, pixels)
         if i and hasattr(model, "later"):
             leg_model = model.later(elapsed)
+        leg_model.check_ends(prepared, s, e)
         total, path, leg_stats, cumulative, leg_steps = search_leg(prepared, s, e, weight, leg_model,
                                                                    turns, incoming)
         if not np.isfinite(total):
