@@ -135,3 +135,17 @@ def test_time_zone_errors():
     with pytest.raises(ValueError, match="turn_penalty works with the static edge costs"):
         ForecastGrid(FC).prepare().route(A, B, model=TravelTime(ForecastGrid(FC), SHIP),
                                           turn_penalty=0.1)
+
+
+def test_via_on_a_season_route_is_refused_with_the_fix():
+    """A season model cannot yet start a leg at the previous leg's arrival: via points are
+    refused (rather than every leg leaving at the departure)."""
+    from test_ice_season import DAY0, retreating_edge
+
+    from seaway.ice.season import SeasonGrid
+    from seaway.models import IceSeasonTime
+
+    grid = SeasonGrid(retreating_edge(days=2))
+    model = IceSeasonTime(grid, "Arc4", 14, departure=DAY0)
+    with pytest.raises(ValueError, match="via points on a .* route need each leg to depart"):
+        grid.prepare().route((71.0, 64.0), (76.0, 78.0), model=model, via=[(72.0, 70.0)])
