@@ -253,3 +253,18 @@ def test_cli_constraints(tmp_path):
                           "--to", "73,75", "--penalty-zone", f"{zone},0.5"], capture_output=True,
                          text=True, timeout=60)
     assert bad.returncode == 2 and "FACTOR >= 1" in bad.stderr
+
+
+def test_cost_field_with_a_buffer_and_a_zone():
+    """cost_field takes the same buffers and zones: the field of the constrained raster."""
+    u = np.ones((12, 15))
+    land = np.zeros_like(u, bool)
+    land[5:7, 6:8] = True
+    keep, zone = KeepAway(km=1.5, soft_km=3, penalty=2), Zone(box(10.5, -1, 12.5, 6.5), penalty=3)
+    got = seaway.cost_field(u, (0, 0), land=land, keep_away=[keep], zones=[zone], neighbourhood=3)
+    want = seaway.cost_field(constrain(u, land=land, keep_away=[keep], zones=[zone]), (0, 0),
+                             land=land, neighbourhood=3)
+    np.testing.assert_array_equal(got, want)
+    assert np.isinf(got[4, 6]) and np.isfinite(got[11, 14])  # within 1.5 of land; reachable
+    plain = seaway.cost_field(u, (0, 0), land=land, neighbourhood=3)
+    assert got[0, 14] > plain[0, 14]  # behind the penalty band

@@ -295,10 +295,11 @@ def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, ne
 
 
 def cost_field(cost, start, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-               directions="full", edge_cost="max"):
+               directions="full", edge_cost="max", keep_away=(), zones=()):
     """The accumulated least cost from `start` to every pixel (inf where unreachable).
 
-    Takes the same arguments as route(). A DataArray in gives a DataArray out, on the same
-    coordinates."""
+    Takes the same arguments as route() (no via points or turn penalty: a field has no single
+    path). A DataArray in gives a DataArray out, on the same coordinates."""
     return prepare(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, neighbourhood=neighbourhood,
-                   directions=directions, edge_cost=edge_cost).cost_field(start)
+                   directions=directions, edge_cost=edge_cost, keep_away=keep_away,
+                   zones=zones).cost_field(start)
