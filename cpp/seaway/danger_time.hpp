@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "router.hpp"
-#include "turns.hpp"
+#include "steps.hpp"
 #include "timed_zones.hpp"
 #include "weather.hpp"
 
