@@ -67,6 +67,7 @@ def run_route(args) -> int:
     from . import export
     from ._ends import check_ends
     from .chartfile import open_chart
+    from .depth import for_route
 
     say = Progress("route", args.quiet)
     say(f"reading {args.chart}")
@@ -79,8 +80,13 @@ def run_route(args) -> int:
     start, end = args.start, args.end
     if not ("lat" in cost.coords or "latitude" in cost.coords):
         say("the chart has projected y/x coordinates: --from and --to are ROW,COL pixel indices")
+    chart_cost = cost
+    cost, depth, shallow = for_route(args.depth, cost, draft=args.draft, ukc=args.ukc,
+                                     variable=args.depth_variable, positive=args.depth_positive,
+                                     say=say)
     start, end = check_ends(cost, data.land, data.layers, (start, end), vessel=args.vessel,
-                            snap=args.snap, say=say, neighbourhood=args.neighbourhood)
+                            snap=args.snap, say=say, neighbourhood=args.neighbourhood,
+                            reasons=shallow, chart_cost=chart_cost)
     rows, cols = cost.shape
     say(f"routing on {rows} x {cols} pixels ({data.description}; {args.method}, "
         f"{args.neighbourhood}x{args.neighbourhood} stencil, edge cost {args.edge_cost})")
@@ -94,6 +100,8 @@ def run_route(args) -> int:
             f"{r.stats['course_changes_before']} -> {r.stats['course_changes_after']}")
     r.name = args.name
     r.speed_kn = args.speed
+    if depth is not None:
+        r = r.with_environment({"depth": depth})
     if data.environment:
         r = r.with_environment(data.environment)
     print(r)
@@ -162,6 +170,21 @@ def add_commands(commands, neighbourhood_type) -> None:
                          "box around the great circle between the ends, widened by a quarter of "
                          "its length (at least 300 km), at 0.05 deg of latitude and the same km "
                          "east-west, clipped to the chart; see seaway.ice.routegrid)")
+    rp.add_argument("--depth", metavar="FILE",
+                    help="bathymetry raster (NetCDF or GeoTIFF on lat/lon; ETOPO/GEBCO elevation "
+                         "or depth positive down, told by the CF attributes): resampled onto the "
+                         "chart (the shallowest depth in each pixel); the route's least depth is "
+                         "reported")
+    rp.add_argument("--draft", type=float, metavar="M",
+                    help="the ship's draft in metres: pixels shallower than draft + UKC are "
+                         "impassable (needs --depth)")
+    rp.add_argument("--ukc", type=float, metavar="M",
+                    help="under-keel clearance in metres (default 10 %% of the draft)")
+    rp.add_argument("--depth-variable", metavar="NAME",
+                    help="the bathymetry file's variable (default: found by CF standard name)")
+    rp.add_argument("--depth-positive", choices=("up", "down"),
+                    help="override the bathymetry's sign: up = elevation (ETOPO/GEBCO), down = "
+                         "depth (default: from its CF attributes, else guessed and said so)")
     rp.add_argument("--neighbourhood", type=neighbourhood_type, default=5, metavar="K",
                     help="k of the k x k stencil: odd, 3 to 15 (default 5, as in paper 000)")
     rp.add_argument("--edge-cost", default="max", choices=tuple(EDGE_COSTS),

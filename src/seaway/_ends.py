@@ -42,11 +42,14 @@ def _value(layers, name, rc):
     return float(v)
 
 
-def describe(layers, rc, vessel, reasons=()) -> str:
-    """What makes the pixel impassable, in a navigator's words."""
+def describe(layers, rc, vessel, reasons=(), ice_blocks=True) -> str:
+    """What makes the pixel impassable, in a navigator's words. ice_blocks: whether the chart's
+    own cost forbids the pixel (else only `reasons`, e.g. too shallow, are given)."""
     from .ice.codes import stage_name
 
     parts = [f"{why}" for why in reasons]
+    if not ice_blocks and parts:
+        return "; ".join(parts)
     if layers is not None and "land" in layers and bool(np.asarray(layers["land"].values)[rc]):
         shelf = "ice_shelf" in layers and bool(np.asarray(layers["ice_shelf"].values)[rc])
         return "; ".join(["an ice shelf (SIGRID-3 POLY_TYPE S)" if shelf else "land"] + parts)
@@ -56,7 +59,7 @@ def describe(layers, rc, vessel, reasons=()) -> str:
     ice = []
     for c, s in (("CA", "SA"), ("CB", "SB"), ("CC", "SC")):
         stage, conc = _value(layers, s, rc), _value(layers, c, rc)
-        if np.isfinite(stage):
+        if np.isfinite(stage) and not conc == 0:
             share = f", {conc:g}/10" if np.isfinite(conc) else ""
             ice.append(f"{stage_name(stage)} (WMO stage {int(stage)}{share})")
     if not ice and np.isfinite(_value(layers, "stage_of_development", rc)):
@@ -77,10 +80,11 @@ def describe(layers, rc, vessel, reasons=()) -> str:
 
 
 def check_ends(cost, land, layers, ends, *, vessel=None, snap=False, say=print,
-               neighbourhood=5, reasons=None):
+               neighbourhood=5, reasons=None, chart_cost=None):
     """The ends (start, end) as (lat, lon), unchanged when passable; an impassable one raises
     ValueError naming why and the nearest usable point, or with snap=True is moved there (and
-    `say` tells). reasons(rc) -> list of extra reasons for a pixel (e.g. too shallow)."""
+    `say` tells). reasons(rc) -> list of extra reasons for a pixel (e.g. too shallow);
+    chart_cost: the cost before those were applied (tells whether the ice itself forbids it)."""
     chart = as_chart(cost, land=land)
     if not chart.geographic:
         return list(ends)
@@ -108,7 +112,9 @@ def check_ends(cost, land, layers, ends, *, vessel=None, snap=False, say=print,
             usable = np.isfinite(chart.values) & (chart.values >= 0)
             if chart.land is not None:
                 usable &= chart.land == 0
-        what = describe(layers, rc, vessel, reasons(rc) if reasons else ())
+        base = np.asarray(getattr(chart_cost, "values", chart_cost), float) if chart_cost is not None else None
+        blocks = base is None or not np.isfinite(base[rc]) or (chart.land is not None and chart.land[rc])
+        what = describe(layers, rc, vessel, reasons(rc) if reasons else (), blocks)
         here = f"{name} {p[0]:g},{p[1]:g} is on an impassable pixel ({what})"
         cand = np.argwhere(usable)
         if cand.size == 0:

@@ -40,6 +40,8 @@ def route_table(route) -> str:
                    f"{route.neighbourhood}x{route.neighbourhood} stencil)"]
     if "time_h" in s:
         lines[-1] += f"; {fmt_hours(s['time_h'])} at {s['speed_kn']:g} kn"
+    if np.isfinite(s.get("least_depth_m", np.nan)):
+        lines.append(f"least depth {s['least_depth_m']:.1f} m at {fmt_point(s['least_depth_at'], geo)}")
     env = list(route.environment)
     cols = ["leg", "from", "to", "course", "nm" if geo else "", units, "kn", "hours", "cost"]
     cols += [f"{n} mean/max" for n in env]

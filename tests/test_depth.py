@@ -1,0 +1,241 @@
+"""Issue 10 part 2: depth and draft. The real ETOPO5 file in ../shared/data/bathymetry (elevation,
+positive up; README.txt's spot values) read, resampled onto chart grids (shallowest node per
+pixel where the chart is coarser), draft + UKC made impassable, the least depth along a route,
+paper 002's f1 from the depth; bad files and units named with the fix.
+
+Independent references: the file's own values through xarray, the bottleneck depth between two
+ends by bisection on scipy.ndimage.label (the deepest water a ship can sail between them;
+4-connected, since the engine never steps across a corner of an impassable pixel)."""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import seaway
+from seaway.depth import apply_draft, depth_on_grid, least_depth, open_bathymetry
+from seaway.errors import NoRouteError
+from seaway.ice import andreeva
+from seaway.ice.grids import latlon_grid
+
+ndimage = pytest.importorskip("scipy.ndimage")
+
+
+def _shared_data():
+    for parent in Path(__file__).resolve().parents:
+        if (parent / "shared" / "data").is_dir():
+            return parent / "shared" / "data"
+    return Path("/nonexistent")
+
+
+ETOPO = _shared_data() / "bathymetry" / "etopo5_arctic_60N.nc"
+needs_etopo = pytest.mark.skipif(not ETOPO.exists(), reason="../shared/data is absent")
+OB = {"start": (74.5, 72.0), "end": (69.0, 73.5)}  # Kara Sea -> the Ob Bay (Gulf of Ob)
+
+
+@pytest.fixture(scope="module")
+def etopo():
+    return open_bathymetry(ETOPO)
+
+
+@pytest.fixture(scope="module")
+def ob_chart(etopo):
+    """Open water (cost 1) on a 0.05 x 0.16 deg grid around the Ob Bay, and its depth."""
+    g = latlon_grid(68, 76, 64, 80, (0.05, 0.16))
+    cost = xr.DataArray(np.ones(g.shape), dims=("lat", "lon"), coords={"lat": g.y, "lon": g.x})
+    return cost, depth_on_grid(etopo, cost)
+
+
+@needs_etopo
+def test_etopo_is_read_as_depth_positive_down_with_the_readme_spot_values(etopo):
+    assert "CF attribute positive = 'up'" in etopo.convention and etopo.notes == []
+    raw = xr.open_dataset(ETOPO).elevation
+    for lat, lon, metres in ((75, 70, 60), (77.9, 104, 85), (86, 0, 4064)):  # README.txt
+        assert float(raw.sel(lat=lat, lon=lon, method="nearest")) == -metres
+        z = float(etopo.depth.sel(lat=lat, lon=lon, method="nearest"))
+        assert z == metres
+    # a one-pixel chart centred on a node: linear interpolation gives the node (to the file's
+    # longitude spacing of 0.0833341 deg, not exactly 1/12)
+    assert float(depth_on_grid(etopo, lat=[75.0], lon=[70.0])[0, 0]) == pytest.approx(60, abs=0.05)
+    # 86 N 0 E sits on the file's first column: the wrap at 0/360 is seamless, -10 = 350 E
+    assert float(depth_on_grid(etopo, lat=[86.0], lon=[0.0])[0, 0]) == pytest.approx(4064, abs=0.5)
+    west = [float(depth_on_grid(etopo, lat=[86.0], lon=[x])[0, 0]) for x in (-10.0, 350.0)]
+    assert west[0] == west[1] == pytest.approx(-float(raw.sel(lat=86, lon=350, method="nearest")), abs=1)
+
+
+@needs_etopo
+def test_coarse_pixels_take_the_shallowest_node_inside(etopo):
+    g = latlon_grid(74, 76, 68, 72, 1.0)  # 1 deg pixels: 12 x ~12 ETOPO nodes in each
+    z = depth_on_grid(etopo, lat=g.y, lon=g.x)
+    raw = xr.open_dataset(ETOPO).elevation
+    for i, lat in enumerate(g.y):
+        for j, lon in enumerate(g.x):
+            box = raw.sel(lat=slice(lat - 0.5, lat + 0.5 - 1e-9), lon=slice(lon - 0.5, lon + 0.5 - 1e-9))
+            assert float(z[i, j]) == -float(box.max())  # highest elevation = shallowest depth
+    assert "shallowest" in z.attrs["resampling"]
+
+
+def _bottleneck(z, a, b):
+    """The deepest `need` for which a and b are joined by water at least `need` deep."""
+    lo, hi = 0.0, float(np.nanmax(z))
+    for _ in range(40):
+        mid = (lo + hi) / 2
+        lab, _ = ndimage.label(z >= mid)
+        lo, hi = (mid, hi) if lab[a] and lab[a] == lab[b] else (lo, mid)
+    return lo
+
+
+def _pixel(cost, p):
+    return (int(np.abs(cost.lat.values - p[0]).argmin()), int(np.abs(cost.lon.values - p[1]).argmin()))
+
+
+@needs_etopo
+def test_draft_in_the_ob_bay_shallow_draft_passes_deep_draft_refused(ob_chart):
+    cost, z = ob_chart
+    a, b = _pixel(cost, OB["start"]), _pixel(cost, OB["end"])
+    zs, ze = float(z.values[a]), float(z.values[b])
+    assert zs > 25 and 9.5 < ze < 10.5  # ETOPO5: 30 m in the Kara Sea, ~10 m in the bay
+    neck = _bottleneck(z.values, a, b)
+    assert 8.8 < neck < 9.6
+    # 8 m draft + 10 % UKC = 8.8 m: passes; its shallowest water is >= 8.8 and <= the bottleneck
+    r = seaway.route(apply_draft(cost, z, 8.0), OB["start"], OB["end"])
+    least, where = least_depth(r, z)
+    assert 8.8 <= least <= neck + 1e-9
+    assert float(z.sel(lat=where[0], lon=where[1])) == least
+    # 8.8 m + 10 % = 9.68 m: both ends are deep enough, the way between is not
+    with pytest.raises(NoRouteError):
+        seaway.route(apply_draft(cost, z, 8.8), OB["start"], OB["end"])
+    assert neck < 9.68 < min(zs, ze)
+
+
+@needs_etopo
+def test_paper_002_f1_from_the_bathymetry(ob_chart):
+    cost, z = ob_chart
+    f1 = andreeva.depth_factor(z, 12.0)
+    a = _pixel(cost, OB["start"])
+    assert float(f1[a]) == pytest.approx(1 - 12.0 / float(z[a]))
+    assert f1.name == "f1" and f1.dims == z.dims
+    assert float(f1.values[z.values <= 12].max()) == 0  # too shallow or land: V = 0
+    # with the survey correction dL (paper 002 eq. 5: 1.5 m for 500 m line spacing)
+    dl = andreeva.survey_correction(500)
+    assert float(andreeva.depth_factor(z, 12.0, dl)[a]) == pytest.approx(1 - 12.0 / (float(z[a]) - 1.5))
+
+
+def run(*args):
+    return subprocess.run([sys.executable, "-m", "seaway", *args], capture_output=True, text=True,
+                          timeout=300)
+
+
+@pytest.fixture(scope="module")
+def ob_file(tmp_path_factory, ob_chart):
+    cost, _ = ob_chart
+    path = tmp_path_factory.mktemp("ob") / "open_water.nc"
+    cost.rename("cost").to_dataset().to_netcdf(path)
+    return path
+
+
+@needs_etopo
+def test_cli_depth_draft_least_depth_and_refusals(ob_file, ob_chart):
+    cost, z = ob_chart
+    common = ["route", str(ob_file), "--from", "74.5,72", "--to", "69,73.5", "--depth", str(ETOPO)]
+    done = run(*common, "--draft", "8")
+    assert done.returncode == 0, done.stderr
+    assert "draft 8 m + UKC 0.8 m = 8.8 m needed" in done.stderr
+    assert "elevation positive up (CF attribute positive = 'up')" in done.stderr
+    line = next(s for s in done.stdout.splitlines() if s.startswith("least depth"))
+    least = float(line.split()[2])
+    neck = _bottleneck(z.values, _pixel(cost, OB["start"]), _pixel(cost, OB["end"]))
+    assert 8.8 <= least <= neck + 0.05
+    # deep draft: the end itself is too shallow; the message names the depth and the way out
+    deep = run(*common, "--draft", "12")
+    assert deep.returncode == 1 and deep.stdout == ""
+    assert "end 69,73.5 is on an impassable pixel (too shallow: depth 10.0 m < draft 12 m + UKC " \
+           "1.2 m)" in deep.stderr
+    assert "the nearest point the ship may use is" in deep.stderr
+    snapped = run(*common, "--draft", "12", "--snap")
+    assert snapped.returncode == 0, snapped.stderr
+    moved = snapped.stderr.split("moved ")[1]
+    lat, lon = (float(v) for v in moved.split(" to ")[1].split(" ")[0].split(","))
+    assert float(z.sel(lat=lat, lon=lon, method="nearest")) >= 13.2
+    # ends deep enough, the way not: no route, exit 1
+    mid = run(*common, "--draft", "8.8")
+    assert mid.returncode == 1 and "no route" in mid.stderr
+    # a draft without a bathymetry, a UKC without a draft
+    assert "--draft and --ukc need --depth FILE" in run("route", str(ob_file), "--from", "74.5,72",
+                                                         "--to", "69,73.5", "--draft", "8").stderr
+    assert "--ukc needs --draft" in run(*common, "--ukc", "1").stderr
+
+
+def _write(path, name, values, attrs, lat, lon):
+    ds = xr.Dataset({name: (("lat", "lon"), values, attrs)},
+                    coords={"lat": ("lat", lat, {"units": "degrees_north"}),
+                            "lon": ("lon", lon, {"units": "degrees_east"})})
+    ds.to_netcdf(path)
+    return path
+
+
+def test_conventions_from_cf_attributes_guesses_said_and_bad_units(tmp_path):
+    lat, lon = np.array([70.0, 71.0, 72.0]), np.array([10.0, 11.0, 12.0, 13.0])
+    depth = np.array([[5.0, 10, 20, 40], [-3, 8, 16, 30], [1, 2, 4, 8]])
+    cases = {
+        "depth_down.nc": ("deptho", depth, {"standard_name": "sea_floor_depth_below_sea_surface",
+                                            "units": "m"}, 1.0, "standard_name"),
+        "elev_up.nc": ("elevation", -depth, {"positive": "up", "units": "metres"}, 1.0, "positive"),
+        "feet.nc": ("depth", depth / 0.3048, {"positive": "down", "units": "ft"}, 1.0, "positive"),
+        "guess_z.nc": ("z", -depth, {}, 1.0, "ASSUMED elevation positive up"),
+        "guess_depth.nc": ("depth", depth, {"units": "m"}, 1.0, "ASSUMED depth positive down"),
+    }
+    for fname, (name, values, attrs, _, how) in cases.items():
+        b = open_bathymetry(_write(tmp_path / fname, name, values, attrs, lat, lon))
+        np.testing.assert_allclose(b.depth.values, depth, atol=1e-9)
+        assert how in b.convention, (fname, b.convention)
+        assert bool(b.notes) == ("ASSUMED" in how) or fname == "guess_z.nc"
+    z = open_bathymetry(tmp_path / "guess_z.nc")
+    assert any("ASSUMED elevation positive up (the ETOPO/GEBCO convention)" in n and
+               "positive='down'" in n for n in z.notes)
+    assert any("states no units: ASSUMED metres" in n for n in z.notes)
+    flipped = open_bathymetry(tmp_path / "guess_z.nc", positive="down")
+    np.testing.assert_allclose(flipped.depth.values, -depth)
+    bad = _write(tmp_path / "km.nc", "depth", depth / 1000, {"units": "km", "positive": "down"}, lat, lon)
+    with pytest.raises(ValueError, match=r"km.nc: depth is in 'km'; depths must be in metres"):
+        open_bathymetry(bad)
+    (tmp_path / "junk.nc").write_bytes(b"not a netcdf file at all")
+    with pytest.raises(ValueError, match="junk.nc"):
+        open_bathymetry(tmp_path / "junk.nc")
+    with pytest.raises(ValueError, match="none.nc: no such bathymetry file"):
+        open_bathymetry(tmp_path / "none.nc")
+    proj = xr.Dataset({"h": (("y", "x"), depth)}, coords={"y": lat, "x": lon})
+    proj.to_netcdf(tmp_path / "projected.nc")
+    with pytest.raises(ValueError, match="needs 1-D lat and lon coordinates"):
+        open_bathymetry(tmp_path / "projected.nc")
+
+
+def test_geotiff_bathymetry_guess_and_override(tmp_path):
+    rasterio = pytest.importorskip("rasterio")
+    from affine import Affine
+
+    depth = np.array([[5.0, 10, 20, 40], [-3, 8, 16, 30], [1, 2, 4, 8]], dtype="float32")
+    path = tmp_path / "gebco_like.tif"
+    with rasterio.open(path, "w", driver="GTiff", height=3, width=4, count=1, dtype="float32",
+                       crs="EPSG:4326", transform=Affine(1.0, 0.0, 9.5, 0.0, -1.0, 72.5)) as dst:
+        dst.write(-depth, 1)  # GEBCO GeoTIFF: elevation, no CF attributes
+    b = open_bathymetry(path)
+    assert "ASSUMED elevation positive up" in b.convention
+    np.testing.assert_allclose(b.depth.sel(lat=[72.0, 71.0, 70.0]).values, depth)
+    assert list(b.depth.lon.values) == [10.0, 11.0, 12.0, 13.0]
+    assert np.allclose(open_bathymetry(path, positive="down").depth.sel(lat=[72.0, 71.0, 70.0]), -depth)
+
+
+def test_draft_and_ukc_are_checked():
+    cost, z = np.ones((2, 2)), np.full((2, 2), 20.0)
+    with pytest.raises(ValueError, match="draft must be in metres"):
+        apply_draft(cost, z, -1)
+    with pytest.raises(ValueError, match="under-keel clearance"):
+        apply_draft(cost, z, 10, ukc=float("nan"))
+    with pytest.raises(ValueError, match="resample it onto the chart"):
+        apply_draft(cost, np.ones((3, 3)), 10)
+    out = apply_draft(cost, np.array([[20.0, 10.9], [11.0, np.nan]]), 10)  # need 11 m
+    assert out.tolist() == [[1.0, np.inf], [1.0, np.inf]]
