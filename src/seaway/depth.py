@@ -113,6 +113,11 @@ def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None):
             values = _binned_min(values, nodes, centres, step, axis)
             rule.append(f"{name}: shallowest of the nodes in each pixel")
         else:
+            try:
+                import scipy  # noqa: F401  (DataArray.interp)
+            except ImportError:
+                raise ImportError('interpolating the bathymetry needs scipy: pip install '
+                                  '"seaway[depth]"') from None
             da = xr.DataArray(values, dims=("a", "b"), coords={("a", "b")[axis]: nodes})
             values = da.interp({("a", "b")[axis]: centres}, method="linear").values
             rule.append(f"{name}: linear interpolation")
