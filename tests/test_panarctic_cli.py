@@ -164,3 +164,40 @@ def test_a_start_off_the_chart_polygons_is_named(charts, kara):
     assert "start 87,100 is on an impassable pixel (off the chart" in done.stderr
     (lat, lon), dist = nearest_usable(ds, usable, (87, 100))
     assert f"is {lat:.4f},{lon:.4f}, {dist:.1f} km away" in done.stderr
+
+
+def test_route_across_the_antimeridian_on_the_default_grid(charts, tmp_path):
+    import json
+
+    out = tmp_path / "r.geojson"
+    done = run("route", str(charts[0]), "--from", "68,-170", "--to", "72,165", "--vessel", "Arc7",
+               "--out", str(out), "-q")
+    assert done.returncode == 0, done.stderr
+    feature = json.loads(out.read_text())
+    geom = feature["geometry"]
+    assert geom["type"] == "MultiLineString"  # split at +-180 (RFC 7946)
+    lon = [p[0] for line in geom["coordinates"] for p in line]
+    assert min(lon) <= -170 + 0.1 and max(lon) >= 165 - 0.1  # both sides of +-180
+    gc = km((68, -170), (72, 165))
+    length = feature["properties"]["length"]
+    assert gc * 0.995 <= length <= 1.03 * gc
+    assert TABLE_2[91] == 25  # medium first-year ice everywhere outside 50-140 E
+    assert feature["properties"]["cost"] == pytest.approx(25 * length, rel=1e-6)
+
+
+def test_route_grid_choices():
+    from seaway.ice.routegrid import route_grid
+
+    g, note = route_grid((68, -170), (72, 165))  # across +-180: one box, longitudes past 180
+    assert g.x[0] < 180 < g.x[-1] and g.x[-1] - g.x[0] < 60 and "300 km" in note
+    assert np.allclose(np.diff(g.y), -0.05)
+    g, _ = route_grid((78, 20), (80, -150), chart_bounds=(-180, 60.0, 180, 88.6))
+    assert g.y[0] > 89.9 and g.x[0] == pytest.approx(-180 + (g.x[1] - g.x[0]) / 2)
+    assert g.x[-1] - g.x[0] + (g.x[1] - g.x[0]) == pytest.approx(360)  # wraps: over the pole
+    g, _ = route_grid((59.5, -44), (60.5, -48), chart_bounds=(-50, 59, -42, 61.5))
+    d = g.y[0] - g.y[1]
+    assert d == pytest.approx(0.008, rel=1e-6)  # 1/1000 of a small chart's 8 deg extent
+    # clipped to the chart (to within the pixel that rounding the edges may add)
+    assert g.y[-1] > 59 - d and g.y[0] < 61.5 + d and g.x[0] > -50 - 2 * d and g.x[-1] < -42 + 2 * d
+    with pytest.raises(ValueError, match="lie outside the chart"):
+        route_grid((10, 10), (11, 11), chart_bounds=(-50, 59, -42, 61.5))

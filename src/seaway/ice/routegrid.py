@@ -55,6 +55,8 @@ def route_grid(start, end, *, chart_bounds=None, dlat=DLAT, margin_km=None,
     north = min(lat.max() + margin / KM_PER_DEG, 90.0)
     if chart_bounds is not None:
         west_c, south_c, east_c, north_c = (float(v) for v in chart_bounds)
+        if east_c - west_c >= 359.0:  # a ring around a pole has no vertex at the pole itself
+            north_c, south_c = (90.0, south_c) if north_c > 0 else (north_c, -90.0)
         south, north = max(south, south_c), min(north, north_c)
         dlat = min(dlat, max(north_c - south_c, east_c - west_c) / 1000)
     mid = np.radians(np.clip((south + north) / 2, -85.0, 85.0))
