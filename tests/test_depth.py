@@ -239,3 +239,28 @@ def test_draft_and_ukc_are_checked():
         apply_draft(cost, np.ones((3, 3)), 10)
     out = apply_draft(cost, np.array([[20.0, 10.9], [11.0, np.nan]]), 10)  # need 11 m
     assert out.tolist() == [[1.0, np.inf], [1.0, np.inf]]
+
+
+@needs_etopo
+def test_paper_002_time_route_with_f1_from_depth_keeps_out_of_shallows(ob_chart):
+    """V = F V0 with F = f1(depth) (open water: f2 = f3 = 1): the fastest route's time is the
+    sum of step lengths over F V0, it never enters water shallower than the draft, and a draft
+    above the Ob Bay's bottleneck depth finds no route (f1 = 0 there means V = 0)."""
+    cost, z = ob_chart
+    a, b = _pixel(cost, OB["start"]), _pixel(cost, OB["end"])
+    neck = _bottleneck(z.values, a, b)
+    F = andreeva.depth_factor(z, 7.0)
+    found = andreeva.pareto_routes(F, OB["start"], OB["end"], v0_kn=12, thresholds=[1e-9])
+    r = found[0].route
+    assert found[0].safety == pytest.approx(float(F.values[r.pixels[:, 0], r.pixels[:, 1]].min()))
+    assert float(z.values[r.pixels[:, 0], r.pixels[:, 1]].min()) > 7.0
+    # the time is the engine's max-rule sum: each step's length / (min F of its two ends * V0)
+    lat, lon = cost.lat.values[r.pixels[:, 0]], cost.lon.values[r.pixels[:, 1]]
+    geod = pytest.importorskip("pyproj").Geod(a=6371008.8, b=6371008.8)
+    km = geod.inv(lon[:-1], lat[:-1], lon[1:], lat[1:])[2] / 1000
+    f = F.values[r.pixels[:, 0], r.pixels[:, 1]]
+    hours = np.sum(km / (np.minimum(f[:-1], f[1:]) * 12 * 1.852))
+    assert found[0].time == pytest.approx(hours, rel=1e-9)
+    with pytest.raises(NoRouteError):
+        andreeva.pareto_routes(andreeva.depth_factor(z, neck + 0.05), OB["start"], OB["end"],
+                               v0_kn=12, thresholds=[1e-9])

@@ -135,7 +135,7 @@ def test_an_end_on_land_or_in_forbidden_ice_is_named_with_the_nearest_usable_poi
     assert float(m.group(3)) == pytest.approx(dist, abs=0.05)
     assert "--snap" in done.stderr
     # --snap: the same point, said on stderr, and the route ends there.
-    snapped = run(*args, "--snap")
+    snapped = run(*args, "--snap", "-q")  # a snap is said even with --quiet
     assert snapped.returncode == 0, snapped.stderr
     m = re.search(r"moved ([\d.]+) km to ([-\d.]+),([-\d.]+) \(--snap\)", snapped.stderr)
     assert m and words[0] in snapped.stderr

@@ -63,6 +63,11 @@ class Progress:
                   file=sys.stderr, flush=True)
 
 
+def _tell(message: str) -> None:
+    """What changed the voyage (a snapped end): on stderr even with --quiet."""
+    print(f"seaway route: {message}", file=sys.stderr, flush=True)
+
+
 def run_route(args) -> int:
     from . import export
     from ._ends import check_ends
@@ -85,7 +90,7 @@ def run_route(args) -> int:
                                      variable=args.depth_variable, positive=args.depth_positive,
                                      say=say)
     start, end = check_ends(cost, data.land, data.layers, (start, end), vessel=args.vessel,
-                            snap=args.snap, say=say, neighbourhood=args.neighbourhood,
+                            snap=args.snap, say=_tell, neighbourhood=args.neighbourhood,
                             reasons=shallow, chart_cost=chart_cost)
     rows, cols = cost.shape
     say(f"routing on {rows} x {cols} pixels ({data.description}; {args.method}, "
