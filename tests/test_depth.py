@@ -141,8 +141,17 @@ def ob_file(tmp_path_factory, ob_chart):
 def test_cli_depth_draft_least_depth_and_refusals(ob_file, ob_chart):
     cost, z = ob_chart
     common = ["route", str(ob_file), "--from", "74.5,72", "--to", "69,73.5", "--depth", str(ETOPO)]
-    done = run(*common, "--draft", "8")
+    outs = [ob_file.parent / "ob.geojson", ob_file.parent / "ob.csv"]
+    done = run(*common, "--draft", "8", "--out", str(outs[0]), "--out", str(outs[1]))
     assert done.returncode == 0, done.stderr
+    import json
+    props = json.loads(outs[0].read_text())["properties"]
+    lat, lon = props["least_depth_at"]
+    assert props["least_depth_m"] == pytest.approx(float(z.sel(lat=lat, lon=lon)), abs=1e-9)
+    header = outs[1].read_text().splitlines()[0].split(",")
+    assert header[-2:] == ["depth_mean", "depth_min"]  # the least depth of each leg
+    legs = [line.split(",") for line in outs[1].read_text().splitlines()[2:]]
+    assert min(float(r[-1]) for r in legs) == pytest.approx(props["least_depth_m"], abs=0.05)
     assert "draft 8 m + UKC 0.8 m = 8.8 m needed" in done.stderr
     assert "elevation positive up (CF attribute positive = 'up')" in done.stderr
     line = next(s for s in done.stdout.splitlines() if s.startswith("least depth"))
@@ -205,6 +214,9 @@ def test_conventions_from_cf_attributes_guesses_said_and_bad_units(tmp_path):
     (tmp_path / "junk.nc").write_bytes(b"not a netcdf file at all")
     with pytest.raises(ValueError, match="junk.nc"):
         open_bathymetry(tmp_path / "junk.nc")
+    far = open_bathymetry(_write(tmp_path / "far.nc", "depth", depth, {"positive": "down"}, lat, lon))
+    with pytest.raises(ValueError, match="does not cover the chart"):
+        depth_on_grid(far, lat=[50.0, 50.5], lon=[10.0, 11.0])
     with pytest.raises(ValueError, match="none.nc: no such bathymetry file"):
         open_bathymetry(tmp_path / "none.nc")
     proj = xr.Dataset({"h": (("y", "x"), depth)}, coords={"y": lat, "x": lon})

@@ -33,13 +33,25 @@ _UNITS = {"m": 1.0, "meter": 1.0, "meters": 1.0, "metre": 1.0, "metres": 1.0, "1
 
 @dataclass
 class Bathymetry:
-    """depth: DataArray (lat ascending, lon ascending), metres, positive down, NaN unknown;
-    convention: how the file's sign and units were read; notes: the assumptions made."""
+    """raw: the file's variable as (lat, lon), both ascending, still lazy (a GEBCO or ETOPO
+    global grid is read only where a chart needs it); factor: metres of depth (positive down)
+    per raw unit (-1 for elevation in m); convention: how sign and units were told; notes: the
+    assumptions made."""
 
-    depth: object
+    raw: object
+    factor: float
     path: str
     convention: str
     notes: list = field(default_factory=list)
+
+    @property
+    def depth(self):
+        """The whole raster as depth in m, positive down (loads it)."""
+        out = self.raw.astype(np.float64) * self.factor
+        out.name = "depth"
+        out.attrs = {"long_name": "water depth", "units": "m", "positive": "down",
+                     "source": self.path}
+        return out
 
 
 def _pick_variable(path, ds, variable):
@@ -147,16 +159,14 @@ def open_bathymetry(path, *, variable=None, positive=None) -> Bathymetry:
         notes.append(f"{path}: {name} read as {'depth' if sign > 0 else 'elevation'}: {how}; "
                      f"pass positive={'up' if sign > 0 else 'down'!r} (--depth-positive) if it "
                      "holds the opposite")
-    depth = (da.astype(np.float64) * (sign * scale)).transpose(lat, lon)
-    depth = depth.rename({lat: "lat", lon: "lon"}).sortby("lat").sortby("lon")
-    values = depth.values
-    if np.isfinite(values).sum() == 0:
-        raise ValueError(f"{path}: {name} holds no finite value")
-    depth.name = "depth"
-    depth.attrs = {"long_name": "water depth", "units": "m", "positive": "down", "source": path}
+    raw = da.transpose(lat, lon).rename({lat: "lat", lon: "lon"})
+    for dim in ("lat", "lon"):
+        values = raw[dim].values
+        if values.size > 1 and not np.all(np.diff(values) > 0):
+            raw = raw.sortby(dim)
     convention = (f"{name} in {da.attrs.get('units', 'm (assumed)')}, "
                   f"{'depth positive down' if sign > 0 else 'elevation positive up'} ({how})")
-    return Bathymetry(depth, path, convention, notes)
+    return Bathymetry(raw, float(sign * scale), path, convention, notes)
 
 
 def _geotiff(path):

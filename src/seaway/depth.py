@@ -80,7 +80,10 @@ def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None):
 
     from ._chart import _from_dataarray
 
-    depth = bathymetry.depth if isinstance(bathymetry, Bathymetry) else bathymetry
+    if isinstance(bathymetry, Bathymetry):
+        depth, factor, source = bathymetry.raw, bathymetry.factor, bathymetry.path
+    else:  # a DataArray of depth (m, positive down) on lat/lon, ascending
+        depth, factor, source = bathymetry, 1.0, "given"
     if like is not None:
         _, coords, _ = _from_dataarray(like)
         if "lat" not in coords:
@@ -101,10 +104,12 @@ def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None):
     half_la = (dla or cell_la) / 2
     d = d.sel(lat=slice(la[0] - half_la - 2 * cell_la, la[-1] + half_la + 2 * cell_la))
     if d.sizes["lat"] < 2 or d.sizes["lon"] < 2:
-        raise ValueError(f"the bathymetry ({bathymetry.path if isinstance(bathymetry, Bathymetry) else 'given'}"
-                         f", lat {float(depth.lat[0]):g}..{float(depth.lat[-1]):g}) does not cover "
+        raise ValueError(f"the bathymetry ({source}, lat {float(depth.lat[0]):g}..{float(depth.lat[-1]):g}) does not cover "
                          f"the chart (lat {la[0]:g}..{la[-1]:g}, lon {lo[0]:g}..{lo[-1]:g})")
-    values = d.values
+    values = np.asarray(d.values, dtype=np.float64) * factor  # reads only this window
+    if not np.isfinite(values).any():
+        raise ValueError(f"the bathymetry ({source}) has no data over the chart (lat {la[0]:g}.."
+                         f"{la[-1]:g}, lon {lo[0]:g}..{lo[-1]:g}): all missing")
     rule = []
     for axis, (name, centres, step, cell) in enumerate((("lat", la, dla, cell_la),
                                                          ("lon", lo, dlo, cell_lo))):

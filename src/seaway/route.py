@@ -15,6 +15,15 @@ from ._segments import index_coords
 from .models import CostModel, EdgeCost
 
 
+#: Environment variables whose least value along a leg matters (reported instead of the most).
+LEAST = frozenset({"depth"})
+
+
+def extreme_name(name: str) -> str:
+    """'min' for variables in LEAST (depth), else 'max': the second number of a leg's pair."""
+    return "min" if name in LEAST else "max"
+
+
 @dataclass
 class Leg:
     """One leg between consecutive waypoints. Course: initial great-circle course, degrees true
@@ -29,7 +38,7 @@ class Leg:
     speed_kn: float | None
     time_h: float | None
     cost: float
-    environment: dict  # name -> (mean, max) of the chart variable along the leg
+    environment: dict  # name -> (mean, max) of the chart variable along the leg ((mean, min) for LEAST)
 
 
 @dataclass
@@ -185,7 +194,8 @@ class Route:
             cols = p[:, 1] % arr.shape[1]
             vals = np.asarray(arr, float)[np.clip(p[:, 0], 0, arr.shape[0] - 1), cols]
             vals = vals[np.isfinite(vals)]
-            out[name] = (float(vals.mean()), float(vals.max())) if vals.size else (np.nan, np.nan)
+            top = vals.min() if name in LEAST else vals.max()
+            out[name] = (float(vals.mean()), float(top)) if vals.size else (np.nan, np.nan)
         return out
 
     def with_environment(self, data, names=None) -> Route:
@@ -218,7 +228,8 @@ class Route:
                 out.update(speed_kn=float(speed), time_h=out["length_nm"] / speed)
         for name in self.environment:
             vals = [leg.environment[name][1] for leg in legs]
-            out[f"max_{name}"] = float(np.nanmax(vals)) if vals else np.nan
+            if name not in LEAST:
+                out[f"max_{name}"] = float(np.nanmax(vals)) if vals else np.nan
         if "depth" in self.environment:  # for depth the least matters (seaway.depth)
             from .depth import least_depth
             out["least_depth_m"], out["least_depth_at"] = least_depth(self, self.environment["depth"])
