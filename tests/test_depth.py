@@ -176,6 +176,11 @@ def test_cli_depth_draft_least_depth_and_refusals(ob_file, ob_chart):
     assert "--draft and --ukc need --depth FILE" in run("route", str(ob_file), "--from", "74.5,72",
                                                          "--to", "69,73.5", "--draft", "8").stderr
     assert "--ukc needs --draft" in run(*common, "--ukc", "1").stderr
+    junk = ob_file.parent / "junk.nc"
+    junk.write_bytes(b"\x89HDF\r\n\x1a\n truncated")
+    bad = run("route", str(ob_file), "--from", "74.5,72", "--to", "69,73.5", "--depth", str(junk),
+              "--draft", "8")
+    assert bad.returncode == 1 and "junk.nc" in bad.stderr and "Traceback" not in bad.stderr
 
 
 def _write(path, name, values, attrs, lat, lon):
@@ -276,3 +281,28 @@ def test_paper_002_time_route_with_f1_from_depth_keeps_out_of_shallows(ob_chart)
     with pytest.raises(NoRouteError):
         andreeva.pareto_routes(andreeva.depth_factor(z, neck + 0.05), OB["start"], OB["end"],
                                v0_kn=12, thresholds=[1e-9])
+
+
+@needs_etopo
+def test_depth_on_a_polar_stereographic_grid_is_the_shallowest_node_in_each_pixel(etopo):
+    pyproj = pytest.importorskip("pyproj")
+    shapely = pytest.importorskip("shapely")
+    from seaway.ice.grids import projected_grid
+
+    x0, y0 = (v / 1000 for v in pyproj.Transformer.from_crs(4326, 3413, always_xy=True).transform(70, 75))
+    x0, y0 = round(x0 / 20) * 20, round(y0 / 20) * 20
+    g = projected_grid("EPSG:3413", x0 - 100, x0 + 100, y0 - 100, y0 + 100, 20)  # 10 x 10, 20 km
+    like = xr.DataArray(np.ones(g.shape), dims=g.dims(), coords=g.coords(), attrs={"crs": g.crs})
+    z = depth_on_grid(etopo, like)
+    assert z.dims == ("y", "x") and "shallowest" in z.attrs["resampling"]
+    raw = xr.open_dataset(ETOPO).elevation.sel(lat=slice(71, 79), lon=slice(55, 85))
+    lon, lat = np.meshgrid(raw.lon.values, raw.lat.values)
+    nx, ny = pyproj.Transformer.from_crs(4326, 3413, always_xy=True).transform(lon, lat)
+    for i, yc in enumerate(g.y):
+        for j, xc in enumerate(g.x):
+            box = shapely.box((xc - 10) * 1000, (yc - 10) * 1000, (xc + 10) * 1000, (yc + 10) * 1000)
+            inside = shapely.contains_xy(box, nx, ny)  # nodes on a pixel's edge are not used
+            assert inside.sum() >= 4
+            assert float(z[i, j]) == -float(raw.values[inside].max())
+    with pytest.raises(ValueError, match="no CRS"):
+        depth_on_grid(etopo, like.assign_attrs(crs=None))

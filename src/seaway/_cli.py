@@ -88,7 +88,7 @@ def run_route(args) -> int:
     chart_cost = cost
     cost, depth, shallow = for_route(args.depth, cost, draft=args.draft, ukc=args.ukc,
                                      variable=args.depth_variable, positive=args.depth_positive,
-                                     say=say)
+                                     say=say, crs=getattr(data.layers, "attrs", {}).get("crs"))
     start, end = check_ends(cost, data.land, data.layers, (start, end), vessel=args.vessel,
                             snap=args.snap, say=_tell, neighbourhood=args.neighbourhood,
                             reasons=shallow, chart_cost=chart_cost)

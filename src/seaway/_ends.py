@@ -59,7 +59,7 @@ def describe(layers, rc, vessel, reasons=(), ice_blocks=True) -> str:
     ice = []
     for c, s in (("CA", "SA"), ("CB", "SB"), ("CC", "SC")):
         stage, conc = _value(layers, s, rc), _value(layers, c, rc)
-        if np.isfinite(stage) and not conc == 0:
+        if np.isfinite(stage) and conc != 0:
             share = f", {conc:g}/10" if np.isfinite(conc) else ""
             ice.append(f"{stage_name(stage)} (WMO stage {int(stage)}{share})")
     if not ice and np.isfinite(_value(layers, "stage_of_development", rc)):

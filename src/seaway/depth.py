@@ -12,7 +12,8 @@ sizes that are not whole multiples of the cell), so a shoal narrower than a pixe
 averaged away; where the pixels are smaller, the depth is linearly interpolated at the pixel
 centres (`DataArray.interp`). A pixel with any unknown node, or beyond the data, is NaN
 (unknown), and with a draft NaN is impassable: nothing unknown becomes deep water. Depth <= 0
-(land in the bathymetry) is impassable for every draft.
+(land in the bathymetry) is impassable for every draft. Projected charts (y/x, e.g. EPSG:3413
+grids of seaway.ice.grids): every node is projected and binned exactly (seaway._depth_projected).
 
 Draft (`apply_draft`): a pixel is passable when depth >= draft + UKC. The default UKC is 10 %
 of the draft (an allowance for squat and the bottom's uncertainty in sheltered water; give
@@ -72,10 +73,12 @@ def _lon_window(depth, west, east):
     return xr.concat(parts, dim="lon") if len(parts) > 1 else parts[0]
 
 
-def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None):
-    """Depth (m, positive down) on a chart's lat/lon grid: `like` a DataArray with lat/lon
-    coordinates (e.g. the cost), or 1-D `lat` and `lon` pixel centres. Shallowest node per
-    pixel where the chart is coarser, linear interpolation where it is finer (module doc)."""
+def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None, crs=None):
+    """Depth (m, positive down) on a chart's grid: `like` a DataArray with lat/lon coordinates
+    (e.g. the cost), or 1-D `lat` and `lon` pixel centres. Shallowest node per pixel where the
+    chart is coarser, linear interpolation where it is finer (module doc). A `like` with y/x
+    coordinates (km or m, by their units attribute; km if none) is a projected grid in `crs`
+    (default like.attrs['crs']; seaway.ice.grids projected grids): seaway._depth_projected."""
     import xarray as xr
 
     from ._chart import _from_dataarray
@@ -85,11 +88,11 @@ def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None):
     else:  # a DataArray of depth (m, positive down) on lat/lon, ascending
         depth, factor, source = bathymetry, 1.0, "given"
     if like is not None:
-        _, coords, _ = _from_dataarray(like)
+        _, coords, turned = _from_dataarray(like)
+        if "y" in coords:
+            return _on_projected(depth, factor, turned, coords, crs or like.attrs.get("crs"))
         if "lat" not in coords:
-            raise ValueError("depth needs a chart on a lat/lon grid (this one has y/x): rasterise "
-                             "the chart onto lat/lon (e.g. --grid), or give depth already on the "
-                             "chart's grid")
+            raise ValueError("depth needs the chart's lat/lon or y/x coordinates")
         lat, lon = coords["lat"], coords["lon"]
     lat, lon = np.asarray(lat, float), np.asarray(lon, float)
     if lon.size > 1 and np.any(np.abs(np.diff(lon)) > 180):
@@ -135,6 +138,22 @@ def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None):
         out = out.rename({"lat": _dim(like, "lat"), "lon": _dim(like, "lon")})
     out.attrs = {"long_name": "water depth (shallowest in the pixel)", "units": "m",
                  "positive": "down", "resampling": "; ".join(rule)}
+    return out
+
+
+def _on_projected(depth, factor, like, coords, crs):
+    from ._depth_projected import projected_depth
+
+    if not crs:
+        raise ValueError("the chart has projected y/x coordinates but no CRS: pass crs= (e.g. "
+                         "'EPSG:3413'), or set the chart's attribute 'crs'")
+    ydim, xdim = like.dims
+    units = like.coords[ydim].attrs.get("units", "km")
+    values, rule = projected_depth(depth, factor, coords["y"], coords["x"], crs, units)
+    out = like.copy(data=values)
+    out.name = "depth"
+    out.attrs = {"long_name": "water depth (shallowest in the pixel)", "units": "m",
+                 "positive": "down", "resampling": rule, "crs": str(crs)}
     return out
 
 
@@ -208,7 +227,8 @@ def least_depth(route, depth):
     return float(vals[i]), (float(where[0]), float(where[1]))
 
 
-def for_route(path, cost, *, draft=None, ukc=None, variable=None, positive=None, say=print):
+def for_route(path, cost, *, draft=None, ukc=None, variable=None, positive=None, say=print,
+              crs=None):
     """What the command line does with --depth/--draft/--ukc: (cost, depth on the cost's grid,
     reasons(rc) for an end that is too shallow). Without a draft the depth is only reported."""
     if path is None:
@@ -220,7 +240,7 @@ def for_route(path, cost, *, draft=None, ukc=None, variable=None, positive=None,
     say(f"depth from {path}: {bathy.convention}")
     for note in bathy.notes:
         say(note)
-    depth = depth_on_grid(bathy, cost)
+    depth = depth_on_grid(bathy, cost, crs=crs)
     say(f"depth resampled onto the chart ({depth.attrs['resampling']})")
     if draft is None:
         if ukc is not None:
