@@ -85,7 +85,8 @@ def _bottleneck(z, a, b):
         mid = (lo + hi) / 2
         lab, _ = ndimage.label(z >= mid)
         lo, hi = (mid, hi) if lab[a] and lab[a] == lab[b] else (lo, mid)
-    return lo
+    levels = np.unique(z[np.isfinite(z)])
+    return float(levels[levels >= lo].min())  # the exact depth the bisection closed in on
 
 
 def _pixel(cost, p):
@@ -100,6 +101,8 @@ def test_draft_in_the_ob_bay_shallow_draft_passes_deep_draft_refused(ob_chart):
     assert zs > 25 and 9.5 < ze < 10.5  # ETOPO5: 30 m in the Kara Sea, ~10 m in the bay
     neck = _bottleneck(z.values, a, b)
     assert 8.8 < neck < 9.6
+    from seaway.depth import deepest_way
+    assert deepest_way(cost, None, z, OB["start"], OB["end"]) == neck
     # 8 m draft + 10 % UKC = 8.8 m: passes; its shallowest water is >= 8.8 and <= the bottleneck
     r = seaway.route(apply_draft(cost, z, 8.0), OB["start"], OB["end"])
     least, where = least_depth(r, z)
@@ -172,6 +175,11 @@ def test_cli_depth_draft_least_depth_and_refusals(ob_file, ob_chart):
     # ends deep enough, the way not: no route, exit 1
     mid = run(*common, "--draft", "8.8")
     assert mid.returncode == 1 and "no route" in mid.stderr
+    assert (f"the deepest water joining the ends is {neck:.1f} m, less than draft 8.8 m + UKC "
+            f"0.88 m = 9.68 m: a draft of at most {np.floor(neck / 1.1 * 10 + 1e-6) / 10:.1f} m (with the "
+            "default UKC of 10 %) gets through") in mid.stderr
+    assert f"at most {np.floor((neck - 0.5) * 10 + 1e-6) / 10:.1f} m (with this UKC)" in run(
+        *common, "--draft", "9.5", "--ukc", "0.5").stderr
     # a draft without a bathymetry, a UKC without a draft
     assert "--draft and --ukc need --depth FILE" in run("route", str(ob_file), "--from", "74.5,72",
                                                          "--to", "69,73.5", "--draft", "8").stderr

@@ -72,7 +72,8 @@ def run_route(args) -> int:
     from . import export
     from ._ends import check_ends
     from .chartfile import open_chart
-    from .depth import for_route
+    from .depth import for_route, why_no_route
+    from .errors import NoRouteError
 
     say = Progress("route", args.quiet)
     say(f"reading {args.chart}")
@@ -95,8 +96,14 @@ def run_route(args) -> int:
     rows, cols = cost.shape
     say(f"routing on {rows} x {cols} pixels ({data.description}; {args.method}, "
         f"{args.neighbourhood}x{args.neighbourhood} stencil, edge cost {args.edge_cost})")
-    r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
-              edge_cost=args.edge_cost, method=args.method)
+    try:
+        r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
+                  edge_cost=args.edge_cost, method=args.method)
+    except NoRouteError as exc:
+        if shallow is None:
+            raise
+        why = why_no_route(chart_cost, data.land, depth, start, end, args.draft, args.ukc)
+        raise NoRouteError(f"{exc}; {why}") from None
     say(f"found: cost {r.cost:.6g}, {len(r.pixels)} pixels, {r.stats['settled']} settled")
     if not args.no_smooth:
         say(f"smoothing {r.course_changes} course changes")

@@ -255,3 +255,48 @@ def for_route(path, cost, *, draft=None, ukc=None, variable=None, positive=None,
     say(f"draft {draft:g} m + UKC {ukc:g} m = {draft + ukc:g} m needed: {shallow} water pixels "
         f"too shallow, {int(np.isnan(z).sum())} without depth (impassable)")
     return out, depth, lambda rc: too_shallow(depth, rc, draft, ukc)
+
+
+def deepest_way(cost, land, depth, start, end):
+    """The deepest water a ship can sail from start to end through the pixels `cost` lets it
+    enter: the largest d such that pixels with depth >= d join the two ends (4-connected: the
+    engine never steps across a corner of an impassable pixel, so this is exactly the set its
+    routes can use), or None when the chart's cost alone keeps them apart. Bisection over the
+    chart's depths with scipy.ndimage.label."""
+    from scipy import ndimage
+
+    from ._chart import as_chart
+    from ._engine import locate
+
+    chart = as_chart(cost, land=land)
+    a, b = locate(chart, start, "start"), locate(chart, end, "end")
+    ok = np.isfinite(chart.values) & (chart.values >= 0)
+    if chart.land is not None:
+        ok &= chart.land == 0
+    z = np.where(ok, np.asarray(getattr(depth, "values", depth), dtype=float), np.nan)
+
+    def joined(d):
+        lab, _ = ndimage.label(z >= d)
+        return lab[a] > 0 and lab[a] == lab[b]
+
+    levels = np.unique(z[np.isfinite(z)])
+    if levels.size == 0 or not joined(levels[0]):
+        return None
+    lo, hi = 0, levels.size - 1  # joined(levels[lo]) holds
+    while lo < hi:
+        mid = (lo + hi + 1) // 2
+        lo, hi = (mid, hi) if joined(levels[mid]) else (lo, mid - 1)
+    return float(levels[lo])
+
+
+def why_no_route(cost, land, depth, start, end, draft, ukc=None) -> str:
+    """A sentence for a no-route error with a draft: how deep the deepest way is."""
+    given = ukc is not None
+    draft, ukc = check_draft(draft, ukc)
+    d = deepest_way(cost, land, depth, start, end)
+    if d is None:
+        return "the ice or land alone keeps the ends apart, whatever the draft"
+    most = max(d - ukc, 0.0) if given else d / (1 + DEFAULT_UKC_SHARE)
+    return (f"the deepest water joining the ends is {d:.1f} m, less than draft {draft:g} m + UKC "
+            f"{ukc:g} m = {draft + ukc:g} m: a draft of at most {np.floor(most * 10 + 1e-6) / 10:.1f} m "
+            f"({'with this UKC' if given else 'with the default UKC of 10 %'}) gets through")
