@@ -102,7 +102,7 @@ def test_draft_in_the_ob_bay_shallow_draft_passes_deep_draft_refused(ob_chart):
     neck = _bottleneck(z.values, a, b)
     assert 8.8 < neck < 9.6
     from seaway.depth import deepest_way
-    assert deepest_way(cost, None, z, OB["start"], OB["end"]) == neck
+    assert deepest_way(cost, None, z, OB["start"], OB["end"]) == pytest.approx(neck, abs=1e-6)
     # 8 m draft + 10 % UKC = 8.8 m: passes; its shallowest water is >= 8.8 and <= the bottleneck
     r = seaway.route(apply_draft(cost, z, 8.0), OB["start"], OB["end"])
     least, where = least_depth(r, z)
