@@ -72,7 +72,7 @@ def run_route(args) -> int:
     from . import export
     from ._ends import check_ends
     from .chartfile import open_chart
-    from .depth import for_route, why_no_route
+    from ._depth_cli import for_route, why_no_route
     from .errors import NoRouteError
 
     say = Progress("route", args.quiet)
