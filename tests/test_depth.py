@@ -314,3 +314,19 @@ def test_depth_on_a_polar_stereographic_grid_is_the_shallowest_node_in_each_pixe
             assert float(z[i, j]) == -float(raw.values[inside].max())
     with pytest.raises(ValueError, match="no CRS"):
         depth_on_grid(etopo, like.assign_attrs(crs=None))
+
+
+def test_least_depth_of_a_route_across_the_seam_of_a_360_degree_chart():
+    """A route from 175 E to 175 W on a chart wrapping at +-180 crosses the seam in one step;
+    the pixels sampled along it stay by the seam (they once swept the whole row)."""
+    lat, lon = np.arange(79.5, 59.0, -1.0), np.arange(-179.5, 180.0, 1.0)
+    cost = xr.DataArray(np.ones((lat.size, lon.size)), dims=("lat", "lon"),
+                        coords={"lat": lat, "lon": lon})
+    z = cost.copy(data=np.where(np.abs(lon) > 170, 100.0, 1.0)[None, :].repeat(lat.size, 0))
+    for r in (seaway.route(cost, (70.5, 175.5), (70.5, -175.5)),):
+        for route in (r, r.smoothed()):
+            assert route.length < 400  # across the seam, not round the world
+            least, where = least_depth(route, z)
+            assert least == 100.0 and abs(where[1]) > 170
+            cols = route.sample_pixels()[:, 1] % lon.size
+            assert np.all(np.abs(lon[cols]) > 170)

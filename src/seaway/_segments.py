@@ -160,7 +160,11 @@ def leg_path(chart, p, q, straight: bool) -> np.ndarray:
     lon = geo.unwrap_lon(np.concatenate([[lon1], lon]))[1:]
     lon += lon1 - lon[0]
     path = np.column_stack([(lat - g.lat0) / g.dlat, (lon - g.lon0) / g.dlon])
-    path[0], path[-1] = p, q
+    last = q.copy()
+    if g.wrap:  # a leg across the seam of a 360-degree chart ends at q's column + a whole turn
+        cols = chart.shape[1]
+        last[1] += cols * np.round((path[-1, 1] - q[1]) / cols)
+    path[0], path[-1] = p, last
     return path
 
 
