@@ -70,9 +70,9 @@ def _tell(message: str) -> None:
 
 def run_route(args) -> int:
     from . import export
+    from ._depth_cli import for_route, why_no_route
     from ._ends import check_ends
     from .chartfile import open_chart
-    from ._depth_cli import for_route, why_no_route
     from .errors import NoRouteError
 
     say = Progress("route", args.quiet)
@@ -112,10 +112,10 @@ def run_route(args) -> int:
             f"{r.stats['course_changes_before']} -> {r.stats['course_changes_after']}")
     r.name = args.name
     r.speed_kn = args.speed
-    if depth is not None:
-        r = r.with_environment({"depth": depth})
     if data.environment:
         r = r.with_environment(data.environment)
+    if depth is not None:  # --depth, over a chart's own depth variable
+        r = r.with_environment({"depth": depth})
     print(r)
     for path in args.out or []:
         fmt = export.write(r, path)
