@@ -12,11 +12,10 @@ namespace seaway {
 
 enum class EdgeCost { max, mean, integral, entered };
 
-// Set from Python (e.g. on Ctrl-C) to stop a running search: it throws Cancelled.
-struct CancelToken {
-  std::atomic<bool> flag{false};
-};
-inline const std::atomic<bool>* flag_of(const CancelToken* t) { return t ? &t->flag : nullptr; }
+// Set from Python (e.g. on Ctrl-C) to stop a running search (it throws Cancelled); it also
+// reports the pixels settled so far (progress).
+using CancelToken = SearchControl;
+inline const SearchControl* flag_of(const CancelToken* t) { return t; }
 
 // A prepared chart with its static cost model. The raster is read in place:
 // seaway.PreparedChart keeps the arrays alive beside the router.

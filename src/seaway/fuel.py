@@ -18,6 +18,7 @@ import numpy as np
 from . import _core
 from ._engine import _describe, _heuristic_weight, locate
 from ._interrupt import interruptible
+from ._validate import number
 from .errors import NoRouteError
 from .route import Route
 from .weather import Vessel, _ForecastChart, _vessel_dict, best_extra_kn
@@ -53,8 +54,8 @@ def route_fuel(forecast, start, end, *, vessel: Vessel, fuel: FuelCurve, time_va
     """The route and settings minimising fuel + time_value x hours. Route.cost is that sum;
     stats hold fuel_t, hours and speeds_kn (the setting of each step)."""
     vessel.check()
-    if not (np.isfinite(time_value_t_per_h) and time_value_t_per_h >= 0):
-        raise ValueError(f"time_value_t_per_h must be >= 0, got {time_value_t_per_h!r}")
+    number(time_value_t_per_h, "time_value_t_per_h", minimum=0, what="a number >= 0")
+    number(at_hours, "at_hours")
     w = _heuristic_weight(method, None)
     fc = _ForecastChart(forecast, variables, land, neighbourhood, None)
     frame = {role: fc.frame(role, at_hours) for role in WEATHER_ROLES if role in fc.arrays}

@@ -31,6 +31,7 @@ from . import _core
 from ._chart import as_chart
 from ._engine import PreparedChart, _check_options, _describe, _heuristic_weight, locate
 from ._interrupt import interruptible
+from ._validate import number
 from .errors import NoRouteError
 from .forecast import STANDARD_NAMES, find_fields
 from .route import Route
@@ -67,8 +68,12 @@ class Vessel:
                           f"{2.25 * np.sqrt(self.length_m / 100):.2f} m; the forecast has {max_hs_m:.2f} m")
 
     def check(self):
-        if not (np.isfinite(self.speed_kn) and self.speed_kn > 0):
-            raise ValueError(f"speed_kn must be positive, got {self.speed_kn!r}")
+        number(self.speed_kn, "speed_kn", above=0, what="positive", example=12.0)
+        for name in ("displacement_t", "max_wind_ms", "max_wave_m"):
+            number(getattr(self, name), name, above=0)
+        for name in ("danger_wind_ms", "beam_m", "length_m", "calm_resistance_kn"):
+            if getattr(self, name) is not None:
+                number(getattr(self, name), name, above=0)
         if self.speed_loss not in ("khokhlov", "stawave1", "none"):
             raise ValueError(f"speed_loss must be 'khokhlov', 'stawave1' or 'none', got {self.speed_loss!r}")
         if self.speed_loss == "stawave1":
@@ -213,8 +218,9 @@ def route_safest(forecast, start, end, *, ship_length_m, speed_kn, at_hours=0.0,
     seaway._core.wave_danger and cpp/seaway/waves.hpp), on the forecast frame valid nearest
     `at_hours` after its first time. Needs wave height, direction and period fields; cost in
     danger x km."""
-    if not (ship_length_m > 0 and speed_kn > 0):
-        raise ValueError("ship_length_m and speed_kn must be positive")
+    number(ship_length_m, "ship_length_m", above=0, example=150.0)
+    number(speed_kn, "speed_kn", above=0, example=12.0)
+    number(at_hours, "at_hours")
     w = _heuristic_weight(method, None)
     fc = _ForecastChart(forecast, variables, land, neighbourhood, None)
     missing = {"wave_height", "wave_from", "wave_period"} - set(fc.arrays)
