@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import statistics
 import sys
 import time
@@ -63,6 +64,15 @@ class Progress:
                   file=sys.stderr, flush=True)
 
 
+def searching(say, pixels: int):
+    """Within the block, a running search reports the pixels it has settled once a second."""
+    from ._interrupt import reporting
+    if say.quiet:
+        return contextlib.nullcontext()
+    return reporting(lambda n: say(f"searching: {n:,} pixels settled "
+                                   f"({100 * n / pixels:.0f} % of the chart)"))
+
+
 def _snap(chart, p, name, say):
     """The (lat, lon) or (row, col) of the passable pixel nearest to an impassable point."""
     try:
@@ -106,8 +116,9 @@ def run_route(args) -> int:
     rows, cols = cost.shape
     say(f"routing on {rows} x {cols} pixels ({data.description}; {args.method}, "
         f"{args.neighbourhood}x{args.neighbourhood} stencil, edge cost {args.edge_cost})")
-    r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
-              edge_cost=args.edge_cost, method=args.method)
+    with searching(say, rows * cols):
+        r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
+                  edge_cost=args.edge_cost, method=args.method)
     say(f"found: cost {r.cost:.6g}, {len(r.pixels)} pixels, {r.stats['settled']} settled")
     if not args.no_smooth:
         say(f"smoothing {r.course_changes} course changes")

@@ -12,6 +12,7 @@ from . import _geometry as geo
 from ._chart import Chart
 from ._core import haversine_km
 from ._segments import index_coords
+from ._validate import number
 from .models import CostModel, EdgeCost
 
 
@@ -140,7 +141,7 @@ class Route:
     def legs(self, speed_kn: float | None = None) -> list[Leg]:
         """The legs between consecutive waypoints, with course, distance, time, cost and the mean
         and maximum of each environment variable along the leg. speed_kn defaults to .speed_kn."""
-        speed = self.speed_kn if speed_kn is None else float(speed_kn)
+        speed = self.speed_kn if speed_kn is None else number(speed_kn, "speed_kn", above=0)
         wi, c = self.waypoint_index, self.coords
         steps, costs = self.leg_lengths, self.costs()
         out = []
