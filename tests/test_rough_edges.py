@@ -60,25 +60,43 @@ def test_settled_counter_is_published_every_4096_expansions():
 
 @pytest.mark.skipif(threading.current_thread() is not threading.main_thread(),
                     reason="the waiting main thread reports")
-def test_progress_reaches_a_listener_and_costs_nothing_without_one():
-    heard = []
-    release = threading.Event()
+def test_the_waiting_thread_hands_the_settled_count_to_a_listener(monkeypatch):
+    """No clock: the search settles 200 x 150 pixels (counter at 28672, the last multiple of
+    4096), then waits until the listener has heard that count."""
+    monkeypatch.setattr(seaway._interrupt, "POLL_S", 0.001)
+    chart = seaway.prepare(np.ones((200, 150)), neighbourhood=3)
+    heard, release = [], threading.Event()
 
     def search(token):
+        chart._router.field(chart.model.engine(chart), 0, token)
         release.wait()
         return "done"
 
     def listener(settled):
         heard.append(settled)
-        if len(heard) >= 2:
+        if settled == 28672:
             release.set()
 
-    with reporting(listener, every_s=0.0):
+    with reporting(listener):
         assert interruptible(search) == "done"
-    assert len(heard) >= 2 and all(n == 0 for n in heard)  # this search settled nothing
+    assert heard[-1] == 28672 and set(heard) <= {0, 28672} and heard == sorted(heard)
     release.clear()
-    threading.Timer(0.2, release.set).start()
-    assert interruptible(search) == "done" and len(heard) == 2  # no listener: no reports
+    threading.Timer(0.05, release.set).start()
+    n = len(heard)
+    assert interruptible(search) == "done" and len(heard) == n  # no listener: no reports
+
+
+def test_settled_progress_is_throttled_to_once_a_second_of_its_clock():
+    now, said = [100.0], []
+    progress = seaway._interrupt.SettledProgress(said.append, 1_000_000, clock=lambda: now[0])
+    for t, settled in [(100.5, 4096), (101.0, 8192), (101.5, 12288), (101.9, 16384),
+                       (102.0, 20480), (103.5, 20480), (104.0, 500_000)]:
+        now[0] = t
+        progress(settled)
+    # due at 101.0 (said), then at 102.0 (said); 103.5 has no new pixels; 104.0 said.
+    assert said == ["searching: 8,192 pixels settled (1 % of the chart)",
+                    "searching: 20,480 pixels settled (2 % of the chart)",
+                    "searching: 500,000 pixels settled (50 % of the chart)"]
 
 
 @pytest.mark.parametrize("kw, name", [({"dx": "1"}, "dx"), ({"dy": [1.0]}, "dy"),
@@ -188,18 +206,30 @@ def test_compat_negative_start_matches_skimage():
 @pytest.mark.skipif(threading.current_thread() is not threading.main_thread(),
                     reason="the waiting main thread reports")
 def test_the_cli_reports_pixels_settled_during_a_long_search(monkeypatch, capsys):
-    import seaway._interrupt
+    """`seaway route`'s search block prints the token's count on stderr: a search that holds on
+    until a line has been printed for its 28672 settled pixels (no clock in the test)."""
     from seaway._cli import Progress, searching
 
-    monkeypatch.setattr(seaway._interrupt, "PROGRESS_EVERY_S", 0.0)  # at every 0.1 s poll
-    cost = np.random.default_rng(2).uniform(1.0, 30.0, (2500, 2500))  # about a second
-    with searching(Progress("route", quiet=False), cost.size):
-        r = seaway.route(cost, (0, 0), (2499, 2499), method="dijkstra")
-    lines = [ln for ln in capsys.readouterr().err.splitlines() if "searching:" in ln]
-    settled = [int(ln.split("searching: ")[1].split(" pixels")[0].replace(",", "")) for ln in lines]
-    assert settled, "no progress line"
-    assert settled == sorted(settled) and settled[-1] <= r.stats["settled"]
-    assert all(n % 4096 == 0 for n in settled)
-    with searching(Progress("route", quiet=True), cost.size):
-        seaway.route(cost, (0, 0), (99, 99), method="dijkstra")
+    monkeypatch.setattr(seaway._interrupt, "POLL_S", 0.001)
+    monkeypatch.setattr(seaway._interrupt, "PROGRESS_EVERY_S", 0.0)
+    chart = seaway.prepare(np.ones((200, 150)), neighbourhood=3)
+    printed = threading.Event()
+
+    class Told(Progress):
+        def __call__(self, message):
+            super().__call__(message)
+            printed.set()
+
+    def search(token):
+        chart._router.field(chart.model.engine(chart), 0, token)
+        printed.wait()
+        return "done"
+
+    with searching(Told("route", quiet=False), 200 * 150):
+        assert interruptible(search) == "done"
+    err = capsys.readouterr().err
+    assert "seaway route: [" in err and "searching: 28,672 pixels settled (96 % of the chart)" in err
+    say_quiet = Progress("route", quiet=True)
+    with searching(say_quiet, 200 * 150):
+        chart.cost_field((0, 0))
     assert capsys.readouterr().err == ""

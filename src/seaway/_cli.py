@@ -66,11 +66,8 @@ class Progress:
 
 def searching(say, pixels: int):
     """Within the block, a running search reports the pixels it has settled once a second."""
-    from ._interrupt import reporting
-    if say.quiet:
-        return contextlib.nullcontext()
-    return reporting(lambda n: say(f"searching: {n:,} pixels settled "
-                                   f"({100 * n / pixels:.0f} % of the chart)"))
+    from ._interrupt import SettledProgress, reporting
+    return contextlib.nullcontext() if say.quiet else reporting(SettledProgress(say, pixels))
 
 
 def _snap(chart, p, name, say):

@@ -6,9 +6,10 @@ give its workspace back (further Ctrl-Cs while it waits are absorbed: the search
 4096 expansions), and re-raises. Elsewhere (worker threads, Dask) the search runs directly:
 signals only reach the main thread.
 
-The same token counts the pixels settled so far; `reporting(callback)` makes the waiting main
-thread call callback(settled) about once a second (the CLI prints it). Without a listener
-nothing is reported."""
+The same token counts the pixels settled so far (published by the search every 4096
+expansions); `reporting(callback)` makes the waiting main thread hand it to callback at each
+poll, and SettledProgress turns that into a line on stderr at most once a second (the CLI).
+Without a listener nothing is reported."""
 
 from __future__ import annotations
 
@@ -19,20 +20,39 @@ import time
 from . import _core
 
 _listener = None  # callback(settled pixels) while a `reporting` block runs
-PROGRESS_EVERY_S = 1.0
+POLL_S = 0.1  # how often the waiting main thread looks at the search (and calls the listener)
+PROGRESS_EVERY_S = 1.0  # SettledProgress says at most this often
 
 
 @contextlib.contextmanager
-def reporting(callback, every_s: float | None = None):
-    """Within the block, searches in the main thread call callback(settled) every `every_s`
-    seconds (default PROGRESS_EVERY_S)."""
+def reporting(callback):
+    """Within the block, a search run by interruptible() in the main thread calls
+    callback(settled pixels so far) each time the waiting main thread polls it (every POLL_S);
+    the callback throttles (see SettledProgress)."""
     global _listener
-    every_s = PROGRESS_EVERY_S if every_s is None else every_s
-    previous, _listener = _listener, (callback, float(every_s))
+    previous, _listener = _listener, callback
     try:
         yield
     finally:
         _listener = previous
+
+
+class SettledProgress:
+    """A `reporting` callback that says "searching: N pixels settled (P % of the chart)" at
+    most once every `every_s` seconds of `clock`, and only when N has grown."""
+
+    def __init__(self, say, pixels: int, every_s: float | None = None, clock=time.monotonic):
+        every_s = PROGRESS_EVERY_S if every_s is None else every_s
+        self.say, self.pixels, self.every_s, self.clock = say, max(int(pixels), 1), every_s, clock
+        self.due, self.last = clock() + every_s, 0
+
+    def __call__(self, settled: int) -> None:
+        now = self.clock()
+        if now < self.due or settled <= self.last:
+            return
+        self.due, self.last = now + self.every_s, settled
+        self.say(f"searching: {settled:,} pixels settled ({100 * settled / self.pixels:.0f} % "
+                 "of the chart)")
 
 
 def _stop(finished: threading.Event, token) -> None:
@@ -73,12 +93,9 @@ def interruptible(search):
     listener = _listener
     try:
         worker.start()
-        every = listener[1] if listener else None
-        next_report = time.monotonic() + (every or 0.0)
-        while not finished.wait(0.1 if every is None else min(0.1, max(every, 0.001))):
-            if listener and time.monotonic() >= next_report:
-                listener[0](token.settled)
-                next_report = max(next_report + every, time.monotonic())
+        while not finished.wait(POLL_S):
+            if listener is not None:
+                listener(token.settled)
     except KeyboardInterrupt:
         _stop(finished, token)
         raise
