@@ -143,3 +143,20 @@ def test_a_long_title_is_wrapped_not_cut(ice_chart, tmp_path):
     im = image.imread(tmp_path / "t.png")[..., :3]
     edges = np.concatenate([im[:, :2], im[:, -2:]], axis=1)
     assert (edges > 0.95).all()  # nothing drawn at the left or right edge: no text cut off
+
+
+def test_a_long_chart_path_is_shortened_to_its_last_parts():
+    path = "/data/ice/" + "archive/" * 12 + "2026/03/kara_sea_20260301.nc"
+    text = plot.fit_title(f"seaway route: NetCDF chart {path} (CT, SA), Arc7", 60)
+    lines = text.split("\n")
+    assert all(len(line) <= 60 for line in lines) and len(lines) <= 3
+    assert ".../" in text and "kara_sea_20260301.nc" in text and text.endswith("Arc7")
+    assert plot.fit_title("short title", 60) == "short title"
+
+
+def test_default_size_follows_the_map_aspect(ice_chart, tmp_path):
+    cost, land, stage, _ = ice_chart
+    r = seaway.route(cost, (78, 22), (77, 58), land=land)
+    plot.plot_route(r, tmp_path / "a.png", ice=stage, dpi=50)
+    h, w = image.imread(tmp_path / "a.png").shape[:2]
+    assert w == 550 and 200 <= h < 550  # 11 inches wide; this chart is wider than high

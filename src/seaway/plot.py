@@ -20,6 +20,7 @@ LAND_COLOUR = "#8c8c8c"
 COAST_COLOUR = "#303030"
 NO_DATA_COLOUR = "#ffffff"
 MAX_DRAWN = 700  # pixels along a side actually drawn (larger charts are subsampled)
+DEFAULT_WIDTH = 11.0  # inches; the height follows the map's aspect unless size is given
 
 
 def _pyplot():
@@ -93,7 +94,8 @@ class _Map:
         plt = _pyplot()
         self.plt, self.chart = plt, chart
         self.y, self.x = _axes_coords(chart)
-        self.fig = plt.figure(figsize=size, layout="constrained")
+        self.fig = plt.figure(figsize=size or (DEFAULT_WIDTH, 0.75 * DEFAULT_WIDTH),
+                              layout="constrained")
         if chart.geographic:
             ccrs = _cartopy()
             south, north = float(np.min(self.y)), float(np.max(self.y))
@@ -112,6 +114,8 @@ class _Map:
             self.bounds = (min(xs) - pad_x, max(xs) + pad_x, max(min(ys) - pad_y, -90.0),
                            min(max(ys) + pad_y, 90.0))
             self.ax.set_extent(self.bounds, crs=self.data_crs)
+            if size is None:
+                self._fit_height()
             self.kw = {"transform": self.data_crs}
             self.map_kw = {"transform": self.ax.projection}
             self.line_kw = {"transform": self.line_crs}
@@ -123,6 +127,13 @@ class _Map:
             self.kw, self.line_kw, self.map_kw = {}, {}, {}
             if self.y[-1] > self.y[0]:
                 self.ax.invert_yaxis()  # row 0 on top, as the raster is printed
+
+    def _fit_height(self):
+        """Figure height for the map's own aspect (no band of white above and below it): the
+        map takes the width left by the legend (about 3 inches), plus room for title and labels."""
+        x0, x1, y0, y1 = self.ax.get_extent()
+        height = (DEFAULT_WIDTH - 3.0) * (y1 - y0) / (x1 - x0) + 1.3
+        self.fig.set_size_inches(DEFAULT_WIDTH, float(np.clip(height, 4.0, 1.4 * DEFAULT_WIDTH)))
 
     def _grid(self, y, x):
         """2-D map coordinates of points (y, x): projected once with numpy for lat/lon charts
@@ -180,6 +191,7 @@ class _Map:
             gl = self.ax.gridlines(draw_labels=True, linewidth=0.4, color="#555555", alpha=0.6,
                                    linestyle="--", x_inline=False, y_inline=False, zorder=5)
             gl.top_labels = gl.right_labels = False
+            gl.rotate_labels = False  # upright labels, as on a printed chart
             gl.xlabel_style = gl.ylabel_style = {"size": 7}
         else:
             self.ax.grid(True, linewidth=0.4, color="#555555", alpha=0.5, linestyle="--")
@@ -199,10 +211,9 @@ class _Map:
         self.ax.plot(x[-1], y[-1], "s", color=ROUTE_COLOUR, mec="black", ms=9, zorder=8,
                      label="end", **self.kw)
 
-    def title(self, text, size):
-        width = max(int(size[0] * 10), 30)  # characters of 10-point text across the figure
-        self.fig.suptitle("\n".join(textwrap.wrap(text, width, break_long_words=True,
-                                                  break_on_hyphens=False)), fontsize=10)
+    def title(self, text):
+        width = max(int(self.fig.get_size_inches()[0] * 10), 30)  # 10-point characters across
+        self.fig.suptitle(fit_title(text, width), fontsize=10)
 
     def legend(self, extra=()):
         handles, labels = self.ax.get_legend_handles_labels()
@@ -212,6 +223,29 @@ class _Map:
     def save(self, path, dpi):
         _save(self.fig, path, dpi)
         self.plt.close(self.fig)
+
+
+def _shorten_path(word: str, room: int) -> str:
+    """A file path longer than `room` characters as '.../' and its last parts that fit."""
+    parts = word.split("/")
+    if len(word) <= room or len(parts) < 3:
+        return word
+    tail = parts[-1]
+    for part in reversed(parts[1:-1]):
+        if len(tail) + len(part) + 5 > room:
+            break
+        tail = part + "/" + tail
+    return ".../" + tail
+
+
+def fit_title(text: str, width: int, lines: int = 3) -> str:
+    """`text` on at most `lines` lines of `width` characters: long paths shortened to their
+    last parts, then wrapped at spaces; what still does not fit ends in '...' (never cut at the
+    figure's edge)."""
+    words = [_shorten_path(w, width // 2) for w in text.split(" ")]
+    wrapped = textwrap.wrap(" ".join(words), width, break_long_words=True, break_on_hyphens=False,
+                            max_lines=lines, placeholder=" ...")
+    return "\n".join(wrapped)
 
 
 def _ice_layer(route, ice, code):
@@ -235,7 +269,7 @@ def _ice_layer(route, ice, code):
 
 
 def plot_route(route, path, *, ice=None, code=None, values=None, label=None, title=None,
-               size=(10, 7.5), dpi=100, cmap="Blues"):
+               size=None, dpi=100, cmap="Blues"):
     """Write a PNG map of the route over its chart.
 
     ice: a raster on the chart's grid to draw in the WMO colour code (SIGRID-3 stage codes or
@@ -244,7 +278,8 @@ def plot_route(route, path, *, ice=None, code=None, values=None, label=None, tit
     code: "stage" or "concentration" (default: guessed from the values).
     values: any other raster to draw instead, with a colour bar (`label` names it); with no ice
         and no values, the cost raster is drawn.
-    size in inches; pixels = size x dpi."""
+    size: (width, height) in inches (pixels = size x dpi); default 11 inches wide, as high as the
+        map's aspect needs."""
     from matplotlib.colors import BoundaryNorm, ListedColormap
     from matplotlib.patches import Patch
 
@@ -279,12 +314,11 @@ def plot_route(route, path, *, ice=None, code=None, values=None, label=None, tit
     m.legend(patches)
     units = "km" if route.geographic else "units"
     nm = f" ({route.length / 1.852:.0f} nm)" if route.geographic else ""
-    m.title(title or f"{route.name}: {route.length:.1f} {units}{nm}, cost {route.cost:.5g}; {what}",
-            size)
+    m.title(title or f"{route.name}: {route.length:.1f} {units}{nm}, cost {route.cost:.5g}; {what}")
     m.save(path, dpi)
 
 
-def plot_cost_field(field, path, *, route=None, lat=None, lon=None, title=None, size=(10, 7.5),
+def plot_cost_field(field, path, *, route=None, lat=None, lon=None, title=None, size=None,
                     dpi=100):
     """Write a PNG map of an accumulated-cost field (seaway.cost_field's result: a DataArray, or
     an array with lat/lon), with contours, a colour bar and optionally a route over it."""
@@ -303,5 +337,5 @@ def plot_cost_field(field, path, *, route=None, lat=None, lon=None, title=None, 
     if route is not None:
         m.route(route, waypoints=False)
         m.legend()
-    m.title(title or "accumulated cost", size)
+    m.title(title or "accumulated cost")
     m.save(path, dpi)

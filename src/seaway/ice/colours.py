@@ -1,11 +1,19 @@
 """The WMO colour code for sea-ice charts, for maps (seaway.plot, seaway.webmap).
 
 Source: JCOMM Technical Report No. 24, WMO/TD-No. 1215, "Ice Chart Colour Code Standard"
-(version 1.0, 2014; first approved by the JCOMM Expert Team on Sea Ice in 2002). It defines two
-mutually exclusive codes, one per chart: by total concentration (CT, for charts whose stage of
-development is fairly uniform, e.g. Arctic summer) and by stage of development (SoD, for charts
-of high, fairly uniform concentration, e.g. Arctic winter). Colours are the standard's RGB
-values; stage codes are SIGRID-3's (seaway.ice.codes). Fast ice (grey) needs a form-of-ice
+(version 1.0, 2014; approved by the JCOMM Expert Team on Sea Ice in October 2002; an extension
+of the WMO Sea-Ice Nomenclature, WMO-No. 259). It defines two mutually exclusive codes, one per
+chart: by total concentration (CT, for charts whose stage of development is fairly uniform,
+e.g. Arctic summer) and by stage of development (SoD, for charts of high, fairly uniform
+concentration, e.g. Arctic winter). Stage codes are SIGRID-3's (seaway.ice.codes).
+
+Checked (2026-12, issue 13): the concentration RGB values of ice free 0-100-255, < 1/10
+150-200-255, 1-3/10 140-255-160 and 4-6/10 255-255-0 against the approved proposal's colour
+table (J. Falkingham for the IICWG colour sub-group, "Ice Chart Colour Standard", JCOMM ETSI,
+October 2002); the class names and colours (orange 7-8/10, red 9-10/10, grey fast ice) against
+Environment Canada's "Interpreting ice charts", chapter 2. The 7-8/10 value 255-125-7 and the
+stage-of-development RGB values below are the standard's as recalled, NOT yet checked against
+the TR-24 table itself (it was not reachable from here). Fast ice (grey) needs a form-of-ice
 attribute that a raster chart here does not carry, so it is not drawn.
 """
 
