@@ -207,7 +207,8 @@ def add_commands(commands, neighbourhood_type) -> None:
     rp.add_argument("--name", default="seaway route", help="route name in the outputs")
     rp.add_argument("--out", action="append", metavar="FILE",
                     help="write the route; the extension picks the format: .geojson/.json, .gpx, "
-                         ".rtz (IEC 61174, for ECDIS), .csv; may be repeated")
+                         ".rtz (IEC 61174, for ECDIS), .csv, .html (interactive map, offline; "
+                         "needs seaway[plot]); may be repeated")
     rp.add_argument("--plot", metavar="PNG",
                     help="draw the chart, land and route to a PNG (needs seaway[plot])")
     rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")

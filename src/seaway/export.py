@@ -23,7 +23,8 @@ from . import _geometry as geo
 
 GPX_NS = "http://www.topografix.com/GPX/1/1"
 RTZ_NS = "http://www.cirm.org/RTZ/1/0"
-FORMATS = {".geojson": "geojson", ".json": "geojson", ".gpx": "gpx", ".csv": "csv", ".rtz": "rtz"}
+FORMATS = {".geojson": "geojson", ".json": "geojson", ".gpx": "gpx", ".csv": "csv", ".rtz": "rtz",
+           ".html": "html", ".htm": "html"}
 
 
 def write_atomically(path, text: str) -> None:
@@ -154,12 +155,18 @@ def write(route, path, fmt=None, speed_kn=None) -> str:
     fmt = fmt or FORMATS.get(os.path.splitext(os.fspath(path))[1].lower())
     makers = {"geojson": lambda: json.dumps(geojson(route, speed_kn=speed_kn), indent=1),
               "gpx": lambda: gpx(route, speed_kn), "rtz": lambda: rtz(route, speed_kn),
-              "csv": lambda: csv_text(route, speed_kn)}
+              "csv": lambda: csv_text(route, speed_kn),
+              "html": lambda: _html(route, speed_kn)}
     if fmt not in makers:
         raise ValueError(f"cannot tell the format of {os.fspath(path)!r}: use one of the extensions "
                          f"{', '.join(sorted(FORMATS))} or fmt= one of {sorted(makers)}")
     write_atomically(path, makers[fmt]())
     return fmt
+
+
+def _html(route, speed_kn):
+    from .webmap import html_text  # interactive map (folium, seaway[plot])
+    return html_text(route, speed_kn=speed_kn)
 
 
 def _opt(v, digits):

@@ -218,6 +218,17 @@ class Route:
         from .smooth import smooth
         return smooth(self, **options)
 
+    def explore(self, **options):
+        """An interactive folium.Map of the route over its chart, working offline (see
+        seaway.webmap.explore for the options)."""
+        from .webmap import explore
+        return explore(self, **options)
+
+    def to_html(self, path, **options) -> None:
+        """Write the interactive map (explore()) to one self-contained HTML file, atomically."""
+        from .webmap import to_html
+        to_html(self, path, **options)
+
     def to_geojson(self) -> dict:
         """A GeoJSON Feature (LineString) with the route's cost and length as properties.
 
