@@ -5,8 +5,10 @@ network URL for scripts or styles, atomic writes."""
 import base64
 import io
 import json
+import os
 import re
 import shutil
+import stat
 import subprocess
 from pathlib import Path
 
@@ -19,7 +21,7 @@ import seaway
 folium = pytest.importorskip("folium")
 from matplotlib import image  # noqa: E402
 
-from seaway import webmap  # noqa: E402
+from seaway import plot, webmap  # noqa: E402
 
 
 @pytest.fixture
@@ -112,6 +114,15 @@ def test_explore_returns_a_folium_map_and_to_html_writes_atomically(ice_route, t
     with pytest.raises(ValueError, match="lat/lon chart"):
         planar.to_html(tmp_path / "planar.html")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["route.html"]  # nothing half-written
+    old = os.umask(0o022)
+    try:  # a new file's usual permissions, not the temporary file's 0600
+        ice_route.to_html(tmp_path / "shared.html")
+        plot.plot_route(ice_route, tmp_path / "shared.png", size=(4, 3), dpi=30)
+    finally:
+        os.umask(old)
+    assert stat.S_IMODE((tmp_path / "shared.html").stat().st_mode) == 0o644
+    assert stat.S_IMODE((tmp_path / "shared.png").stat().st_mode) == 0o644
+    (tmp_path / "shared.html").unlink(), (tmp_path / "shared.png").unlink()
     seaway.export.write(ice_route, tmp_path / "r.htm")
     written = (tmp_path / "r.htm").read_text()
     assert written.count('.bindPopup("') == len(ice_route.waypoint_index)

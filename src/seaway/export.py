@@ -29,14 +29,27 @@ FORMATS = {".geojson": "geojson", ".json": "geojson", ".gpx": "gpx", ".csv": "cs
 
 def write_atomically(path, text: str) -> None:
     """Write `text` to a temporary file beside `path`, then rename it over `path`."""
-    target = os.path.abspath(os.fspath(path))
-    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(target), prefix=".seaway-", suffix=".tmp")
-    try:
+    def write(fd, tmp):
         with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
             f.write(text)
+    replace_atomically(path, write, ".tmp")
+
+
+def replace_atomically(path, write, suffix: str) -> None:
+    """write(fd, temporary path) fills a temporary file beside `path`, which is then given the
+    permissions of a newly created file (mkstemp's are 0600: others could not read the
+    route) and renamed over `path`; on any error the temporary file is removed."""
+    target = os.path.abspath(os.fspath(path))
+    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(target), prefix=".seaway-", suffix=suffix)
+    try:
+        write(fd, tmp)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, target)
     except BaseException:
-        os.unlink(tmp)
+        if os.path.exists(tmp):
+            os.unlink(tmp)
         raise
 
 

@@ -11,6 +11,7 @@ drawn on plain axes. A raster without an ice code (a cost, a cost field) keeps i
 
 from __future__ import annotations
 
+import os
 import textwrap
 
 import numpy as np
@@ -74,17 +75,12 @@ def _stride(shape) -> int:
 
 
 def _save(fig, path, dpi):
-    import os
-    import tempfile
-    target = os.path.abspath(os.fspath(path))
-    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(target), prefix=".seaway-", suffix=".png")
-    os.close(fd)
-    try:
+    from .export import replace_atomically
+
+    def write(fd, tmp):
+        os.close(fd)
         fig.savefig(tmp, dpi=dpi, format="png")
-        os.replace(tmp, target)
-    except BaseException:
-        os.unlink(tmp)
-        raise
+    replace_atomically(path, write, ".png")
 
 
 class _Map:
