@@ -62,7 +62,8 @@ def test_settled_counter_is_published_every_4096_expansions():
                     reason="the waiting main thread reports")
 def test_the_waiting_thread_hands_the_settled_count_to_a_listener(monkeypatch):
     """No clock: the search settles 200 x 150 pixels (counter at 28672, the last multiple of
-    4096), then waits until the listener has heard that count."""
+    4096), then waits until the listener has heard that count (it may hear smaller ones
+    first, while the search runs)."""
     monkeypatch.setattr(seaway._interrupt, "POLL_S", 0.001)
     chart = seaway.prepare(np.ones((200, 150)), neighbourhood=3)
     heard, release = [], threading.Event()
@@ -79,7 +80,8 @@ def test_the_waiting_thread_hands_the_settled_count_to_a_listener(monkeypatch):
 
     with reporting(listener):
         assert interruptible(search) == "done"
-    assert heard[-1] == 28672 and set(heard) <= {0, 28672} and heard == sorted(heard)
+    # (while it runs the count grows by 4096s; the last one heard is the whole search's)
+    assert heard[-1] == 28672 and heard == sorted(heard) and all(n % 4096 == 0 for n in heard)
     release.clear()
     threading.Timer(0.05, release.set).start()
     n = len(heard)
@@ -218,7 +220,8 @@ def test_the_cli_reports_pixels_settled_during_a_long_search(monkeypatch, capsys
     class Told(Progress):
         def __call__(self, message):
             super().__call__(message)
-            printed.set()
+            if "28,672 pixels" in message:  # earlier lines (while it runs) may come first
+                printed.set()
 
     def search(token):
         chart._router.field(chart.model.engine(chart), 0, token)

@@ -73,6 +73,13 @@ def test_the_page_holds_the_route_its_waypoints_and_the_ice(ice_route):
     rgb = np.rint(chart[..., :3] * 255).astype(int)
     west, east = rgb[5, 10], rgb[5, -10]
     assert tuple(west) == (0, 120, 0) and tuple(east) == (200, 0, 0)  # thick FY, multi-year
+    # The island (rows 20-29: 78.05-77.05 N) lands on the rows of Web Mercator that cover it:
+    # image row i (centre at i + 0.5 of 51) is land iff its centre's y lies within the island's.
+    def merc(lat):
+        return np.degrees(np.arcsinh(np.tan(np.radians(lat))))
+    top, bottom = ((merc(80.05) - merc(v)) / (merc(80.05) - merc(74.95)) * 51 for v in (78.05, 77.05))
+    island = np.flatnonzero((np.abs(rgb - 140).max(axis=-1) == 0).any(axis=1))
+    np.testing.assert_array_equal(island, [i for i in range(51) if top < i + 0.5 < bottom])
     for name in ("land (global-land-mask)", "ice: WMO colour code by stage of development",
                  '"route"'):
         assert name in page
