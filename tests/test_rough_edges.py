@@ -130,6 +130,9 @@ def test_every_numeric_argument_is_checked_by_name():
         seaway.route_many(u, [((0, 0), (5, 5))], threads="2")
     with pytest.raises(ValueError, match=r"land_fraction must be a number in \[0, 0.9\)"):
         synthetic_sea((20, 20), land_fraction=np.nan)
+    from seaway.models import IceSeasonTime
+    with pytest.raises(TypeError, match="v0_kn must be a finite number > 0, got str '12'"):
+        IceSeasonTime(None, v0_kn="12")
     r = seaway.route(u, (0, 0), (5, 5))
     with pytest.raises(ValueError, match="speed_kn must be a finite number > 0"):
         r.legs(speed_kn=0)

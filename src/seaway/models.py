@@ -270,8 +270,9 @@ class IceSeasonTime(CostModel):
         from .ice.classes import get_class
         from .ice.season import SeasonGrid
 
+        self.v0_kn = number(v0_kn, "v0_kn", above=0, example=12.0)
         self.season = season if isinstance(season, SeasonGrid) else SeasonGrid(season)
-        self.ice_class, self.v0_kn = get_class(ice_class).name, float(v0_kn)
+        self.ice_class = get_class(ice_class).name
         self.hours_per_km, self.valid_from_h, self.departure = self.season.hours_per_km(
             ice_class, v0_kn, departure, speed, **speed_options)
         self._open = np.isfinite(self.hours_per_km).any(axis=0)
