@@ -135,6 +135,21 @@ def test_explore_returns_a_folium_map_and_to_html_writes_atomically(ice_route, t
     assert written.count('.bindPopup("') == len(ice_route.waypoint_index)
 
 
+def test_a_chart_in_any_row_and_column_order_gives_the_same_image(ice_route):
+    """Rows south to north and columns east to west: the image still goes north-up and west to
+    east, so the page shows the same colours in the same places."""
+    c = ice_route.chart.template
+    stage = ice_route.environment["stage_of_development"]
+    flipped = c.isel(lat=slice(None, None, -1), lon=slice(None, None, -1))
+    land = np.asarray(ice_route.chart.land, bool)[::-1, ::-1]
+    r = seaway.route(flipped, (78, 22), (77, 58), land=land)
+    r = r.with_environment({"stage_of_development": stage[::-1, ::-1]})
+    (_, _), (flip_image, flip_bounds) = _overlays(webmap.html_text(r))
+    (_, _), (image_, bounds) = _overlays(webmap.html_text(ice_route))
+    np.testing.assert_allclose(flip_bounds, bounds, atol=1e-9)
+    np.testing.assert_array_equal(flip_image, image_)
+
+
 def test_a_cost_map_without_ice_shows_the_cost():
     lat, lon = np.linspace(70, 60, 21), np.linspace(10, 30, 41)
     u = np.tile(np.linspace(1, 5, 41), (21, 1))

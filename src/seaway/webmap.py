@@ -125,8 +125,10 @@ def _chart_image(route, ice, code):
     lat = np.asarray(chart.lat, float)[::k]
     lon = _lon_continuous(chart.lon)[::k]
     rgba = rgba[::k, ::k]
-    if lat[0] < lat[-1]:  # the image goes north-up
+    if lat[0] < lat[-1]:  # the image goes north-up ...
         lat, rgba = lat[::-1], rgba[::-1]
+    if lon[0] > lon[-1]:  # ... and west to east
+        lon, rgba = lon[::-1], rgba[:, ::-1]
     return rgba, _edges(lat), _edges(lon), name, legend
 
 
