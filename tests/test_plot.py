@@ -160,3 +160,19 @@ def test_default_size_follows_the_map_aspect(ice_chart, tmp_path):
     plot.plot_route(r, tmp_path / "a.png", ice=stage, dpi=50)
     h, w = image.imread(tmp_path / "a.png").shape[:2]
     assert w == 550 and 200 <= h < 550  # 11 inches wide; this chart is wider than high
+
+
+def test_a_cost_field_keeps_its_colour_bar(chart, tmp_path, monkeypatch):
+    """The field's map has a colour bar spanning the field's finite range."""
+    da, land = chart
+    field = seaway.cost_field(da, (69, 171), land=land)
+    figures = []
+    real_save = plot._save
+    monkeypatch.setattr(plot, "_save", lambda fig, path, dpi: (figures.append(fig),
+                                                               real_save(fig, path, dpi)))
+    plot.plot_cost_field(field, tmp_path / "f.png", size=(6, 4), dpi=40)
+    (fig,) = figures
+    bars = [ax for ax in fig.axes if ax.get_ylabel() == "least accumulated cost from the start"]
+    assert len(bars) == 1
+    v = field.values[np.isfinite(field.values)]
+    assert bars[0].get_ylim() == pytest.approx((v.min(), v.max()), rel=1e-6)
