@@ -20,6 +20,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 
 from . import _geometry as geo
+from .route import extreme_name
 
 GPX_NS = "http://www.topografix.com/GPX/1/1"
 RTZ_NS = "http://www.cirm.org/RTZ/1/0"
@@ -87,6 +88,8 @@ def geojson(route, antimeridian: str = "split", speed_kn=None) -> dict:
     for k, v in route.summary(speed_kn).items():
         if isinstance(v, str) or (isinstance(v, (int, float)) and np.isfinite(v)):
             props[k] = v
+        elif k == "least_depth_at" and v is not None:  # (lat, lon) of the shallowest pixel
+            props[k] = [float(x) for x in v]
     props["name"] = route.name
     if route.geographic and antimeridian == "split":
         c = route.coords
@@ -148,7 +151,7 @@ def csv_text(route, speed_kn=None) -> str:
     env = list(route.environment)
     out = io.StringIO()
     w = csv.writer(out, lineterminator="\n")
-    w.writerow(CSV_FIELDS + [f"{n}_{s}" for n in env for s in ("mean", "max")])
+    w.writerow(CSV_FIELDS + [f"{n}_{s}" for n in env for s in ("mean", extreme_name(n))])
     first = route.waypoints[0]
     w.writerow([1, f"{first[0]:.7f}", f"{first[1]:.7f}"] + [""] * (len(CSV_FIELDS) - 3 + 2 * len(env)))
     km = cost = 0.0
