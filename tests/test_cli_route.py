@@ -40,7 +40,7 @@ def chart_nc(tmp_path_factory):
 
 def test_route_netcdf_all_outputs(chart_nc, tmp_path):
     path, ds = chart_nc
-    outs = [tmp_path / f"r.{ext}" for ext in ("geojson", "gpx", "rtz", "csv")]
+    outs = [tmp_path / f"r.{ext}" for ext in ("geojson", "gpx", "rtz", "csv", "html")]
     args = ["route", str(path), "--from", "73,61", "--to", "73,75", "--vessel", "Arc7",
             "--neighbourhood", "7", "--speed", "12", "--plot", str(tmp_path / "r.png")]
     for o in outs:
@@ -65,6 +65,9 @@ def test_route_netcdf_all_outputs(chart_nc, tmp_path):
     assert rows[0].startswith("waypoint,lat,lon,leg,course_deg") and len(rows) == len(wps) + 1
     assert "sea_ice_concentration_max" in rows[0]
     assert (tmp_path / "r.png").stat().st_size > 10_000
+    page = outs[4].read_text()  # the interactive map: the same route, one popup per waypoint
+    assert page.count('.bindPopup("') == len(wps) and "L.polyline(" in page
+    assert "ice: WMO colour code by total concentration" in page  # CT is in the chart file
     # the route never enters the island's closed squares: every waypoint is water
     assert np.all(~ds.land.values[tuple(np.rint(r.points).astype(int).T)])
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import statistics
 import sys
 import time
@@ -64,6 +65,12 @@ class Progress:
                   file=sys.stderr, flush=True)
 
 
+def searching(say, pixels: int):
+    """Within the block, a running search reports the pixels it has settled once a second."""
+    from ._interrupt import SettledProgress, reporting
+    return contextlib.nullcontext() if say.quiet else reporting(SettledProgress(say, pixels))
+
+
 def _tell(message: str) -> None:
     """What changed the voyage (a snapped end): on stderr even with --quiet."""
     print(f"seaway route: {message}", file=sys.stderr, flush=True)
@@ -102,8 +109,9 @@ def run_route(args) -> int:
         if value not in (None, []):
             say(f"constraint {name}: {value if name != 'zones' else [z.name for z in value]}")
     try:
-        r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
-                  edge_cost=args.edge_cost, method=args.method, **constraints)
+        with searching(say, rows * cols):
+            r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
+                      edge_cost=args.edge_cost, method=args.method, **constraints)
     except NoRouteError as exc:
         if shallow is None:
             raise
@@ -223,7 +231,8 @@ def add_commands(commands, neighbourhood_type) -> None:
     rp.add_argument("--name", default="seaway route", help="route name in the outputs")
     rp.add_argument("--out", action="append", metavar="FILE",
                     help="write the route; the extension picks the format: .geojson/.json, .gpx, "
-                         ".rtz (IEC 61174, for ECDIS), .csv; may be repeated")
+                         ".rtz (IEC 61174, for ECDIS), .csv, .html (interactive map, offline; "
+                         "needs seaway[plot]); may be repeated")
     rp.add_argument("--plot", metavar="PNG",
                     help="draw the chart, land and route to a PNG (needs seaway[plot])")
     rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")

@@ -11,6 +11,7 @@ from ._interrupt import interruptible
 from .errors import NoRouteError
 from .models import CostModel, EdgeCost, as_model
 from .route import Route
+from ._validate import number
 
 DIRECTIONS = ("full", "unique")
 METHODS = ("dijkstra", "astar")
@@ -35,10 +36,9 @@ def _heuristic_weight(method, weight) -> float:
         if weight not in (None, 1, 1.0):
             raise ValueError("weight inflates the A* heuristic; use it with method='astar'")
         return 0.0
-    w = 1.0 if weight is None else float(weight)
-    if not (np.isfinite(w) and w >= 1):
-        raise ValueError(f"weight must be a finite number >= 1 (cost <= weight x optimum), got {weight!r}")
-    return w
+    return 1.0 if weight is None else number(
+        weight, "weight", minimum=1, what="a finite number >= 1 (cost <= weight x optimum)",
+        example=1.5)
 
 
 def _nearest_passable(chart: Chart, rc) -> tuple[int, int] | None:

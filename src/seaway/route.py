@@ -12,6 +12,7 @@ from . import _geometry as geo
 from ._chart import Chart
 from ._core import haversine_km
 from ._segments import index_coords
+from ._validate import number
 from .models import CostModel, EdgeCost
 
 
@@ -149,7 +150,7 @@ class Route:
     def legs(self, speed_kn: float | None = None) -> list[Leg]:
         """The legs between consecutive waypoints, with course, distance, time, cost and the mean
         and maximum of each environment variable along the leg. speed_kn defaults to .speed_kn."""
-        speed = self.speed_kn if speed_kn is None else float(speed_kn)
+        speed = self.speed_kn if speed_kn is None else number(speed_kn, "speed_kn", above=0)
         wi, c = self.waypoint_index, self.coords
         steps, costs = self.leg_lengths, self.costs()
         out = []
@@ -243,6 +244,17 @@ class Route:
         """Any-angle smoothing (see seaway.smooth.smooth)."""
         from .smooth import smooth
         return smooth(self, **options)
+
+    def explore(self, **options):
+        """An interactive folium.Map of the route over its chart, working offline (see
+        seaway.webmap.explore for the options)."""
+        from .webmap import explore
+        return explore(self, **options)
+
+    def to_html(self, path, **options) -> None:
+        """Write the interactive map (explore()) to one self-contained HTML file, atomically."""
+        from .webmap import to_html
+        to_html(self, path, **options)
 
     def to_geojson(self) -> dict:
         """A GeoJSON Feature (LineString) with the route's cost and length as properties.
