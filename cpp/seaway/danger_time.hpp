@@ -54,7 +54,7 @@ struct DangerRoute {
 template <class Time>
 DangerRoute route_least_danger(const PreparedGrid& pg, const Time& time, const DangerZones& danger,
                                double best_speed_kn, std::int64_t start, std::int64_t target,
-                               double weight, const std::atomic<bool>* cancel = nullptr) {
+                               double weight, const SearchControl* control = nullptr) {
   const Grid& g = pg.grid();
   const std::vector<Offset>& st = pg.stencil();
   const std::int64_t n = g.size();
@@ -74,8 +74,10 @@ DangerRoute route_least_danger(const PreparedGrid& pg, const Time& time, const D
     heap.pop();
     if (closed[std::size_t(v)]) continue;
     closed[std::size_t(v)] = 1;
-    if ((++stats.settled & 4095) == 0 && cancel && cancel->load(std::memory_order_relaxed))
-      throw Cancelled();
+    if ((++stats.settled & 4095) == 0 && control) {  // progress and Ctrl-C, as search.hpp
+      control->settled.store(stats.settled, std::memory_order_relaxed);
+      if (control->cancel.load(std::memory_order_relaxed)) throw Cancelled();
+    }
     if (v == target) break;
     const double dv = dng[std::size_t(v)], tv = hrs[std::size_t(v)];
     const double* len = pg.lengths().row(v / g.cols);

@@ -134,7 +134,7 @@ inline double from_bits(std::uint64_t b) {
 template <class Model>
 RouteResult route_with_turns(const PreparedGrid& pg, const Model& model, const TurnPenalty& turn,
                              std::int64_t start, std::int64_t target, int incoming, double weight,
-                             const std::atomic<bool>* cancel = nullptr) {
+                             const SearchControl* control = nullptr) {
   const Grid& g = pg.grid();
   const std::vector<Offset>& st = pg.stencil();
   const Grid::Lengths& lengths = pg.lengths();
@@ -199,8 +199,10 @@ RouteResult route_with_turns(const PreparedGrid& pg, const Model& model, const T
       const double ds = dist(s);
       if (std::signbit(ds)) continue;
       set(s, -ds);
-      if ((++stats.settled & 4095) == 0 && cancel && cancel->load(std::memory_order_relaxed))
-        throw Cancelled();
+      if ((++stats.settled & 4095) == 0 && control) {  // progress and Ctrl-C, as search.hpp
+        control->settled.store(stats.settled, std::memory_order_relaxed);
+        if (control->cancel.load(std::memory_order_relaxed)) throw Cancelled();
+      }
       const std::int64_t v = s / K;
       if (v == target) { reached = s; break; }
       expand(v, s - v * K, ds, std::uint8_t(s - v * K + 1));
