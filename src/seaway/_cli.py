@@ -109,7 +109,9 @@ def run_route(args) -> int:
         if value not in (None, []):
             say(f"constraint {name}: {value if name != 'zones' else [z.name for z in value]}")
     try:
-        with searching(say, rows * cols):
+        # With a turn penalty the search settles (pixel, incoming step) states: scale the total.
+        states = args.neighbourhood ** 2 - 1 if constraints["turn_penalty"] is not None else 1
+        with searching(say, rows * cols * states):
             r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
                       edge_cost=args.edge_cost, method=args.method, **constraints)
     except NoRouteError as exc:
