@@ -6,10 +6,12 @@ namespace py = pybind11;
 void register_search(py::module_& m);
 void register_weather(py::module_& m);
 void register_models(py::module_& m);
+void register_exact(py::module_& m);
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "seaway's C++ engine (private: use the seaway package)";
   register_search(m);
   register_weather(m);
   register_models(m);
+  register_exact(m);
 }

@@ -32,6 +32,8 @@ class RadixHeap {
     for (const auto& v : buckets_) b += v.capacity() * sizeof(HeapEntry);
     return b;
   }
+  // No key left in the heap is below this (bidirectional search's stopping rule).
+  double lower_bound() const { return last_key_; }
 
   void push(HeapEntry e) {
     // A consistent A* bound keeps keys monotone up to rounding; never go below the last pop.
@@ -90,6 +92,10 @@ class BucketQueue {
     for (const auto& v : ring_) b += v.capacity() * sizeof(HeapEntry);
     return b;
   }
+
+  // No key left in the queue is below this: the current bucket's floor, less one bucket for
+  // the rounding of key * (1 / width) (bidirectional search's stopping rule).
+  double lower_bound() const { return current_ > 0 ? double(current_ - 1) / inv_width_ : 0.0; }
 
   void push(const HeapEntry& e) {
     // Keys are never below the current bucket (a step costs >= 0), and never a ring or more
