@@ -104,7 +104,7 @@ inline int half_width(const std::vector<Offset>& st) {
 // One side of the search. Backward == true walks the steps into each pixel.
 template <bool Backward, class Queue, class Model>
 SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::int64_t origin,
-                               LazyLabels& mine, const LazyLabels& other, Queue heap,
+                               LazyLabels& mine, const LazyLabels& other, Queue heap, double ahead,
                                detail::Meeting& meet, const std::atomic<bool>* cancel) {
   constexpr int self = Backward ? 1 : 0;
   const Grid& g = pg.grid();
@@ -127,6 +127,12 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
     if (std::signbit(dv)) continue;  // an older entry of a settled pixel
     const double lb = heap.empty() ? top.key : std::min(top.key, heap.lower_bound());
     meet.top[self].store(lb, std::memory_order_relaxed);
+    // Balance: a side that is `ahead` of the other waits for it, so each side covers about half
+    // the route whatever the scheduler does (else, with the other thread descheduled on a busy
+    // machine, one side would redo most of a Dijkstra and the other's work would be wasted).
+    while (lb > meet.top[1 - self].load(std::memory_order_relaxed) + ahead &&
+           !meet.stop.load(std::memory_order_relaxed))
+      std::this_thread::yield();
     if (meet.stop.load(std::memory_order_relaxed) ||
         lb + meet.top[1 - self].load(std::memory_order_relaxed) >= meet.mu.load(std::memory_order_relaxed))
       break;
@@ -223,6 +229,7 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
   const double width = 0.999999 * b.min_rate * rmin;
   const double span = 1.000001 * b.max_rate * rmax + 1e-300;
   const bool buckets = width > 0 && span < inf && BucketQueue::buckets_needed(width, span) < 65536;
+  const double ahead = 8 * span;  // how far (in cost) one side may run ahead of the other
 
   LazyLabels fw(g.size()), bw(g.size());
   fw.set(start, 0.0);
@@ -243,8 +250,8 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
     const std::int64_t origin = B ? target : start;
     try {
       sides[B] = buckets
-          ? bidirectional_side<B>(pg, model, origin, mine, theirs, BucketQueue(width, span), meet, cancel)
-          : bidirectional_side<B>(pg, model, origin, mine, theirs, RadixHeap{}, meet, cancel);
+          ? bidirectional_side<B>(pg, model, origin, mine, theirs, BucketQueue(width, span), ahead, meet, cancel)
+          : bidirectional_side<B>(pg, model, origin, mine, theirs, RadixHeap{}, ahead, meet, cancel);
     } catch (...) {
       errors[B] = std::current_exception();
       meet.stop.store(true);

@@ -192,7 +192,7 @@ class PreparedChart:
         self._landmarks[model.name] = lm
         px = [divmod(int(p), self.chart.shape[1]) for p in lm.pixels]
         self.landmark_stats[model.name] = stats = dict(
-            count=len(px), seconds=seconds, bytes=lm.bytes, bytes_per_pixel=lm.bytes / self.chart.size,
+            count=len(px), seconds=seconds, bytes=lm.bytes, bytes_per_pixel=lm.bytes / self.chart.values.size,
             pixels=px)
         return stats
 
