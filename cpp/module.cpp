@@ -7,6 +7,7 @@ void register_search(py::module_& m);
 void register_weather(py::module_& m);
 void register_models(py::module_& m);
 void register_exact(py::module_& m);
+void register_smooth(py::module_& m);
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "seaway's C++ engine (private: use the seaway package)";
@@ -14,4 +15,5 @@ PYBIND11_MODULE(_core, m) {
   register_weather(m);
   register_models(m);
   register_exact(m);
+  register_smooth(m);
 }

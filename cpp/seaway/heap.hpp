@@ -34,6 +34,11 @@ class RadixHeap {
   }
   // No key left in the heap is below this (bidirectional search's stopping rule).
   double lower_bound() const { return last_key_; }
+  template <class F>
+  void for_each(F&& f) const {  // every entry, in no order
+    for (const auto& b : buckets_)
+      for (const HeapEntry& e : b) f(e);
+  }
 
   void push(HeapEntry e) {
     // A consistent A* bound keeps keys monotone up to rounding; never go below the last pop.
@@ -96,6 +101,11 @@ class BucketQueue {
   // No key left in the queue is below this: the current bucket's floor, less one bucket for
   // the rounding of key * (1 / width) (bidirectional search's stopping rule).
   double lower_bound() const { return current_ > 0 ? double(current_ - 1) / inv_width_ : 0.0; }
+  template <class F>
+  void for_each(F&& f) const {  // every entry, in no order
+    for (const auto& b : ring_)
+      for (const HeapEntry& e : b) f(e);
+  }
 
   void push(const HeapEntry& e) {
     // Keys are never below the current bucket (a step costs >= 0), and never a ring or more
