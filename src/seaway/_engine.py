@@ -216,7 +216,7 @@ class PreparedChart:
         or an edge-cost name; default the chart's edge_cost). See seaway.route."""
         w = _heuristic_weight(method, weight)
         model = self.model if model is None else as_model(model)
-        method = _exact.resolve(self, model, method)
+        method = _exact.resolve(self, model, method, weight)
         chart = self.chart
         s, e = locate(chart, start, "start"), locate(chart, end, "end")
         total, path, stats, cumulative, per_step = self._search(s, e, w, model, method)

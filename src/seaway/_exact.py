@@ -12,7 +12,7 @@ Methods (all exact except weighted A*):
   prepare(..., landmarks=N)) for this model; max, mean and integral only: the bound
   |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
   mean of the two ends x the step's length; the integral over the same segment).
-* "auto" (the default): "landmarks" when the chart has landmarks for the query's model,
+* "auto" (the default): "astar" if a weight is given; "landmarks" when the chart has landmarks for the query's model,
   else "bidirectional" for a static raster model, else "astar" (time-dependent models).
   On the benchmark charts this never settles more pixels than Dijkstra, and takes less time
   (benchmarks/README.md)."""
@@ -32,6 +32,8 @@ def heuristic_weight(method, weight) -> float:
     """The A* weight of `method` (0 for the methods without one); validates both."""
     if method not in METHODS:
         raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+    if method == "auto" and weight is not None:
+        method = "astar"  # a weight asks for (weighted) A*
     if method != "astar":
         if weight not in (None, 1, 1.0):
             raise ValueError("weight inflates the A* heuristic; use it with method='astar'")
@@ -46,8 +48,10 @@ def _static(model) -> bool:
     return isinstance(model, EdgeCost)
 
 
-def resolve(prepared, model, method: str) -> str:
+def resolve(prepared, model, method: str, weight=None) -> str:
     """The method that answers the query; refuses a method the model does not allow."""
+    if method == "auto" and weight is not None:
+        return "astar"
     if method == "auto":
         if model.name in prepared._landmarks and _static(model):
             return "landmarks"
