@@ -17,19 +17,23 @@ namespace {
 template <class M>
 void def_bidirectional(py::class_<Router>& router) {
   router.def("route_bidirectional",
-             [](Router& r, const M& m, std::int64_t start, std::int64_t target, const CancelToken* cancel) {
+             [](Router& r, const M& m, std::int64_t start, std::int64_t target, bool astar,
+                const CancelToken* cancel) {
                RouteResult out;
                {
                  py::gil_scoped_release release;
                  m.visit(*r.grid, [&](const auto& model) {
-                   out = route_bidirectional(*r.grid, model, start, target, flag_of(cancel));
+                   out = astar ? route_bidirectional_astar(*r.grid, model, start, target, flag_of(cancel))
+                               : route_bidirectional(*r.grid, model, start, target, flag_of(cancel));
                    return 0;
                  });
                }
                return route_tuple(out, {});
              },
-             py::arg("model"), py::arg("start"), py::arg("target"), py::arg("cancel") = nullptr,
-             "Exact bidirectional Dijkstra on two threads; returns what Router.route does");
+             py::arg("model"), py::arg("start"), py::arg("target"), py::arg("astar"),
+             py::arg("cancel") = nullptr,
+             "Exact bidirectional Dijkstra (astar: A* with the distance bound) on two threads; "
+             "returns what Router.route does");
 }
 
 template <class M>
@@ -57,7 +61,8 @@ void def_landmarks(py::class_<Router>& router) {
                return route_tuple(out, {});
              },
              py::arg("model"), py::arg("landmarks"), py::arg("start"), py::arg("target"),
-             py::arg("cancel") = nullptr, "Exact A* with the landmark bound; returns what Router.route does");
+             py::arg("cancel") = nullptr,
+             "Exact A* with the landmark bound; returns what Router.route does");
 }
 
 }  // namespace

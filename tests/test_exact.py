@@ -26,8 +26,12 @@ def _ends(ref, start, expect, rng):
     return ends, [tuple(int(v) for v in e) for e in np.argwhere(~fin & ref.ok)[:2]]
 
 
+@pytest.mark.parametrize("potential", [False, True], ids=["dijkstra", "astar"])
 @pytest.mark.parametrize("edge_cost,k,directions,grid", CASES)
-def test_exact_methods_match_reference(edge_cost, k, directions, grid):
+def test_exact_methods_match_reference(edge_cost, k, directions, grid, potential, monkeypatch):
+    """Both forms of the bidirectional search: plain, and with the A* potential (used on
+    low-contrast charts; forced here on every chart)."""
+    monkeypatch.setattr(seaway._exact, "ASTAR_CONTRAST", np.inf if potential else 0.0)
     seed = CASES.index((edge_cost, k, directions, grid))
     u, land, geo = make_chart(3000 + seed, grid, zeros=seed % 3 == 0)
     opts = dict(land=land, neighbourhood=k, directions=directions, edge_cost=edge_cost, **geo)
@@ -68,16 +72,21 @@ def test_auto_picks_landmarks_then_bidirectional():
     assert st["count"] == 3 and st["bytes_per_pixel"] == 12.0 and len(st["pixels"]) == 3
 
 
-def test_landmarks_prune_and_bidirectional_splits_the_work():
-    """On a uniform sea both methods settle far fewer pixels than Dijkstra, same cost."""
+def test_landmarks_prune_and_bidirectional_splits_the_work(monkeypatch):
+    """On a uniform sea both methods settle far fewer pixels than Dijkstra, same cost; the
+    A* potential prunes further."""
     u = np.ones((200, 200))
     u[80:120, 98:102] = np.inf  # a wall to go round
     chart = seaway.prepare(u, edge_cost="mean", landmarks=4)
     d = chart.route((100, 40), (100, 160), method="dijkstra")
-    for method, share in (("bidirectional", 0.85), ("landmarks", 0.5)):
+    for method, share in (("bidirectional", 0.5), ("landmarks", 0.5)):  # uniform: low contrast
         r = chart.route((100, 40), (100, 160), method=method)
         assert r.cost == pytest.approx(d.cost, rel=RTOL)
         assert r.stats["settled"] < share * d.stats["settled"], method
+    monkeypatch.setattr(seaway._exact, "ASTAR_CONTRAST", 0.0)
+    plain = seaway.prepare(u, edge_cost="mean").route((100, 40), (100, 160), method="bidirectional")
+    assert plain.cost == pytest.approx(d.cost, rel=RTOL)
+    assert r.stats["settled"] < plain.stats["settled"] < 0.85 * d.stats["settled"]
 
 
 def test_entered_pixel_model_bidirectional():
@@ -159,7 +168,7 @@ def test_cancel_token_stops_bidirectional_and_landmark_building():
     token.set()
     engine = chart.model.engine(chart)
     with pytest.raises(KeyboardInterrupt, match="search cancelled"):
-        chart._router.route_bidirectional(engine, 0, u.size - 1, token)
+        chart._router.route_bidirectional(engine, 0, u.size - 1, True, token)
     with pytest.raises(KeyboardInterrupt, match="search cancelled"):
         chart._router.build_landmarks(engine, 2, 0, token)
     full = chart.cost_field((0, 0))

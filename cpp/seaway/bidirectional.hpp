@@ -50,6 +50,9 @@ struct Rounds {
   double mu_part[2][2] = {};
   std::int64_t meet_part[2][2] = {};
   bool empty[2][2] = {};
+  // With a potential the keys are reduced: stop once top_f + top_b >= mu + p(t) - p(s) (plus a
+  // relative 1e-12 against the potentials' rounding).
+  double mu_offset = 0, mu_slack = 0;
 
   // Wait until the other side has passed as many barriers as this one; false on abort.
   bool barrier(int self, int& passed) {
@@ -75,10 +78,11 @@ struct Meeting {
 };
 
 // One side of the search. Backward == true walks the steps into each pixel.
-template <bool Backward, class Queue, class Model>
+template <bool Backward, class Queue, class Model, class Potential>
 SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::int64_t origin,
-                               LazyLabels& mine, const LazyLabels& other, Queue heap, double span,
-                               detail::Rounds& rounds, Meeting& meet, const std::atomic<bool>* cancel) {
+                               LazyLabels& mine, const LazyLabels& other, Queue heap, double width, double span,
+                               const Potential& pot, double shift, detail::Rounds& rounds,
+                               Meeting& meet, const std::atomic<bool>* cancel) {
   constexpr int self = Backward ? 1 : 0;
   const Grid& g = pg.grid();
   const std::vector<Offset>& st = pg.stencil();
@@ -94,10 +98,20 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
   SearchStats stats;
   std::vector<std::uint32_t> settled_now;  // settled in this round
   std::size_t round_peak = 0;
+  // The key: the label, or with a potential p the reduced label d + p(v) - p(s) forward and
+  // d - p(v) + p(t) backward (>= 0; clamped against rounding).
+  auto key = [&](std::int64_t v, double d) {
+    if (!pot.active()) return d;
+    return std::max(0.0, Backward ? d - pot(v) + shift : d + pot(v) - shift);
+  };
   heap.push({0.0, std::uint32_t(origin)});
   HeapEntry pending{0, 0};  // popped, above the round's bound: first of the next round
   bool has_pending = false;
-  double bound = 4 * span, mu = inf;
+  // Rounds of a few steps' cost, later 1/32 of the radius: few barriers, little overshoot. With
+  // a potential, reduced keys grow by as little as `width` a step: rounds of 64 such steps,
+  // later 1/16 of the reduced radius.
+  const double step = pot.active() ? 64 * width : 4 * span, growth = pot.active() ? 1.0 / 16 : 1.0 / 32;
+  double bound = step, mu = inf;
   int passed = 0;
 
   auto settle = [&](std::int64_t v, double dv) {
@@ -114,7 +128,7 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
       const double nd = dv + c;
       if (nd < mine.get(w)) {  // false for settled pixels: their label is negative
         mine.set(w, nd, int(o));
-        heap.push({nd, std::uint32_t(w)});
+        heap.push({key(w, nd), std::uint32_t(w)});
       }
     };
     if (interior && clear[v] > h) {  // every step to or from v exists and is free
@@ -210,20 +224,42 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
         meet.pixel = rounds.meet_part[k][s];
         meet.cost = mu;
       }
-    if (rounds.empty[k][0] || rounds.empty[k][1] || rounds.top[k][0] + rounds.top[k][1] >= mu) break;
-    // Rounds of a few steps' cost, later 1/32 of the radius: few barriers, little overshoot.
-    bound += std::max(4 * span, bound / 32);
+    if (rounds.empty[k][0] || rounds.empty[k][1] ||
+        rounds.top[k][0] + rounds.top[k][1] >= mu + rounds.mu_offset + rounds.mu_slack * mu)
+      break;
+    bound += std::max(step, bound * growth);
   }
   stats.heap_peak = heap.peak();
   stats.state_bytes = heap.capacity_bytes() + round_peak * sizeof(std::uint32_t);
   return stats;
 }
 
-// Least-cost route from start to target by bidirectional Dijkstra on two threads, for static
-// models only (the caller checks).
-template <class Model>
+// No potential: plain bidirectional Dijkstra.
+struct NoPotential {
+  bool active() const { return false; }
+  double operator()(std::int64_t) const { return 0; }
+};
+
+// The consistent average potential of two lower bounds (to the target, from the start):
+// p(v) = scale x (to_target(v) - from_start(v)) / 2. With scale = 1 - eps, every step's reduced
+// cost c - p(v) + p(w) is at least eps x c (less the bounds' rounding), forward and backward.
+template <class Bound>
+struct AveragePotential {
+  Bound to_target, from_start;
+  double scale;
+  bool active() const { return true; }
+  double operator()(std::int64_t v) const { return scale * 0.5 * (to_target(v) - from_start(v)); }
+};
+
+// Least-cost route from start to target by bidirectional search on two threads, for static
+// models only (the caller checks). `reduced_floor`: every step's reduced cost is at least this
+// share of the cheapest step (1 without a potential); `extra_span`: the most a step's key may
+// rise above its cost (0 without a potential).
+template <class Model, class Potential = NoPotential>
 RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64_t start,
-                                std::int64_t target, const std::atomic<bool>* cancel = nullptr) {
+                                std::int64_t target, const std::atomic<bool>* cancel = nullptr,
+                                const Potential& pot = {}, double reduced_floor = 1.0,
+                                double extra_rate = 0.0) {
   pg.check(start);
   pg.check(target);
   if (start == target || pg.clearance()[start] == 0 || pg.clearance()[target] == 0)
@@ -233,14 +269,19 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
   const StepBounds b = model.bounds(pg.passability());
   const double rmin = b.per_length ? pg.shortest_step() : 1.0;
   const double rmax = b.per_length ? pg.longest_step() : 1.0;
-  const double width = 0.999999 * b.min_rate * rmin;
-  const double span = 1.000001 * b.max_rate * rmax + 1e-300;
+  const double width = 0.999999 * reduced_floor * b.min_rate * rmin;
+  const double span = 1.000001 * (b.max_rate + extra_rate) * rmax + 1e-300;
   const bool buckets = width > 0 && span < inf && BucketQueue::buckets_needed(width, span) < 65536;
+  const double shift_f = pot.active() ? pot(start) : 0.0, shift_b = pot.active() ? pot(target) : 0.0;
 
   LazyLabels fw(g.size()), bw(g.size());
   fw.set(start, 0.0);
   bw.set(target, 0.0);
   detail::Rounds rounds;
+  if (pot.active()) {
+    rounds.mu_offset = shift_b - shift_f;
+    rounds.mu_slack = 1e-12;
+  }
   Meeting meet;
   SearchStats sides[2];
   std::exception_ptr errors[2];
@@ -250,9 +291,12 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
     const LazyLabels& theirs = B ? fw : bw;
     const std::int64_t origin = B ? target : start;
     try {
+      const double shift = B ? shift_b : shift_f;
       sides[B] = buckets
-          ? bidirectional_side<B>(pg, model, origin, mine, theirs, BucketQueue(width, span), span, rounds, meet, cancel)
-          : bidirectional_side<B>(pg, model, origin, mine, theirs, RadixHeap{}, span, rounds, meet, cancel);
+          ? bidirectional_side<B>(pg, model, origin, mine, theirs, BucketQueue(width, span), width, span,
+                                  pot, shift, rounds, meet, cancel)
+          : bidirectional_side<B>(pg, model, origin, mine, theirs, RadixHeap{}, width, span, pot, shift,
+                                  rounds, meet, cancel);
     } catch (...) {
       errors[B] = std::current_exception();
       rounds.abort.store(true);
@@ -305,6 +349,23 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
   }
   out.cumulative.back() = out.cost;
   return out;
+}
+
+// Bidirectional A*: the average potential of the straight-line (great-circle) bounds to the
+// target and from the start, times the chart's smallest cost per unit length, scaled by 0.95
+// so that the bucket queue stays exact (as exact A* in router.hpp). Models priced per length
+// only (max, mean, integral); others run plain bidirectional Dijkstra.
+template <class Model>
+RouteResult route_bidirectional_astar(PreparedGrid& pg, const Model& model, std::int64_t start,
+                                      std::int64_t target, const std::atomic<bool>* cancel = nullptr) {
+  pg.check(start);
+  pg.check(target);
+  const StepBounds b = model.bounds(pg.passability());
+  if (!b.per_length || !(b.min_rate > 0)) return route_bidirectional(pg, model, start, target, cancel);
+  constexpr double eps = 0.05;
+  const AveragePotential<DistanceBound> pot{DistanceBound(pg.grid(), target, b.min_rate),
+                                            DistanceBound(pg.grid(), start, b.min_rate), 1 - eps};
+  return route_bidirectional(pg, model, start, target, cancel, pot, eps, b.min_rate);
 }
 
 }  // namespace seaway

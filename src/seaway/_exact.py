@@ -5,7 +5,8 @@ Methods (all exact except weighted A*):
 * "astar": A* with the straight-line bound (distance x the chart's smallest cost); with
   weight=w > 1, weighted A* (cost <= w x optimum).
 * "bidirectional": Dijkstra from the start and from the end at once on two threads, stopped
-  by the exact rule top_f + top_b >= best meeting (cpp/seaway/bidirectional.hpp). Static
+  by the exact rule top_f + top_b >= best meeting (cpp/seaway/bidirectional.hpp); on charts
+  whose costs span at most a factor ASTAR_CONTRAST, bidirectional A* (average potential). Static
   raster models only (max, mean, integral, entered pixel): the backward search charges each
   step the forward step's cost, which needs costs that do not depend on the arrival time.
 * "landmarks": A* with the landmark (ALT) bound, after PreparedChart.prepare_landmarks() (or
@@ -26,6 +27,11 @@ import numpy as np
 from .models import EDGE_COSTS, EdgeCost
 
 METHODS = ("auto", "dijkstra", "astar", "bidirectional", "landmarks")
+#: "bidirectional" adds the A* potential (the average of the distance bounds to the end and from
+#: the start, x the chart's smallest cost) when the chart's passable costs span at most this
+#: factor: on the summer chart (costs 1-2) it settles 45 % fewer pixels than without; on the
+#: winter chart (1-30) the bound is too weak to pay for itself (benchmarks/README.md).
+ASTAR_CONTRAST = 2.0
 
 
 def heuristic_weight(method, weight) -> float:
@@ -78,10 +84,23 @@ def search(prepared, engine, s: int, e: int, method: str, weight: float, model, 
     """(cost, flat path, stats, cost to each path pixel, per-step values) by `method`."""
     router = prepared._router
     if method == "bidirectional":
-        return router.route_bidirectional(engine, s, e, cancel)
+        return router.route_bidirectional(engine, s, e, _low_contrast(prepared), cancel)
     if method == "landmarks":
         return router.route_landmarks(engine, prepared._landmarks[model.name], s, e, cancel)
     return router.route(engine, s, e, weight, cancel)
+
+
+def _low_contrast(prepared) -> bool:
+    """The chart's passable costs span at most ASTAR_CONTRAST (computed once per chart)."""
+    span = prepared.__dict__.get("_cost_span")
+    if span is None:
+        u = prepared.chart.values
+        ok = np.isfinite(u) & (u >= 0)
+        if prepared.chart.land is not None:
+            ok &= prepared.chart.land == 0
+        lo, hi = (float(u[ok].min()), float(u[ok].max())) if ok.any() else (0.0, 0.0)
+        span = prepared.__dict__["_cost_span"] = hi / lo if lo > 0 else np.inf
+    return span <= ASTAR_CONTRAST
 
 
 def build_landmarks(prepared, count, model, seed_rc, cancel):
