@@ -13,10 +13,12 @@ Methods (all exact except weighted A*):
   prepare(..., landmarks=N)) for this model; max, mean and integral only: the bound
   |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
   mean of the two ends x the step's length; the integral over the same segment).
-* "auto" (the default): "astar" if a weight is given; "landmarks" when the chart has landmarks for the query's model,
-  else "bidirectional" for a static raster model, else "astar" (time-dependent models).
-  On the benchmark charts this never settles more pixels than Dijkstra, and takes less time
-  (benchmarks/README.md)."""
+* "auto" (the default): "astar" if a weight is given; "landmarks" when the chart has landmarks
+  for the query's model; else "astar" on a low-contrast chart (passable costs within a factor
+  ASTAR_CONTRAST, e.g. summer ice: the bound is tight, and A* on one thread settles about as
+  few pixels as bidirectional A* on two, with less work per pixel); else "bidirectional" for a
+  static raster model; else "astar" (time-dependent models). On the benchmark charts this is
+  never slower than Dijkstra (benchmarks/README.md)."""
 
 from __future__ import annotations
 
@@ -61,7 +63,9 @@ def resolve(prepared, model, method: str, weight=None) -> str:
     if method == "auto":
         if model.name in prepared._landmarks and _static(model):
             return "landmarks"
-        return "bidirectional" if _static(model) else "astar"
+        if _static(model) and not (model.name in EDGE_COSTS and _low_contrast(prepared)):
+            return "bidirectional"
+        return "astar"
     if method == "bidirectional" and not _static(model):
         raise ValueError(
             f"method='bidirectional' needs a static raster model (edge_cost in {tuple(EDGE_COSTS)}); "
