@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "seaway/cost_models.hpp"
+#include "seaway/ice_time.hpp"
 #include "seaway/router.hpp"
 #include "seaway/waves.hpp"
 #include "seaway/weather.hpp"
@@ -140,10 +141,38 @@ struct WaveDangerModel : NoStepValues {
   }
 };
 
+// Hours through a season of ice charts (issue 10): hours per km, float32 (frames, rows, cols),
+// frame k valid from valid_from_h[k] hours after departure; waiting allowed (ice_time.hpp).
+struct IceSeasonModel {
+  pybind11::object keep;  // the hours-per-km frames
+  IceSeries series;
+  std::vector<double> valid_from_h;
+  std::int64_t rows = 0, cols = 0;
+
+  template <class F>
+  auto visit(const PreparedGrid& g, F&& f) const {
+    check_on_grid(g, rows, cols, "the season of ice charts");
+    IceSeries s = series;
+    s.valid_from_h = valid_from_h.data();
+    return f(IceSeasonTime(g.grid(), g.stencil(), s));
+  }
+  // The hour each step leaves its first pixel: after the arrival there, by any wait.
+  StepValues step_values(const IceSeasonTime& m, const PreparedGrid& g, const RouteResult& out) const {
+    std::vector<double> depart;
+    for (std::size_t i = 0; i < out.offsets.size(); ++i) {
+      const std::int64_t a = out.path[i], row = a / g.grid().cols;
+      const int o = out.offsets[i];
+      depart.push_back(m.step(a, o, g.lengths().row(row)[o], out.cumulative[i]).depart_h);
+    }
+    return {{"depart_h", depart}};
+  }
+};
+
 // Every model a query takes: Router.route and Router.field get one overload each.
 template <class... M>
 struct ModelList {};
 using Models = ModelList<RasterModel<MaxCost>, RasterModel<MeanCost>, RasterModel<IntegralCost>,
-                         RasterModel<EnteredPixelCost>, TravelTimeModel, FuelModel, WaveDangerModel>;
+                         RasterModel<EnteredPixelCost>, TravelTimeModel, FuelModel, WaveDangerModel,
+                         IceSeasonModel>;
 
 }  // namespace seaway

@@ -94,6 +94,27 @@ std::shared_ptr<ForecastFields> forecast(double first_h, double step_h, const py
   return out;
 }
 
+// A season of ice charts as hours per km (read in place, kept alive) and validity times.
+IceSeasonModel ice_season(const Field& hours_per_km, std::vector<double> valid_from_h,
+                          double min_hours_per_km) {
+  if (hours_per_km.ndim() != 3 || hours_per_km.shape(0) < 1)
+    throw std::invalid_argument("hours_per_km must be a (time, rows, cols) array");
+  if (std::int64_t(valid_from_h.size()) != hours_per_km.shape(0))
+    throw std::invalid_argument("give one validity time per chart");
+  for (std::size_t k = 1; k < valid_from_h.size(); ++k)
+    if (!(valid_from_h[k] > valid_from_h[k - 1])) throw std::invalid_argument("chart times must increase");
+  if (!(valid_from_h[0] <= 0)) throw std::invalid_argument("the first chart must be valid at departure");
+  if (!(min_hours_per_km > 0 && min_hours_per_km < inf))
+    throw std::invalid_argument("min_hours_per_km must be positive and finite");
+  IceSeasonModel m;
+  m.keep = hours_per_km;
+  m.series = {hours_per_km.shape(0), nullptr, hours_per_km.data(), min_hours_per_km};
+  m.valid_from_h = std::move(valid_from_h);
+  m.rows = hours_per_km.shape(1);
+  m.cols = hours_per_km.shape(2);
+  return m;
+}
+
 }  // namespace
 
 void register_models(py::module_& m) {
@@ -143,4 +164,7 @@ void register_models(py::module_& m) {
              return WaveDangerModel{{}, f, ship_length_m, speed_kn};
            }),
            py::arg("forecast"), py::arg("ship_length_m"), py::arg("speed_kn"));
+  py::class_<IceSeasonModel>(m, "IceSeasonModel", "Hours through a season of ice charts (waiting allowed)")
+      .def(py::init(&ice_season), py::arg("hours_per_km").noconvert(), py::arg("valid_from_h"),
+           py::arg("min_hours_per_km"));
 }

@@ -207,3 +207,55 @@ def refraction_optimum(u1, u2, a, b, y0):
         lo, hi = (mid, hi) if slope(mid) < 0 else (lo, mid)
     x = (lo + hi) / 2
     return u1 * np.hypot(x - a[1], y0 - a[0]) + u2 * np.hypot(b[1] - x, b[0] - y0), x
+
+
+# -- A season of charts: time-dependent steps with waiting ------------------------------------
+def season_step_arrival(hours_per_km, valid_from_h, p, q, t, length):
+    """Earliest arrival at q for a ship at p at time t (h), waiting allowed: the ship leaves at
+    t or at any later chart time; each departure d crosses the chart valid at d (the last one
+    whose time is <= d), taking length * sum(fraction x hours per km) over the step's pieces,
+    closed when any pixel touched by the closed segment is inf in that chart."""
+    di, dj = q[0] - p[0], q[1] - p[1]
+    best = math.inf
+    for d in [t] + [float(x) for x in valid_from_h if x > t]:
+        k = max(i for i, x in enumerate(valid_from_h) if x <= d) if d >= valid_from_h[0] else 0
+        h = hours_per_km[k]
+        if any(not np.isfinite(h[p[0] + a, p[1] + b]) for a, b in touched(di, dj)):
+            continue
+        dur = length * sum(f * float(h[p[0] + a, p[1] + b]) for (a, b), f in pieces(di, dj))
+        best = min(best, d + dur)
+    return best
+
+
+def season_path_arrival(hours_per_km, valid_from_h, path, length_of):
+    """Arrival time along a pixel path from time 0; length_of(p, q) gives a step's length."""
+    t = 0.0
+    for p, q in zip(path[:-1], path[1:]):
+        t = season_step_arrival(hours_per_km, valid_from_h, p, q, t, length_of(p, q))
+        if not math.isfinite(t):
+            return math.inf
+    return t
+
+
+def season_best_arrival(hours_per_km, valid_from_h, start, end, k, length_of):
+    """The earliest arrival over every simple path of k x k stencil steps (depth-first): with
+    waiting allowed no path needs to revisit a pixel, since waiting there dominates the loop."""
+    _, rows, cols = hours_per_km.shape
+    offsets = stencil_offsets(k, "full")
+    best = math.inf
+
+    def walk(p, t, seen):
+        nonlocal best
+        if p == end:
+            best = min(best, t)
+            return
+        for di, dj in offsets:
+            q = (p[0] + di, p[1] + dj)
+            if not (0 <= q[0] < rows and 0 <= q[1] < cols) or q in seen:
+                continue
+            a = season_step_arrival(hours_per_km, valid_from_h, p, q, t, length_of(p, q))
+            if a < best:  # arrival times only grow along a path
+                walk(q, a, seen | {q})
+
+    walk(start, 0.0, {start})
+    return best

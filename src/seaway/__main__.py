@@ -1,6 +1,7 @@
 """Command line: ``seaway route CHART --from LAT,LON --to LAT,LON`` routes a ship across a chart
 file; ``seaway demo`` through the built-in synthetic winter Kara Sea chart, from the Kara Gate to
-the Vilkitsky Strait; ``seaway bench`` times the engine on the synthetic benchmark chart."""
+the Vilkitsky Strait; ``seaway bench`` times the engine on the synthetic benchmark chart;
+``seaway season DATE=CHART ... --from LAT,LON --to LAT,LON`` routes through dated ice charts."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ import time
 
 import numpy as np
 
-from . import _cli, charts
+from . import _cli, _cli_season, charts
 from ._engine import route
 from .errors import NoRouteError
 
@@ -51,6 +52,7 @@ def _parser() -> argparse.ArgumentParser:
                       help="search algorithm (all exact; default auto: the fastest for the query)")
     demo.add_argument("--out", metavar="FILE", help="also write the route as GeoJSON to FILE")
     _cli.add_commands(commands, _neighbourhood)
+    _cli_season.add_season_command(commands, _neighbourhood)
     return parser
 
 
@@ -142,7 +144,8 @@ def _write_atomically(path: str, text: str) -> None:
 
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
-    run = {"demo": demo, "route": _cli.run_route, "bench": _cli.run_bench}[args.command]
+    run = {"demo": demo, "route": _cli.run_route, "bench": _cli.run_bench,
+           "season": _cli_season.run_season}[args.command]
     try:
         return run(args)
     except (NoRouteError, ValueError, OSError, ImportError) as exc:

@@ -72,8 +72,12 @@ class FuelModel:
 class WaveDangerModel:
     def __init__(self, forecast: Forecast, ship_length_m: float, speed_kn: float) -> None: ...
 
+class IceSeasonModel:
+    def __init__(self, hours_per_km: npt.NDArray[np.float32], valid_from_h: list[float],
+                 min_hours_per_km: float) -> None: ...
+
 Model = (MaxCost | MeanCost | IntegralCost | EnteredPixelCost | TravelTimeModel | FuelModel
-         | WaveDangerModel)
+         | WaveDangerModel | IceSeasonModel)
 
 class Router:
     def route(self, model: Model, start: int, target: int, heuristic_weight: float,

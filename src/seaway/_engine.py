@@ -219,6 +219,7 @@ class PreparedChart:
         method = _exact.resolve(self, model, method, weight)
         chart = self.chart
         s, e = locate(chart, start, "start"), locate(chart, end, "end")
+        model.check_ends(self, s, e)
         total, path, stats, cumulative, per_step = self._search(s, e, w, model, method)
         if not np.isfinite(total):
             if isinstance(model, EdgeCost):
@@ -239,6 +240,7 @@ class PreparedChart:
         engine = model.engine(self)
         chart = self.chart
         s = locate(chart, start, "start")
+        model.check_ends(self, s, None)
         field, _ = interruptible(lambda cancel: self._router.field(engine, self._flat(s), cancel))
         if isinstance(model, EdgeCost) and not np.isfinite(field).all():
             _check_overflow(chart, self.neighbourhood)

@@ -230,3 +230,39 @@ def _near_polyline(rows, cols, knots, width):
         t = np.clip(((r - a[0]) * ab[0] + (c - a[1]) * ab[1]) / (ab @ ab), 0, 1)
         np.minimum(best, np.hypot(r - a[0] - t * ab[0], c - a[1] - t * ab[1]), out=best)
     return best <= width
+
+
+def kara_season(days=7, start="2026-07-01", melt_m_per_day=0.1, melted_m=0.5, shape=(380, 460)):
+    """A synthetic week (or `days`) of daily ice charts of the Kara Sea breaking up: kara_sea's
+    late-winter ice thinned by `melted_m` on the first chart and `melt_m_per_day` more each
+    day; ice thinner than 0.8 m opens in proportion (CT = round(CT x h / 0.8)), the stage
+    follows the thickness. A season Dataset for
+    seaway.ice.season (time, lat, lon): CT (tenths), SA (WMO code, NaN where ice free),
+    thickness (m), land; one chart a day at 00 UTC from `start`. Synthetic: never navigate by it."""
+    import xarray as xr
+
+    if not (isinstance(days, (int, np.integer)) and days >= 1):
+        raise ValueError(f"days must be a whole number of days >= 1, got {days!r}")
+    if not (np.isfinite(melt_m_per_day) and melt_m_per_day >= 0):
+        raise ValueError(f"melt_m_per_day must be >= 0 (m of ice a day), got {melt_m_per_day!r}")
+    ds = kara_sea(shape)
+    h0, ct0 = ds.ice_thickness.values, ds.sea_ice_concentration.values
+    ct, sa, h = [], [], []
+    for d in range(days):
+        hd = np.maximum(h0 - melted_m - melt_m_per_day * d, 0).astype(np.float32)
+        c = np.rint(ct0 * np.clip(hd / 0.8, 0, 1)).astype(np.float32)
+        hd[c == 0] = 0
+        s = _stage_from_thickness(hd, np.zeros(hd.shape, bool))
+        s[c == 0] = np.nan
+        land = ds.land.values
+        c[land], s[land], hd[land] = np.nan, np.nan, np.nan
+        ct.append(c), sa.append(s), h.append(hd)
+    dims = ("time", "lat", "lon")
+    time = np.datetime64(start, "D") + np.arange(days).astype("timedelta64[D]")
+    return xr.Dataset({"CT": (dims, np.array(ct), {"units": "0.1", "long_name": "total concentration"}),
+                       "SA": (dims, np.array(sa), {"long_name": "stage of development (WMO code)"}),
+                       "thickness": (dims, np.array(h), {"units": "m", "standard_name": "sea_ice_thickness"}),
+                       "land": (("lat", "lon"), ds.land.values)},
+                      coords={"time": time.astype("datetime64[ns]"), "lat": ds.lat, "lon": ds.lon},
+                      attrs={"title": f"Kara Sea breaking up: {days} synthetic daily charts from {start}",
+                             "comment": "synthetic (seaway.charts.kara_season); do not navigate by it"})

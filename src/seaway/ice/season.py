@@ -1,0 +1,264 @@
+"""A season of ice charts: routes through ice that changes during the voyage (issue 10).
+
+A season is an ice chart Dataset (see seaway.ice) with a `time` dimension: CT (tenths) with SA
+(WMO stage) and/or `thickness` (m), and `land`. Build one from SIGRID-3 files with their dates
+(`read_season`) or open a NetCDF with a time dimension (`as_season` also takes CF
+`sea_ice_area_fraction` and `sea_ice_thickness`, e.g. an ocean model's aice and hice).
+`SeasonGrid(season).prepare()` is the chart to route on and `seaway.models.IceSeasonTime` the
+cost model; `route_season` and `arrival_field` wrap the two.
+
+How a step reads the charts: chart k is valid from its time until the next chart's time (the
+last one for ever after, with a warning past its usual validity) — piecewise constant, as ice
+services mean "valid at". A step started at time t crosses the ice of the chart valid at t, at
+the class's speed there; its duration is the exact time of the straight step through that
+chart (the line integral of 1 / speed over the pixels it crosses), and it is closed if its
+segment touches a pixel closed in that chart.
+
+Waiting is allowed, anywhere the ship has reached (including its start: a later departure),
+and it is not optional: without it the graph is not FIFO — leaving just before a chart that
+clears the ice would arrive later than leaving with it — and no label-setting search is exact
+(cpp/seaway/ice_time.hpp). Routes report every wait (route.stats["waits"]); a ship waits where
+it is, also in ice its class may not enter meanwhile: the charts are not drift forecasts.
+
+Speed of a class in a chart's ice (knots), `speed=`:
+* "andreeva" (default): paper 002 through seaway.ice.andreeva, V = F * V0, F = f2 * other_factor
+  with f2 = 1 - h / h_pass (h_pass the class's Table-1 thickness unless given); h is the
+  `thickness` layer if the season has one, else the governing stage's typical thickness (the
+  upper end of its WMO range by default: conservative; `stage_thickness="mid"` the middle);
+  `other_factor` is f1 * f3 (1 by default; e.g. andreeva.f1(draft, depth) for depth).
+* a table {WMO stage: knots} or {stage: {max CT tenths: knots, ...}} read on the governing stage
+  (55 ice free, 99 unknown) and total concentration; a stage the table lacks raises.
+Either way, unknown ice (NaN CT, stage 99, old ice without a thickness), land and pixels off the
+chart are closed, and with `concentration_limit=True` (default) so is ice above the class's
+independent-navigation concentration (paper 000 Table 1: Arc4-Arc6 6/10, Arc7-Arc8 8/10).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from .._chart import as_chart
+from .._engine import PreparedChart, _check_options
+from ..models import EdgeCost, IceSeasonTime
+from . import andreeva
+from .classes import get_class
+from .codes import ICE_FREE, STAGE_CODES
+from .impact import governing_stage
+
+__all__ = ["read_season", "as_season", "SeasonGrid", "andreeva_speed_kn", "table_speed_kn",
+           "route_season", "arrival_field"]
+
+
+def read_season(charts, grid, **read_kwargs) -> xr.Dataset:
+    """SIGRID-3 files with their dates -> a season Dataset on `grid` (seaway.ice.grids).
+    charts: {date: path} or [(date, path), ...] in date order; each chart is valid from its
+    date (any form numpy.datetime64 takes) until the next one's. read_kwargs go to read_sigrid3."""
+    from .sigrid import read_sigrid3
+
+    items = list(charts.items()) if isinstance(charts, dict) else list(charts)
+    if not items:
+        raise ValueError("give at least one (date, path) chart")
+    try:
+        dates = [np.datetime64(d, "s") for d, _ in items]
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"chart dates must be dates such as '2026-07-01' or datetime64: {exc}") from None
+    _check_increasing(np.array(dates), "sorted(charts)")
+    frames = [read_sigrid3(p, grid, **read_kwargs) for _, p in items]
+    keep = ["CT", "CA", "SA", "land", "off_chart"]
+    ds = xr.concat([f[keep] for f in frames], dim="time", coords="minimal", compat="override")
+    return ds.assign_coords(time=dates)
+
+
+def _check_increasing(t, fix):
+    if t.size > 1 and not np.all(t[1:] > t[:-1]):
+        k = int(np.flatnonzero(~(t[1:] > t[:-1]))[0])
+        raise ValueError(f"chart times must be unique and increasing, but {t[k]} is followed by "
+                         f"{t[k + 1]}: {fix}, and drop duplicate dates")
+
+
+def as_season(season) -> xr.Dataset:
+    """A season Dataset from a Dataset or NetCDF path: CF sea_ice_area_fraction (fraction or %)
+    becomes CT in tenths, sea_ice_thickness becomes `thickness` (m); times must increase."""
+    if not isinstance(season, xr.Dataset):
+        from ..forecast import open_forecast
+
+        season = open_forecast(season)
+    ds = season
+    by_std = {v.attrs.get("standard_name"): k for k, v in ds.data_vars.items()}
+    if "CT" not in ds and "sea_ice_area_fraction" in by_std:
+        frac = ds[by_std["sea_ice_area_fraction"]]
+        scale = 0.1 if str(frac.attrs.get("units", "")).strip() in ("%", "percent") else 10.0
+        ds = ds.assign(CT=(frac * scale).clip(0.0, 10.0))  # models' round-off: -1e-6 ... 1 + 1e-6
+    if "thickness" not in ds and "sea_ice_thickness" in by_std:
+        ds = ds.assign(thickness=ds[by_std["sea_ice_thickness"]])
+    if "time" not in ds.dims:
+        raise ValueError("a season needs a `time` dimension (one chart per time); for one chart, "
+                         "add it with ds.expand_dims(time=[date])")
+    if "CT" not in ds or not ({"SA", "thickness"} & set(ds)):
+        raise ValueError(f"a season needs CT (tenths, or CF sea_ice_area_fraction) and SA (WMO "
+                         f"stage) or thickness (m, or CF sea_ice_thickness); it has {sorted(ds.data_vars)}")
+    if "land" not in ds:
+        ds = ds.assign(land=xr.zeros_like(ds["CT"], dtype=bool))
+    _check_increasing(ds["time"].values, "ds.sortby('time')")
+    return ds
+
+
+def _closed(frame, ct, ice_class, concentration_limit):
+    """Where no class may go: land, off the chart, unknown concentration, over the class's limit."""
+    shut = np.isnan(ct)
+    for name in ("land", "off_chart"):
+        if name in frame:
+            shut |= np.asarray(frame[name].values, dtype=bool)
+    if concentration_limit:
+        shut |= ct > get_class(ice_class).max_concentration
+    return shut
+
+
+def andreeva_speed_kn(frame, ice_class, v0_kn, *, h_pass_m=None, stage_thickness="upper",
+                      other_factor=1.0, concentration_limit=True) -> np.ndarray:
+    """Paper 002's V = F * V0 (knots) on one chart of a season; 0 where closed."""
+    ct = np.asarray(frame["CT"].values, dtype=float)
+    h_pass = get_class(ice_class).h_pass if h_pass_m is None else float(h_pass_m)
+    if not h_pass > 0:
+        raise ValueError(f"{get_class(ice_class).name} passes no ice (h_pass 0); give h_pass_m")
+    if "thickness" in frame:
+        h = np.asarray(frame["thickness"].values, dtype=float)
+    else:
+        if stage_thickness not in ("upper", "mid"):
+            raise ValueError(f"stage_thickness must be 'upper' or 'mid', got {stage_thickness!r}")
+        stage = governing_stage(frame).values
+        h = np.full(ct.shape, np.nan)
+        for code, (_, (lo, hi)) in STAGE_CODES.items():
+            h[stage == code] = hi if stage_thickness == "upper" else 0.5 * (lo + hi)
+    h = np.where(ct == 0, 0.0, h)
+    speed = andreeva.f2(h, h_pass) * np.asarray(other_factor, dtype=float) * v0_kn
+    return np.where(_closed(frame, ct, ice_class, concentration_limit), 0.0, speed)
+
+
+def table_speed_kn(frame, ice_class, table, *, concentration_limit=True) -> np.ndarray:
+    """Speeds (knots) from a user table on one chart: {stage: kn} or {stage: {max CT: kn}}."""
+    ct = np.asarray(frame["CT"].values, dtype=float)
+    stage = governing_stage(frame).values
+    speed = np.zeros(ct.shape)
+    known = np.isnan(stage)
+    for code, entry in table.items():
+        hit = stage == float(code)
+        known |= hit
+        if isinstance(entry, dict):
+            left = hit.copy()
+            for limit in sorted(entry):
+                take = left & (ct <= float(limit))
+                speed[take], left = float(entry[limit]), left & ~take
+            speed[left] = 0.0  # concentrations above the table's last row: closed
+        else:
+            speed[hit] = float(entry)
+    if not known.all():
+        missing = sorted({float(c) for c in np.unique(stage[~known])})
+        raise ValueError(f"the speed table has no entry for stages {missing[:10]} met in the "
+                         f"season (e.g. {ICE_FREE} ice free, 99 unknown); add them (0 knots closes them)")
+    if not np.all(np.isfinite(speed) & (speed >= 0)):
+        raise ValueError("speeds in the table must be finite knots >= 0")
+    return np.where(_closed(frame, ct, ice_class, concentration_limit), 0.0, speed)
+
+
+class SeasonGrid:
+    """A season of ice charts on one grid: the chart to route on (prepare()) and, for a class,
+    speed and departure, the engine's frames (hours_per_km()). One prepared chart serves every
+    class and departure; land is where every chart (or `land`) has land or no chart."""
+
+    def __init__(self, season, land=None):
+        self.ds = as_season(season)
+        self.times = self.ds["time"].values
+        ct = self.ds["CT"]
+        template = ct.isel(time=0, drop=True)
+        self.template = template.drop_vars([c for c in template.coords if c not in template.dims])
+        self.shape = self.template.shape
+        dry = np.zeros(self.shape, bool)
+        for name in ("land", "off_chart"):
+            if name in self.ds:
+                a = self.ds[name].astype(bool)
+                a = a.all("time") if "time" in a.dims else a
+                dry |= a.transpose(*self.template.dims).values
+        if land is not None:
+            land = np.asarray(getattr(land, "values", land), bool)
+            if land.shape != self.shape:
+                raise ValueError(f"land has {land.shape} pixels but the season's charts {self.shape}: "
+                                 "give a land mask on the charts' grid")
+            dry |= land
+        self.dry = dry
+        spacing = np.diff(self.times) / np.timedelta64(1, "h")
+        #: How long the last chart is taken as valid: the series' median spacing (a day for one chart).
+        self.last_valid_h = float(np.median(spacing)) if spacing.size else 24.0
+
+    def prepare(self, neighbourhood=5) -> PreparedChart:
+        """The season's grid as a chart (lat/lon or planar y/x); its static cost is 1 per unit
+        length, the season's model brings its own."""
+        _check_options(neighbourhood, "full")
+        one = self.template.copy(data=np.ones(self.shape, np.float32))
+        chart = as_chart(one, land=self.dry)
+        return PreparedChart._from_chart(chart, neighbourhood, "full", EdgeCost("integral"), "segment")
+
+    def departure_frames(self, departure):
+        """(departure, index of the chart valid then); refuses departures outside the season."""
+        t = self.times
+        try:
+            dep = t[0] if departure is None else np.datetime64(departure)
+        except (TypeError, ValueError):
+            raise ValueError(f"departure must be a date such as '2026-07-01T12' (or a datetime64), "
+                             f"got {departure!r}") from None
+        end = t[-1] + np.timedelta64(int(round(self.last_valid_h * 3600)), "s")
+        if not (t[0] <= dep <= end):
+            raise ValueError(f"departure {dep} is outside the season ({t[0]} to {end}, the last "
+                             "chart's validity): the ice then is unknown; depart within the season "
+                             "or add charts that cover the departure")
+        return dep, int(np.searchsorted(t, dep, side="right")) - 1
+
+    def hours_per_km(self, ice_class, v0_kn, departure=None, speed="andreeva", **speed_options):
+        """(hours per km float32 (frames, rows, cols) from the chart valid at departure on, inf
+        where closed; validity of each in hours after departure; departure)."""
+        if not (np.isfinite(v0_kn) and v0_kn > 0):
+            raise ValueError(f"v0_kn must be a positive speed in knots, got {v0_kn!r}")
+        dep, k0 = self.departure_frames(departure)
+        if not (callable(getattr(speed, "get", None)) or (isinstance(speed, str) and speed == "andreeva")):
+            raise ValueError(f"speed must be 'andreeva' or a table {{stage: knots}}, got {speed!r}")
+        hours = np.empty((self.times.size - k0,) + self.shape, np.float32)
+        for i, k in enumerate(range(k0, self.times.size)):  # frame by frame: no 7-frame float64 copies
+            frame = self.ds.isel(time=k)
+            if isinstance(speed, str):
+                v = andreeva_speed_kn(frame, ice_class, v0_kn, **speed_options)
+            else:
+                v = table_speed_kn(frame, ice_class, speed, **speed_options)
+            hours[i] = andreeva.time_cost(v / v0_kn, v0_kn)
+        valid_from_h = (self.times[k0:] - dep) / np.timedelta64(1, "h")
+        return hours, valid_from_h.astype(float), dep
+
+
+def route_season(season, start, end, *, ice_class="Arc7", v0_kn=12.0, departure=None,
+                 speed="andreeva", land=None, neighbourhood=5, method="astar", **speed_options):
+    """The earliest-arriving route from `start` to `end` through a season of ice charts.
+
+    season: a season Dataset or NetCDF path (see the module docstring and as_season), or a
+        SeasonGrid. ice_class: any class of seaway.ice.classes; v0_kn: its open-water speed (kn).
+    departure: a date within the season (default its first chart's time).
+    speed: "andreeva" (paper 002) or a speed table; speed_options go to andreeva_speed_kn
+        (h_pass_m, stage_thickness, other_factor, concentration_limit) or table_speed_kn.
+    Waiting is allowed (the module docstring says why). Returns a Route whose cost is the
+    passage time in hours, waiting included; see seaway.models.IceSeasonTime for its stats.
+    The same as SeasonGrid(season).prepare().route(start, end, model=IceSeasonTime(...))."""
+    grid = season if isinstance(season, SeasonGrid) else SeasonGrid(season, land)
+    model = IceSeasonTime(grid, ice_class, v0_kn, departure=departure, speed=speed, **speed_options)
+    return grid.prepare(neighbourhood).route(start, end, model=model, method=method)
+
+
+def arrival_field(season, start, *, ice_class="Arc7", v0_kn=12.0, departure=None,
+                  speed="andreeva", land=None, neighbourhood=5, **speed_options):
+    """Earliest arrival at every pixel from `start` (hours after departure; inf where never),
+    a DataArray on the season's grid: isochrones of the voyage."""
+    grid = season if isinstance(season, SeasonGrid) else SeasonGrid(season, land)
+    model = IceSeasonTime(grid, ice_class, v0_kn, departure=departure, speed=speed, **speed_options)
+    out = grid.prepare(neighbourhood).cost_field(start, model=model)
+    out.name = "arrival_hours"
+    out.attrs.update(long_name="earliest arrival after departure (waiting allowed)",
+                     departure=str(model.departure), ice_class=model.ice_class)
+    return out
