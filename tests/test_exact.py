@@ -71,7 +71,9 @@ def test_auto_picks_landmarks_then_bidirectional():
     st = chart.landmark_stats["mean"]
     assert st["count"] == 3 and st["bytes_per_pixel"] == 12.0 and len(st["pixels"]) == 3
     light = seaway.prepare(1.0 + u / (10 * np.nanmax(u[np.isfinite(u)])), **opts)  # within 1.1x
-    assert light.route(s, e).method == "astar"  # low contrast: the A* bound is tight
+    a = light.route(s, e)
+    assert a.method == "astar"  # low contrast: the A* bound is tight
+    assert a.stats["settled"] < light.route(s, e, method="dijkstra").stats["settled"]
 
 
 def test_landmarks_prune_and_bidirectional_splits_the_work(monkeypatch):

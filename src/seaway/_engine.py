@@ -217,6 +217,7 @@ class PreparedChart:
         w = _heuristic_weight(method, weight)
         model = self.model if model is None else as_model(model)
         method = _exact.resolve(self, model, method, weight)
+        w = _heuristic_weight(method, weight)  # the resolved method's: auto -> astar is A*
         chart = self.chart
         s, e = locate(chart, start, "start"), locate(chart, end, "end")
         model.check_ends(self, s, e)
