@@ -73,6 +73,10 @@ void register_exact(py::module_& m) {
       .def_property_readonly("bytes", &Landmarks::bytes)
       .def_property_readonly("largest", [](const Landmarks& l) { return l.largest; });
   py::class_<Router> router = py::reinterpret_borrow<py::class_<Router>>(m.attr("Router"));
+  router.def_property_readonly("cost_range", [](const Router& r) {
+    const Passability& p = r.grid->passability();
+    return py::make_tuple(p.passable ? p.min_cost : 0.0, p.max_cost, p.passable);
+  }, "(smallest, largest passable cost, passable pixels), from the preparation");
   def_bidirectional<RasterModel<MaxCost>>(router);
   def_bidirectional<RasterModel<MeanCost>>(router);
   def_bidirectional<RasterModel<IntegralCost>>(router);

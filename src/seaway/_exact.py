@@ -95,15 +95,9 @@ def search(prepared, engine, s: int, e: int, method: str, weight: float, model, 
 
 
 def _low_contrast(prepared) -> bool:
-    """The chart's passable costs span at most ASTAR_CONTRAST (computed once per chart)."""
-    span = prepared.__dict__.get("_cost_span")
-    if span is None:
-        u = prepared.chart.values
-        ok = np.isfinite(u) & (u >= 0)
-        if prepared.chart.land is not None:
-            ok &= prepared.chart.land == 0
-        lo, hi = (float(u[ok].min()), float(u[ok].max())) if ok.any() else (0.0, 0.0)
-        span = prepared.__dict__["_cost_span"] = hi / lo if lo > 0 else np.inf
+    """The chart's passable costs span at most ASTAR_CONTRAST."""
+    lo, hi, _ = prepared._router.cost_range  # found while the chart was prepared
+    span = hi / lo if lo > 0 else np.inf
     return span <= ASTAR_CONTRAST
 
 
