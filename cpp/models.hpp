@@ -26,11 +26,10 @@
 
 namespace seaway {
 
-// Set from Python (e.g. on Ctrl-C) to stop a running search: it throws Cancelled.
-struct CancelToken {
-  std::atomic<bool> flag{false};
-};
-inline const std::atomic<bool>* flag_of(const CancelToken* t) { return t ? &t->flag : nullptr; }
+// Set from Python (e.g. on Ctrl-C) to stop a running search (it throws Cancelled); it also
+// reports the pixels settled so far (progress).
+using CancelToken = SearchControl;
+inline const SearchControl* flag_of(const CancelToken* t) { return t; }
 
 // A chart prepared for routing (geometry, stencil, land clearance): one serves every model.
 struct Router {

@@ -119,11 +119,17 @@ void register_search(py::module_& m) {
 
   py::class_<CancelToken>(m, "CancelToken", "Set it to stop the searches that were given it")
       .def(py::init<>())
-      .def("set", [](CancelToken& t) { t.flag = true; })
-      .def_property_readonly("is_set", [](const CancelToken& t) { return t.flag.load(); });
+      .def("set", [](CancelToken& t) { t.cancel = true; })
+      .def_property_readonly("is_set", [](const CancelToken& t) { return t.cancel.load(); })
+      .def_property_readonly(
+          "settled", [](const CancelToken& t) { return t.settled.load(std::memory_order_relaxed); },
+          "pixels settled so far by the search given this token (updated every 4096)");
   py::register_exception<Cancelled>(m, "SearchCancelled", PyExc_KeyboardInterrupt);
 
   py::class_<Router> router(m, "Router", "A chart prepared for routing: shared, thread-safe");
+  router.def_property_readonly(
+      "workspaces", [](const Router& r) { return r.grid->workspaces_made(); },
+      "search workspaces allocated so far (8-13 bytes per pixel each; reused across queries)");
   def_all_queries(router, Models{});
 
   auto bind = [&](auto tag) {

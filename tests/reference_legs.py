@@ -62,7 +62,10 @@ class Segments:
         lon = geo.unwrap_lon(np.concatenate([[lon1], lon]))[1:]
         lon += lon1 - lon[0]
         path = np.column_stack([(lat - self.lat0) / self.dlat, (lon - self.lon0) / self.dlon])
-        path[0], path[-1] = p, q
+        last = np.array(q, float)
+        if self.wrap:  # a leg across the seam ends at q's column + a whole turn
+            last[1] += self.cols * np.round((path[-1, 1] - q[1]) / self.cols)
+        path[0], path[-1] = p, last
         return path
 
     # -- pixels ------------------------------------------------------------------------------

@@ -40,7 +40,7 @@ def chart_nc(tmp_path_factory):
 
 def test_route_netcdf_all_outputs(chart_nc, tmp_path):
     path, ds = chart_nc
-    outs = [tmp_path / f"r.{ext}" for ext in ("geojson", "gpx", "rtz", "csv")]
+    outs = [tmp_path / f"r.{ext}" for ext in ("geojson", "gpx", "rtz", "csv", "html")]
     args = ["route", str(path), "--from", "73,61", "--to", "73,75", "--vessel", "Arc7",
             "--neighbourhood", "7", "--speed", "12", "--plot", str(tmp_path / "r.png")]
     for o in outs:
@@ -65,6 +65,9 @@ def test_route_netcdf_all_outputs(chart_nc, tmp_path):
     assert rows[0].startswith("waypoint,lat,lon,leg,course_deg") and len(rows) == len(wps) + 1
     assert "sea_ice_concentration_max" in rows[0]
     assert (tmp_path / "r.png").stat().st_size > 10_000
+    page = outs[4].read_text()  # the interactive map: the same route, one popup per waypoint
+    assert page.count('.bindPopup("') == len(wps) and "L.polyline(" in page
+    assert "ice: WMO colour code by total concentration" in page  # CT is in the chart file
     # the route never enters the island's closed squares: every waypoint is water
     assert np.all(~ds.land.values[tuple(np.rint(r.points).astype(int).T)])
 
@@ -79,7 +82,14 @@ def test_route_cost_variable_and_no_smooth(chart_nc, tmp_path):
 
 @pytest.mark.parametrize("args, code, message", [
     (["--from", "73,61", "--to", "72,50"], 1, "end (lat 72, lon 50) lies outside the chart"),
-    (["--from", "73,61", "--to", "74,67"], 1, "end is on an impassable pixel"),
+    (["--from", "73,61", "--to", "74,67"], 1, "end 74,67 is on an impassable pixel (land); the "
+     "nearest point the ship may use is 74.0000,65.8000, 36.8 km away"),  # 1.2 deg lon at 74 N
+    # thick first-year ice south of 72 N: Arc5 may not enter (paper 000, Table 3); open water
+    # begins at 72.1 N, 1.1 deg of latitude = 122.3 km north (R = 6371.0088 km)
+    (["--from", "71,61", "--to", "73,75", "--vessel", "Arc5"], 1,
+     "start 71,61 is on an impassable pixel (ice an Arc5 ship may not enter: thick first-year "
+     "ice (WMO stage 93), total concentration 10/10); the nearest point the ship may use is "
+     "72.1000,61.0000, 122.3 km away"),
     (["--from", "73,61", "--to", "73,75", "--variable", "nope"], 1, "has no variable 'nope'"),
     (["--from", "73,61", "--to", "73,75", "--vessel", "Arc99"], 1, "ice_class must be one of"),
     (["--from", "73;61", "--to", "73,75"], 2, "expected LAT,LON"),
@@ -97,7 +107,7 @@ def test_route_snap_and_missing_file(chart_nc, tmp_path):
     path, _ = chart_nc
     done = run("route", str(path), "--from", "73,61", "--to", "74,67", "--snap")
     assert done.returncode == 0, done.stderr
-    assert "end 74,67 is impassable: moved to" in done.stderr
+    assert "end 74,67 is on an impassable pixel (land): moved 36.8 km to 74.0000,65.8000" in done.stderr
     done = run("route", str(tmp_path / "none.nc"), "--from", "73,61", "--to", "74,67")
     assert done.returncode == 1 and "none.nc: no such file" in done.stderr
 
@@ -134,7 +144,8 @@ def test_help_explains_every_option():
     assert done.returncode == 0
     for option in ("--from", "--to", "--vessel", "--variable", "--land-variable", "--neighbourhood",
                    "--edge-cost", "--method", "--no-smooth", "--snap", "--speed", "--name", "--out",
-                   "--plot", "--quiet", "exit status: 0"):
+                   "--plot", "--quiet", "--depth", "--draft", "--ukc", "--depth-variable",
+                   "--depth-positive", "exit status: 0"):
         assert option in done.stdout
     assert run("--help").returncode == 0 and run("bench", "--help").returncode == 0
 

@@ -72,3 +72,12 @@ def test_a_head_current_makes_slow_steaming_dearer():
     v, q = np.array(CURVE.speeds_kn), np.array(CURVE.rates_t_per_h)
     expected = v[np.argmin(np.where(v > 7.0, q / (v - 7.0), np.inf))]
     assert expected > 8.0 and np.all(r.stats["speeds_kn"] == expected)
+
+
+def test_a_deadline_no_speed_meets_is_a_no_route_error():
+    from seaway.errors import NoRouteError
+
+    full = KM / 1.852 / 24.0  # the quickest passage, at full speed
+    with pytest.raises(NoRouteError, match="no route arrives within"):  # was a NameError
+        route_min_fuel(forecast(), A, B, deadline_h=0.9 * full, vessel=SHIP, fuel=CURVE,
+                       neighbourhood=3)

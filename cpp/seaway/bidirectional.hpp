@@ -82,7 +82,7 @@ template <bool Backward, class Queue, class Model, class Potential>
 SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::int64_t origin,
                                LazyLabels& mine, const LazyLabels& other, Queue heap, double width, double span,
                                const Potential& pot, double shift, detail::Rounds& rounds,
-                               Meeting& meet, const std::atomic<bool>* cancel) {
+                               Meeting& meet, const SearchControl* cancel) {
   constexpr int self = Backward ? 1 : 0;
   const Grid& g = pg.grid();
   const std::vector<Offset>& st = pg.stencil();
@@ -117,9 +117,12 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
   auto settle = [&](std::int64_t v, double dv) {
     mine.set(v, -dv);  // settled
     settled_now.push_back(std::uint32_t(v));
-    if ((++stats.settled & 4095) == 0 && cancel && cancel->load(std::memory_order_relaxed)) {
-      rounds.abort.store(true);
-      throw Cancelled();
+    if ((++stats.settled & 4095) == 0 && cancel) {
+      if (!Backward) cancel->settled.store(stats.settled, std::memory_order_relaxed);  // progress
+      if (cancel->cancel.load(std::memory_order_relaxed)) {
+        rounds.abort.store(true);
+        throw Cancelled();
+      }
     }
     const std::int64_t row = v / C, col = v - row * C;
     const bool interior = row >= h && row < R - h && col >= h && col < C - h;
@@ -257,7 +260,7 @@ struct AveragePotential {
 // rise above its cost (0 without a potential).
 template <class Model, class Potential = NoPotential>
 RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64_t start,
-                                std::int64_t target, const std::atomic<bool>* cancel = nullptr,
+                                std::int64_t target, const SearchControl* cancel = nullptr,
                                 const Potential& pot = {}, double reduced_floor = 1.0,
                                 double extra_rate = 0.0) {
   pg.check(start);
@@ -357,7 +360,7 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
 // only (max, mean, integral); others run plain bidirectional Dijkstra.
 template <class Model>
 RouteResult route_bidirectional_astar(PreparedGrid& pg, const Model& model, std::int64_t start,
-                                      std::int64_t target, const std::atomic<bool>* cancel = nullptr) {
+                                      std::int64_t target, const SearchControl* cancel = nullptr) {
   pg.check(start);
   pg.check(target);
   const StepBounds b = model.bounds(pg.passability());

@@ -112,7 +112,7 @@ class CachedBound {
 // symmetric (max, mean, integral).
 template <class Model>
 Landmarks build_landmarks(PreparedGrid& pg, const Model& model, int count, std::int64_t seed,
-                          const std::atomic<bool>* cancel = nullptr) {
+                          const SearchControl* cancel = nullptr) {
   pg.check(seed);
   if (count < 1 || count > 64) throw std::invalid_argument("landmark count must be 1 to 64");
   const std::int64_t n = pg.grid().size();
@@ -151,7 +151,7 @@ Landmarks build_landmarks(PreparedGrid& pg, const Model& model, int count, std::
 template <class Model>
 RouteResult route_landmarks(PreparedGrid& pg, const Landmarks& lm, const Model& model,
                             std::int64_t start, std::int64_t target,
-                            const std::atomic<bool>* cancel = nullptr) {
+                            const SearchControl* cancel = nullptr) {
   pg.check(start);
   pg.check(target);
   if (lm.table.size() != std::size_t(pg.grid().size()) * lm.count())

@@ -138,7 +138,9 @@ class LegPricer {
       path.push_back({(la - g_.lat0) / g_.dlat, (unwrapped + (lon(p.c) - first) - g_.lon0) / g_.dlon});
     }
     path.front() = p;
-    path.back() = q;
+    // Across the seam of a 360-degree chart the path ends at q's column plus a whole turn.
+    const double turns = g_.wrap ? std::round((path.back().c - q.c) / double(g_.cols)) : 0.0;
+    path.back() = {q.r, q.c + turns * double(g_.cols)};
   }
 
   // Cost of pixel (r, c): inf outside the chart; columns wrap on a 360-degree chart.

@@ -45,17 +45,22 @@ class PreparedGrid {
   }
 
   const Grid& grid() const { return g_; }
+  // How many search workspaces this chart has allocated (one per concurrent query at most).
+  std::size_t workspaces_made() const {
+    std::lock_guard<std::mutex> lock(pool_mutex_);
+    return workspaces_made_;
+  }
   const std::vector<Offset>& stencil() const { return stencil_; }
   const Grid::Lengths& lengths() const { return lengths_; }
 
   // Least-cost route under `model`; weight 0: Dijkstra, 1: A*, > 1: weighted A*.
   template <class Model>
   RouteResult route(const Model& model, std::int64_t start, std::int64_t target, double weight,
-                    const std::atomic<bool>* cancel = nullptr) {
+                    const SearchControl* control = nullptr) {
     check(start);
     check(target);
     Lease ws(*this);
-    return result(*ws, start, target, run(model, start, target, weight, *ws, cancel));
+    return result(*ws, start, target, run(model, start, target, weight, *ws, control));
   }
 
   // The route to `target` a search from `start` left in `ws`.
@@ -74,10 +79,10 @@ class PreparedGrid {
   // Accumulated cost from start to every pixel (inf where unreachable) into out[size].
   template <class Model>
   SearchStats field(const Model& model, std::int64_t start, double* out,
-                    const std::atomic<bool>* cancel = nullptr) {
+                    const SearchControl* control = nullptr) {
     check(start);
     Lease ws(*this);
-    SearchStats stats = run(model, start, -1, 0.0, *ws, cancel);
+    SearchStats stats = run(model, start, -1, 0.0, *ws, control);
     for (std::int64_t v = 0; v < g_.size(); ++v) out[v] = ws->cost(v);
     return stats;
   }
@@ -100,6 +105,7 @@ class PreparedGrid {
       std::lock_guard<std::mutex> lock(p_.pool_mutex_);
       if (p_.pool_.empty()) {
         ws_ = std::make_unique<Workspace>();
+        ++p_.workspaces_made_;
       } else {
         ws_ = std::move(p_.pool_.back());
         p_.pool_.pop_back();
@@ -123,7 +129,7 @@ class PreparedGrid {
   // heap otherwise; a 4-ary heap for weighted A*, whose keys are not monotone.
   template <class Model>
   SearchStats run(const Model& model, std::int64_t start, std::int64_t target, double weight,
-                  Workspace& ws, const std::atomic<bool>* cancel) const {
+                  Workspace& ws, const SearchControl* control) const {
     const StepBounds b = model.bounds(pass_);
     const double rmin = b.per_length ? rmin_ : 1.0, rmax = b.per_length ? rmax_ : 1.0;
     const bool astar = weight == 1 && target >= 0 && b.per_length;
@@ -135,7 +141,7 @@ class PreparedGrid {
     const double span = 1.000001 * (b.max_rate + (astar ? b.min_rate : 0.0)) * rmax + 1e-300;
     const bool buckets = weight <= 1 && width > 0 && span < inf &&
                          BucketQueue::buckets_needed(width, span) < 65536;
-    SearchSpec spec{&g_, &stencil_, rule_, target >= 0 && b.per_length ? weight : 0.0, cancel};
+    SearchSpec spec{&g_, &stencil_, rule_, target >= 0 && b.per_length ? weight : 0.0, control};
     if (buckets && astar) spec.heuristic_weight = 1 - eps;
     const std::uint8_t* clear = clearance_.data();
     SearchStats stats;
@@ -160,8 +166,9 @@ class PreparedGrid {
   std::vector<std::uint8_t> clearance_;
   Passability pass_;
   double rmin_ = 0, rmax_ = 0;
-  std::mutex pool_mutex_;
+  mutable std::mutex pool_mutex_;
   std::vector<std::unique_ptr<Workspace>> pool_;
+  std::size_t workspaces_made_ = 0;
 };
 
 }  // namespace seaway

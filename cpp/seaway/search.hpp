@@ -68,12 +68,20 @@ struct SearchStats {
   double min_cost = inf;        // smallest passable cost (the A* bound's factor)
 };
 
+// Shared with whoever started a search (e.g. Python's waiting main thread): every 4096
+// expansions the search publishes how many pixels it has settled and stops (throws Cancelled)
+// if `cancel` was set. Without a control the search polls nothing.
+struct SearchControl {
+  std::atomic<bool> cancel{false};
+  mutable std::atomic<std::int64_t> settled{0};
+};
+
 struct SearchSpec {
   const Grid* grid;
   const std::vector<Offset>* stencil;
   LandRule land_rule = LandRule::segment;
   double heuristic_weight = 0;  // 0: Dijkstra; 1: A*; w > 1: weighted A* (cost <= w * optimum)
-  const std::atomic<bool>* cancel = nullptr;  // polled every 4096 expansions; set: throw Cancelled
+  const SearchControl* control = nullptr;  // polled every 4096 expansions
 };
 
 // Thrown out of a search whose cancel flag was set (e.g. Ctrl-C in Python).
@@ -119,8 +127,10 @@ SearchStats search_with_bound(const SearchSpec& spec, const Model& model,
     const double dv = dist[v];
     if (std::signbit(dv)) continue;  // an older, costlier entry of an expanded pixel
     dist[v] = -dv;                   // expanded: never reopened (weighted A* keeps its bound)
-    if ((++stats.settled & 4095) == 0 && spec.cancel && spec.cancel->load(std::memory_order_relaxed))
-      throw Cancelled();
+    if ((++stats.settled & 4095) == 0 && spec.control) {
+      spec.control->settled.store(stats.settled, std::memory_order_relaxed);
+      if (spec.control->cancel.load(std::memory_order_relaxed)) throw Cancelled();
+    }
     if (v == target) break;
     const std::int64_t row = v / C, col = v - row * C;
     const double* len = lengths.row(row);

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _core
+from ._validate import number
 
 LAT_NAMES = ("lat", "latitude", "nav_lat")
 LON_NAMES = ("lon", "longitude", "long", "nav_lon")
@@ -113,6 +114,24 @@ def _regular_step(values: np.ndarray, name: str) -> float:
     return float(step)
 
 
+def _land_mask(land: np.ndarray) -> np.ndarray:
+    """The land mask as uint8 0/1: bool, or integers/floats holding only 0 (sea) and 1 (land).
+    Anything else (NaN, 2, 0.5, -1, strings) is refused rather than silently read as land."""
+    if land.dtype == np.bool_:
+        return land.view(np.uint8)
+    if not (np.issubdtype(land.dtype, np.integer) or np.issubdtype(land.dtype, np.floating)):
+        raise TypeError(f"land must be a boolean mask (True = land), got dtype {land.dtype}; "
+                        "give a bool array, or 0/1 integers or floats")
+    bad = (land != 0) & (land != 1)  # NaN compares unequal to both
+    if bad.any():
+        r, c = np.argwhere(bad)[0]
+        raise ValueError(
+            f"land must hold only 0 (sea) and 1 (land), got {int(bad.sum())} other value(s), e.g. "
+            f"{land[r, c]!r} at pixel ({r}, {c}); give a bool mask, e.g. land=np.isnan(mask) | "
+            "(mask > 0.5) to say how such values should be read")
+    return (land == 1).astype(np.uint8)
+
+
 def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negative=False) -> Chart:
     """Validate the user's raster and coordinates and build the engine's view of them."""
     template = None
@@ -159,8 +178,7 @@ def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negat
         land_arr = np.asarray(land.values if hasattr(land, "dims") else land)
         if land_arr.shape != values.shape:
             raise ValueError(f"land has shape {land_arr.shape} but cost has shape {values.shape}; give a mask of the same shape")
-        mask = land_arr.view(np.uint8) if land_arr.dtype == np.bool_ else (land_arr != 0).astype(np.uint8)
-        mask = np.ascontiguousarray(mask)
+        mask = np.ascontiguousarray(_land_mask(land_arr))
 
     grid = _core.Grid()
     grid.rows, grid.cols = rows, cols
@@ -192,9 +210,9 @@ def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negat
         if "y" in coords:
             dy, dx = abs(_regular_step(coords["y"], "y")), abs(_regular_step(coords["x"], "x"))
             chart.y, chart.x = coords["y"], coords["x"]
+        dx = number(dx, "dx", above=0, what="a positive cell size", example=1.0)
+        dy = number(dy, "dy", above=0, what="a positive cell size", example=1.0)
         for name, v, n in (("dx", dx, cols), ("dy", dy, rows)):
-            if not (np.isfinite(v) and v > 0):
-                raise ValueError(f"{name} must be a positive cell size, got {v!r}")
             if not v * n < 1e306:
                 raise ValueError(f"{name} = {v!r} is too large a cell size: the chart would span "
                                  f"{v * n:g} units; rescale the cell sizes")

@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import statistics
 import sys
 import time
 
 import numpy as np
 
-from ._engine import _nearest_passable, locate, route
+from ._engine import route
 from .models import EDGE_COSTS
 
 EPILOG = ("exit status: 0 done; 1 no route, or a chart or output file that cannot be used; "
@@ -63,51 +64,54 @@ class Progress:
                   file=sys.stderr, flush=True)
 
 
-def _snap(chart, p, name, say):
-    """The (lat, lon) or (row, col) of the passable pixel nearest to an impassable point."""
-    try:
-        locate(chart, p, name)
-        return p
-    except ValueError:
-        pass
-    g = chart.grid
-    if chart.geographic:  # the pixel locate() picks
-        r = int(round((p[0] - g.lat0) / g.dlat))
-        c = int(round(((p[1] - g.lon0) / g.dlon + 0.5) % (360.0 / abs(g.dlon)) - 0.5))
-    else:
-        r, c = int(round(p[0])), int(round(p[1]))
-    if 0 <= r < chart.shape[0] and 0 <= c < chart.shape[1] and not chart.passable((r, c)):
-        near = _nearest_passable(chart, (r, c))
-        if near is not None:
-            q = (float(chart.lat[near[0]]), float(chart.lon[near[1]])) if chart.geographic else near
-            say(f"{name} {p[0]:g},{p[1]:g} is impassable: moved to {q[0]:.4f},{q[1]:.4f}")
-            return q
-    return p
+def searching(say, pixels: int):
+    """Within the block, a running search reports the pixels it has settled once a second."""
+    from ._interrupt import SettledProgress, reporting
+    return contextlib.nullcontext() if say.quiet else reporting(SettledProgress(say, pixels))
+
+
+def _tell(message: str) -> None:
+    """What changed the voyage (a snapped end): on stderr even with --quiet."""
+    print(f"seaway route: {message}", file=sys.stderr, flush=True)
 
 
 def run_route(args) -> int:
     from . import export
-    from ._chart import as_chart
+    from ._depth_cli import for_route, why_no_route
+    from ._ends import check_ends
     from .chartfile import open_chart
+    from .errors import NoRouteError
 
     say = Progress("route", args.quiet)
     say(f"reading {args.chart}")
     data = open_chart(args.chart, variable=args.variable, vessel=args.vessel,
-                      land_variable=args.land_variable, grid=args.grid)
+                      land_variable=args.land_variable, grid=args.grid,
+                      ends=(args.start, args.end))
     for note in data.notes:
         say(note)
     cost = data.cost
     start, end = args.start, args.end
     if not ("lat" in cost.coords or "latitude" in cost.coords):
         say("the chart has projected y/x coordinates: --from and --to are ROW,COL pixel indices")
-    if args.snap:
-        chart = as_chart(cost, land=data.land)
-        start, end = _snap(chart, start, "start", say), _snap(chart, end, "end", say)
+    chart_cost = cost
+    cost, depth, shallow = for_route(args.depth, cost, draft=args.draft, ukc=args.ukc,
+                                     variable=args.depth_variable, positive=args.depth_positive,
+                                     say=say, crs=getattr(data.layers, "attrs", {}).get("crs"))
+    start, end = check_ends(cost, data.land, data.layers, (start, end), vessel=args.vessel,
+                            snap=args.snap, say=_tell, neighbourhood=args.neighbourhood,
+                            reasons=shallow, chart_cost=chart_cost)
     rows, cols = cost.shape
     say(f"routing on {rows} x {cols} pixels ({data.description}; {args.method}, "
         f"{args.neighbourhood}x{args.neighbourhood} stencil, edge cost {args.edge_cost})")
-    r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
-              edge_cost=args.edge_cost, method=args.method)
+    try:
+        with searching(say, rows * cols):
+            r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
+                      edge_cost=args.edge_cost, method=args.method)
+    except NoRouteError as exc:
+        if shallow is None:
+            raise
+        why = why_no_route(chart_cost, data.land, depth, start, end, args.draft, args.ukc)
+        raise NoRouteError(f"{exc}; {why}") from None
     say(f"found: cost {r.cost:.6g}, {len(r.pixels)} pixels, {r.stats['settled']} settled")
     if not args.no_smooth:
         say(f"smoothing {r.course_changes} course changes")
@@ -118,6 +122,8 @@ def run_route(args) -> int:
     r.speed_kn = args.speed
     if data.environment:
         r = r.with_environment(data.environment)
+    if depth is not None:  # --depth, over a chart's own depth variable
+        r = r.with_environment({"depth": depth})
     print(r)
     for path in args.out or []:
         fmt = export.write(r, path)
@@ -181,7 +187,24 @@ def add_commands(commands, neighbourhood_type) -> None:
                     help="chart variable holding the land mask (default: 'land' if present)")
     rp.add_argument("--grid", type=grid, metavar="S,N,W,E,RES",
                     help="lat/lon grid (degrees) to rasterise a SIGRID-3 chart onto (default: the "
-                         "chart's extent at 1/1000 of its longer side)")
+                         "box around the great circle between the ends, widened by a quarter of "
+                         "its length (at least 300 km), at 0.05 deg of latitude and the same km "
+                         "east-west, clipped to the chart; see seaway.ice.routegrid)")
+    rp.add_argument("--depth", metavar="FILE",
+                    help="bathymetry raster (NetCDF or GeoTIFF on lat/lon; ETOPO/GEBCO elevation "
+                         "or depth positive down, told by the CF attributes): resampled onto the "
+                         "chart (the shallowest depth in each pixel); the route's least depth is "
+                         "reported")
+    rp.add_argument("--draft", type=float, metavar="M",
+                    help="the ship's draft in metres: pixels shallower than draft + UKC are "
+                         "impassable (needs --depth)")
+    rp.add_argument("--ukc", type=float, metavar="M",
+                    help="under-keel clearance in metres (default 10 %% of the draft)")
+    rp.add_argument("--depth-variable", metavar="NAME",
+                    help="the bathymetry file's variable (default: found by CF standard name)")
+    rp.add_argument("--depth-positive", choices=("up", "down"),
+                    help="override the bathymetry's sign: up = elevation (ETOPO/GEBCO), down = "
+                         "depth (default: from its CF attributes, else guessed and said so)")
     rp.add_argument("--neighbourhood", type=neighbourhood_type, default=5, metavar="K",
                     help="k of the k x k stencil: odd, 3 to 15 (default 5, as in paper 000)")
     rp.add_argument("--edge-cost", default="max", choices=tuple(EDGE_COSTS),
@@ -192,14 +215,16 @@ def add_commands(commands, neighbourhood_type) -> None:
     rp.add_argument("--no-smooth", action="store_true",
                     help="keep the raw pixel route (default: any-angle smoothing, never costlier)")
     rp.add_argument("--snap", action="store_true",
-                    help="move a start or end on land or impassable ice to the nearest passable "
-                         "pixel (default: stop with an error naming that pixel)")
+                    help="move a start or end on land, in ice the class may not enter or in too "
+                         "shallow water to the nearest pixel the ship can reach from the other end "
+                         "(default: stop with an error naming why, that point and its distance)")
     rp.add_argument("--speed", type=float, metavar="KN",
                     help="speed in knots: adds each leg's time and the voyage time")
     rp.add_argument("--name", default="seaway route", help="route name in the outputs")
     rp.add_argument("--out", action="append", metavar="FILE",
                     help="write the route; the extension picks the format: .geojson/.json, .gpx, "
-                         ".rtz (IEC 61174, for ECDIS), .csv; may be repeated")
+                         ".rtz (IEC 61174, for ECDIS), .csv, .html (interactive map, offline; "
+                         "needs seaway[plot]); may be repeated")
     rp.add_argument("--plot", metavar="PNG",
                     help="draw the chart, land and route to a PNG (needs seaway[plot])")
     rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")

@@ -21,6 +21,8 @@ class CancelToken:
     def set(self) -> None: ...
     @property
     def is_set(self) -> bool: ...
+    @property
+    def settled(self) -> int: ...
 
 class SearchCancelled(KeyboardInterrupt): ...
 
@@ -80,6 +82,8 @@ Model = (MaxCost | MeanCost | IntegralCost | EnteredPixelCost | TravelTimeModel 
          | WaveDangerModel | IceSeasonModel)
 
 class Router:
+    @property
+    def workspaces(self) -> int: ...
     def route(self, model: Model, start: int, target: int, heuristic_weight: float,
               cancel: CancelToken | None = None) -> tuple[
         float, npt.NDArray[np.int64], dict, npt.NDArray[np.float64],

@@ -26,6 +26,7 @@ import time
 
 import numpy as np
 
+from ._validate import number
 from .models import EDGE_COSTS, EdgeCost
 
 METHODS = ("auto", "dijkstra", "astar", "bidirectional", "landmarks")
@@ -46,10 +47,9 @@ def heuristic_weight(method, weight) -> float:
         if weight not in (None, 1, 1.0):
             raise ValueError("weight inflates the A* heuristic; use it with method='astar'")
         return 0.0
-    w = 1.0 if weight is None else float(weight)
-    if not (np.isfinite(w) and w >= 1):
-        raise ValueError(f"weight must be a finite number >= 1 (cost <= weight x optimum), got {weight!r}")
-    return w
+    return 1.0 if weight is None else number(
+        weight, "weight", minimum=1, what="a finite number >= 1 (cost <= weight x optimum)",
+        example=1.5)
 
 
 def _static(model) -> bool:

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .route import extreme_name
+
 
 def fmt_lat(v: float) -> str:
     """Degrees and decimal minutes, e.g. 70-18.00N."""
@@ -40,9 +42,11 @@ def route_table(route) -> str:
                    f"{route.neighbourhood}x{route.neighbourhood} stencil)"]
     if "time_h" in s:
         lines[-1] += f"; {fmt_hours(s['time_h'])} at {s['speed_kn']:g} kn"
+    if np.isfinite(s.get("least_depth_m", np.nan)):
+        lines.append(f"least depth {s['least_depth_m']:.1f} m at {fmt_point(s['least_depth_at'], geo)}")
     env = list(route.environment)
     cols = ["leg", "from", "to", "course", "nm" if geo else "", units, "kn", "hours", "cost"]
-    cols += [f"{n} mean/max" for n in env]
+    cols += [f"{n} mean/{extreme_name(n)}" for n in env]
     rows = []
     for leg in legs:
         row = [str(leg.number), fmt_point(leg.start, geo), fmt_point(leg.end, geo),

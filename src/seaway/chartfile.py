@@ -32,13 +32,17 @@ class ChartData:
     environment: dict = field(default_factory=dict)
     description: str = ""
     notes: list = field(default_factory=list)
+    layers: object = None  # the chart's Dataset (SIGRID-3 CT, SA, ... land): describes the ends
 
 
-def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, grid=None) -> ChartData:
+def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, grid=None,
+               ends=None) -> ChartData:
     """grid: (south, north, west, east, resolution) in degrees for a SIGRID-3 chart; by default
-    the chart's own extent at 1/1000 of its longer side (geographic charts only)."""
+    a regional grid around `ends` ((lat, lon) start and end; seaway.ice.routegrid), else the
+    chart's own extent at 1/1000 of its longer side (geographic charts only)."""
     import xarray as xr
 
+    notes: list = []
     if path.lower() in ("kara", "builtin:kara"):
         from .charts import kara_sea
         ds = kara_sea()
@@ -50,7 +54,7 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
         if ext in GEOTIFF:
             return _geotiff(path, variable, vessel)
         if ext in SIGRID:
-            ds, kind = _sigrid(path, grid), "SIGRID-3 chart"
+            ds, kind = _sigrid(path, grid, ends, notes), "SIGRID-3 chart"
         else:
             from ._files import check_netcdf
 
@@ -65,7 +69,8 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
                                  f"({', '.join(NETCDF)}), GeoTIFF ({', '.join(GEOTIFF)}) or "
                                  f"SIGRID-3 ({', '.join(SIGRID)})") from None
             kind = "NetCDF chart"
-    out = ChartData(cost=None, description=f"{kind} {path}")
+    out = ChartData(cost=None, description=f"{kind} {path}", layers=ds)
+    out.notes += notes
     land_name = land_variable or ("land" if "land" in ds else None)
     if land_variable and land_variable not in ds:
         raise ChartError(f"{path} has no variable {land_variable!r}; it has {sorted(ds.data_vars)}")
@@ -123,7 +128,7 @@ def _impact(ds, vessel, notes):
         raise ChartError(str(exc)) from None
 
 
-def _sigrid(path, grid):
+def _sigrid(path, grid, ends=None, notes=None):
     """Rasterise a SIGRID-3 chart onto a lat/lon grid (seaway.ice.sigrid, the [ice] extra)."""
     try:
         import pyogrio
@@ -133,6 +138,24 @@ def _sigrid(path, grid):
     except ImportError as exc:
         raise ChartError(f"{path}: reading SIGRID-3 charts needs the [ice] extra ({exc}): "
                          'pip install "seaway[ice]"') from None
+    if grid is None and ends is not None:
+        from .ice.routegrid import route_grid
+
+        try:
+            info = pyogrio.read_info(path)
+        except Exception as exc:  # pyogrio's DataSourceError, ...
+            raise ChartError(f"{path}: cannot read it as a SIGRID-3 vector file ({exc})") from None
+        box = info["total_bounds"]
+        geographic = _in_degrees(info)
+        try:
+            target, note = route_grid(*ends, chart_bounds=box if geographic else None)
+        except ValueError as exc:
+            raise ChartError(f"{path}: {exc}") from None
+        notes.append(note)
+        try:
+            return read_sigrid3(path, target)
+        except ValueError as exc:
+            raise ChartError(str(exc)) from None
     if grid is None:
         info = pyogrio.read_info(path)
         west, south, east, north = info["total_bounds"]
@@ -148,6 +171,19 @@ def _sigrid(path, grid):
         return read_sigrid3(path, latlon_grid(south, north, west, east, res))
     except ValueError as exc:
         raise ChartError(str(exc)) from None
+
+
+def _in_degrees(info) -> bool:
+    """Is a vector layer in geographic coordinates (its CRS, or degrees-sized bounds)?"""
+    crs = info.get("crs")
+    if crs:
+        try:
+            import pyproj
+            return bool(pyproj.CRS.from_user_input(crs).is_geographic)
+        except Exception:  # an unparsable CRS: judge by the numbers
+            pass
+    west, south, east, north = info["total_bounds"]
+    return bool(-180 <= west <= east <= 360 and -90 <= south <= north <= 90)
 
 
 def _geotiff(path, variable, vessel):

@@ -18,6 +18,7 @@ from .ice.codes import STAGE_CODES
 # Paper 000's impact tables and ice_impact() live in seaway.ice.impact (with tables for every
 # class); re-exported here so seaway.charts.ice_impact keeps working.
 from .ice.impact import ICE_IMPACT, ice_impact  # noqa: F401
+from ._validate import number
 
 EARTH_RADIUS_KM = 6371.0088
 KM_PER_DEG = np.pi * EARTH_RADIUS_KM / 180.0
@@ -196,8 +197,9 @@ def synthetic_sea(shape=(1900, 2300), land_fraction=0.3, seed=0):
     rows, cols = (int(n) for n in shape)
     if rows < 20 or cols < 20:
         raise ValueError(f"shape must be at least (20, 20), got {shape!r}")
-    if not 0 <= land_fraction < 0.9:
-        raise ValueError(f"land_fraction must be in [0, 0.9), got {land_fraction!r}")
+    number(land_fraction, "land_fraction", minimum=0, maximum=0.9, what="a number in [0, 0.9)")
+    if land_fraction == 0.9:
+        raise ValueError("land_fraction must be a number in [0, 0.9), got 0.9")
     rng = np.random.default_rng(seed)
     coarse = (max(rows // 8, 20), max(cols // 8, 20))
     cy, cx = np.mgrid[0:coarse[0], 0:coarse[1]] / np.array(coarse).reshape(2, 1, 1)

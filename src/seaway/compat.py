@@ -14,8 +14,37 @@ import numpy as np
 
 from ._chart import as_chart
 from ._engine import PreparedChart
+from ._interrupt import interruptible
 from .errors import NoRouteError
 from .models import EdgeCost, EnteredPixel
+
+
+def _from_negative_start(prepared, s, e, fully_connected):
+    """skimage seeds the start whatever its cost, so from a negative start (geometric=True)
+    only the first steps cost (u_s + u_n) / 2 x length < possibly 0; every later step is between
+    passable pixels (no step enters a negative pixel). The answer is the least over the start's
+    passable neighbours n of that first step plus the least cost n -> end, which the engine
+    gives exactly (its mean step cost is symmetric: one cost field from the end serves all n)."""
+    u, (rows, cols) = prepared.chart.values, prepared.chart.shape
+    if not (u[e] >= 0 and u[e] < np.inf):  # skimage never steps onto an impassable end
+        return np.inf, None
+    engine = prepared.model.engine(prepared)
+    field, _ = interruptible(lambda cancel: prepared._router.field(
+        engine, e[0] * cols + e[1], cancel))
+    best = (np.inf, None)
+    for di, dj in ((-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1)):
+        n = (s[0] + di, s[1] + dj)
+        if (di and dj and not fully_connected) or not (0 <= n[0] < rows and 0 <= n[1] < cols):
+            continue
+        if not (u[n] >= 0 and u[n] < np.inf and field[n] < np.inf):
+            continue
+        first = (u[s] + u[n]) / 2 * float(np.hypot(di, dj))
+        if first + field[n] < best[0]:
+            best = (first + field[n], n)
+    if best[1] is None:
+        return np.inf, None
+    _, rest, *_ = prepared._search(best[1], e, 0.0, prepared.model)
+    return best[0], np.concatenate([[s[0] * cols + s[1]], rest])
 
 
 def route_through_array(costs, start, end, fully_connected=True, geometric=True):
@@ -39,19 +68,16 @@ def route_through_array(costs, start, end, fully_connected=True, geometric=True)
             raise ValueError(f"{name} {tuple(p)} lies outside the array of shape {arr.shape}")
         pts.append((r, c))
     (s, e) = pts
-    if geometric and chart.values[s] < 0:
-        # skimage starts such a route with a negative step cost; seaway's search needs costs
-        # >= 0 (it answered |cost|), so it refuses rather than return a wrong cost.
-        raise ValueError(f"start {tuple(start)} has a negative cost ({chart.values[s]:g}); with "
-                         "geometric=True a route from it would start with a negative step cost, "
-                         "which seaway does not handle: start from a pixel with cost >= 0")
     if not geometric and not chart.values[s] < np.inf:  # +inf or NaN start: skimage finds no path
         raise NoRouteError("no minimum-cost path was found to the specified end point")
     model = EdgeCost("mean") if geometric else EnteredPixel()
     prepared = PreparedChart._from_chart(chart, 3, "full" if fully_connected else "axis", model,
                                          "ends")
-    total, path, *_ = prepared._search(s, e, 0.0, model)
-    if not np.isfinite(total):
+    if geometric and chart.values[s] < 0 and s != e:
+        total, path = _from_negative_start(prepared, s, e, fully_connected)
+    else:
+        total, path, *_ = prepared._search(s, e, 0.0, model)
+    if not total < np.inf:  # (a -inf start gives -inf, as in skimage)
         raise NoRouteError("no minimum-cost path was found to the specified end point")
     if not geometric:
         total += chart.values[s]

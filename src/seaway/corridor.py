@@ -28,6 +28,7 @@ import numpy as np
 
 from . import _geometry as geo
 from ._chart import as_chart
+from ._validate import number
 from .errors import NoRouteError
 from .models import EdgeCost
 from .route import Route
@@ -154,9 +155,10 @@ def corridor(start, end, *, spacing_nm=None, hours=None, speed_kn=None, row_nm=2
     if spacing_nm is None:
         if hours is None or speed_kn is None:
             raise ValueError("give spacing_nm, or hours and speed_kn")
-        spacing_nm = float(hours) * float(speed_kn)
-    if not spacing_nm > 0 or not row_nm > 0 or int(m) < 0:
-        raise ValueError("spacing_nm and row_nm must be positive and m >= 0")
+        spacing_nm = number(hours, "hours", above=0) * number(speed_kn, "speed_kn", above=0)
+    number(spacing_nm, "spacing_nm", above=0)
+    number(row_nm, "row_nm", above=0)
+    number(m, "m", minimum=0, integer=True)
     (lat1, lon1), (lat2, lon2) = start, end
     dist = float(geo.distance_km(lat1, lon1, lat2, lon2))
     legs = max(int(round(dist / (spacing_nm * geo.KM_PER_NM))), 1)

@@ -20,22 +20,37 @@ import xml.etree.ElementTree as ET
 import numpy as np
 
 from . import _geometry as geo
+from .route import extreme_name
 
 GPX_NS = "http://www.topografix.com/GPX/1/1"
 RTZ_NS = "http://www.cirm.org/RTZ/1/0"
-FORMATS = {".geojson": "geojson", ".json": "geojson", ".gpx": "gpx", ".csv": "csv", ".rtz": "rtz"}
+FORMATS = {".geojson": "geojson", ".json": "geojson", ".gpx": "gpx", ".csv": "csv", ".rtz": "rtz",
+           ".html": "html", ".htm": "html"}
 
 
 def write_atomically(path, text: str) -> None:
     """Write `text` to a temporary file beside `path`, then rename it over `path`."""
-    target = os.path.abspath(os.fspath(path))
-    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(target), prefix=".seaway-", suffix=".tmp")
-    try:
+    def write(fd, tmp):
         with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
             f.write(text)
+    replace_atomically(path, write, ".tmp")
+
+
+def replace_atomically(path, write, suffix: str) -> None:
+    """write(fd, temporary path) fills a temporary file beside `path`, which is then given the
+    permissions of a newly created file (mkstemp's are 0600: others could not read the
+    route) and renamed over `path`; on any error the temporary file is removed."""
+    target = os.path.abspath(os.fspath(path))
+    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(target), prefix=".seaway-", suffix=suffix)
+    try:
+        write(fd, tmp)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, target)
     except BaseException:
-        os.unlink(tmp)
+        if os.path.exists(tmp):
+            os.unlink(tmp)
         raise
 
 
@@ -73,6 +88,8 @@ def geojson(route, antimeridian: str = "split", speed_kn=None) -> dict:
     for k, v in route.summary(speed_kn).items():
         if isinstance(v, str) or (isinstance(v, (int, float)) and np.isfinite(v)):
             props[k] = v
+        elif k == "least_depth_at" and v is not None:  # (lat, lon) of the shallowest pixel
+            props[k] = [float(x) for x in v]
     props["name"] = route.name
     if route.geographic and antimeridian == "split":
         c = route.coords
@@ -134,7 +151,7 @@ def csv_text(route, speed_kn=None) -> str:
     env = list(route.environment)
     out = io.StringIO()
     w = csv.writer(out, lineterminator="\n")
-    w.writerow(CSV_FIELDS + [f"{n}_{s}" for n in env for s in ("mean", "max")])
+    w.writerow(CSV_FIELDS + [f"{n}_{s}" for n in env for s in ("mean", extreme_name(n))])
     first = route.waypoints[0]
     w.writerow([1, f"{first[0]:.7f}", f"{first[1]:.7f}"] + [""] * (len(CSV_FIELDS) - 3 + 2 * len(env)))
     km = cost = 0.0
@@ -154,12 +171,18 @@ def write(route, path, fmt=None, speed_kn=None) -> str:
     fmt = fmt or FORMATS.get(os.path.splitext(os.fspath(path))[1].lower())
     makers = {"geojson": lambda: json.dumps(geojson(route, speed_kn=speed_kn), indent=1),
               "gpx": lambda: gpx(route, speed_kn), "rtz": lambda: rtz(route, speed_kn),
-              "csv": lambda: csv_text(route, speed_kn)}
+              "csv": lambda: csv_text(route, speed_kn),
+              "html": lambda: _html(route, speed_kn)}
     if fmt not in makers:
         raise ValueError(f"cannot tell the format of {os.fspath(path)!r}: use one of the extensions "
                          f"{', '.join(sorted(FORMATS))} or fmt= one of {sorted(makers)}")
     write_atomically(path, makers[fmt]())
     return fmt
+
+
+def _html(route, speed_kn):
+    from .webmap import html_text  # interactive map (folium, seaway[plot])
+    return html_text(route, speed_kn=speed_kn)
 
 
 def _opt(v, digits):

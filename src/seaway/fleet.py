@@ -21,6 +21,7 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 import numpy as np
 
 from .errors import NoRouteError
+from ._validate import number
 
 COLUMNS = ["chart", "vessel", "voyage", "start", "end", "cost", "length", "settled", "time_s",
            "status", "error"]
@@ -56,9 +57,8 @@ def route_many(charts, voyages, *, vessels=None, lat=None, lon=None, dx=1.0, dy=
     ("ok", "no route", "bad input" or "error") and error (the message; "" when ok)."""
     import pandas as pd
 
-    threads = (os.cpu_count() or 1) if threads is None else int(threads)
-    if threads < 1:
-        raise ValueError(f"threads must be >= 1, got {threads}")
+    threads = (os.cpu_count() or 1) if threads is None else number(threads, "threads", minimum=1,
+                                                                      integer=True)
     opts = dict(chart=dict(lat=lat, lon=lon, dx=dx, dy=dy, neighbourhood=neighbourhood,
                            directions=directions, edge_cost=edge_cost),
                 method=method, weight=weight, land=land, keep=bool(keep_routes))

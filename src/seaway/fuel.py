@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._engine import _heuristic_weight
+from .errors import NoRouteError
 from .models import Fuel
 from .route import Route
 from .vessel import Vessel

@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import _core
+from ._validate import number
 from .vessel import Vessel
 
 #: The static edge costs over a raster of cost per unit length: name -> engine class. The
@@ -186,8 +187,8 @@ class Fuel(_OnForecast):
 
     def __init__(self, forecast, vessel: Vessel, fuel, time_value_t_per_h=0.0, at_hours=0.0):
         vessel.check()
-        if not (np.isfinite(time_value_t_per_h) and time_value_t_per_h >= 0):
-            raise ValueError(f"time_value_t_per_h must be >= 0, got {time_value_t_per_h!r}")
+        number(time_value_t_per_h, "time_value_t_per_h", minimum=0, what="a number >= 0")
+        number(at_hours, "at_hours")
         self.forecast, self.vessel, self.fuel = forecast, vessel, fuel
         self.time_value_t_per_h = float(time_value_t_per_h)
         frame = forecast.frame_at(at_hours, ("current_east", "current_north", "wave_height",
@@ -222,8 +223,9 @@ class WaveDanger(_OnForecast):
     name = "wave danger"
 
     def __init__(self, forecast, ship_length_m, speed_kn, at_hours=0.0):
-        if not (ship_length_m > 0 and speed_kn > 0):
-            raise ValueError("ship_length_m and speed_kn must be positive")
+        number(ship_length_m, "ship_length_m", above=0, example=150.0)
+        number(speed_kn, "speed_kn", above=0, example=12.0)
+        number(at_hours, "at_hours")
         roles = ("wave_height", "wave_from", "wave_period")
         missing = sorted(set(roles) - set(forecast.arrays))
         if missing:
@@ -268,8 +270,9 @@ class IceSeasonTime(CostModel):
         from .ice.classes import get_class
         from .ice.season import SeasonGrid
 
+        self.v0_kn = number(v0_kn, "v0_kn", above=0, example=12.0)
         self.season = season if isinstance(season, SeasonGrid) else SeasonGrid(season)
-        self.ice_class, self.v0_kn = get_class(ice_class).name, float(v0_kn)
+        self.ice_class = get_class(ice_class).name
         self.hours_per_km, self.valid_from_h, self.departure = self.season.hours_per_km(
             ice_class, v0_kn, departure, speed, **speed_options)
         self._open = np.isfinite(self.hours_per_km).any(axis=0)

@@ -12,7 +12,17 @@ from . import _geometry as geo
 from ._chart import Chart
 from ._core import haversine_km
 from ._segments import index_coords
+from ._validate import number
 from .models import CostModel, EdgeCost
+
+
+#: Environment variables whose least value along a leg matters (reported instead of the most).
+LEAST = frozenset({"depth"})
+
+
+def extreme_name(name: str) -> str:
+    """'min' for variables in LEAST (depth), else 'max': the second number of a leg's pair."""
+    return "min" if name in LEAST else "max"
 
 
 @dataclass
@@ -29,7 +39,7 @@ class Leg:
     speed_kn: float | None
     time_h: float | None
     cost: float
-    environment: dict  # name -> (mean, max) of the chart variable along the leg
+    environment: dict  # name -> (mean, max) of the chart variable along the leg ((mean, min) for LEAST)
 
 
 @dataclass
@@ -140,7 +150,7 @@ class Route:
     def legs(self, speed_kn: float | None = None) -> list[Leg]:
         """The legs between consecutive waypoints, with course, distance, time, cost and the mean
         and maximum of each environment variable along the leg. speed_kn defaults to .speed_kn."""
-        speed = self.speed_kn if speed_kn is None else float(speed_kn)
+        speed = self.speed_kn if speed_kn is None else number(speed_kn, "speed_kn", above=0)
         wi, c = self.waypoint_index, self.coords
         steps, costs = self.leg_lengths, self.costs()
         out = []
@@ -158,21 +168,35 @@ class Route:
                            hours, float(costs[i:j].sum()), self._along(i, j)))
         return out
 
+    def sample_pixels(self, i: int = 0, j: int | None = None) -> np.ndarray:
+        """(n, 2) (row, col) of the pixels crossed between vertices i and j (default the whole
+        route), sampled every half pixel along each step; columns may pass the chart's last
+        on charts that wrap (take them modulo the width)."""
+        from ._segments import leg_path
+
+        v = self.vertices[i:(len(self.vertices) if j is None else j + 1)]
+        half = (self.neighbourhood - 1) // 2
+        pts = [v[:1]]
+        for p, q in zip(v[:-1], v[1:]):  # the leg's own path: a great circle on lat/lon charts
+            step = bool(np.all(p == np.round(p)) and np.all(q == np.round(q))
+                        and np.abs(q - p).max() <= half)
+            path = leg_path(self.chart, p, q, step)
+            for a, b in zip(path[:-1], path[1:]):
+                m = max(int(np.ceil(2 * np.abs(b - a).max())), 1)
+                pts.append(a + np.linspace(0, 1, m + 1)[1:, None] * (b - a))
+        return np.rint(np.concatenate(pts)).astype(np.int64)
+
     def _along(self, i: int, j: int) -> dict:
         if not self.environment:
             return {}
-        v = self.vertices[i:j + 1]
-        pts = [v[:1]]
-        for a, b in zip(v[:-1], v[1:]):
-            m = max(int(np.ceil(2 * np.abs(b - a).max())), 1)
-            pts.append(a + np.linspace(0, 1, m + 1)[1:, None] * (b - a))
-        p = np.rint(np.concatenate(pts)).astype(np.int64)
+        p = self.sample_pixels(i, j)
         out = {}
         for name, arr in self.environment.items():
             cols = p[:, 1] % arr.shape[1]
             vals = np.asarray(arr, float)[np.clip(p[:, 0], 0, arr.shape[0] - 1), cols]
             vals = vals[np.isfinite(vals)]
-            out[name] = (float(vals.mean()), float(vals.max())) if vals.size else (np.nan, np.nan)
+            top = vals.min() if name in LEAST else vals.max()
+            out[name] = (float(vals.mean()), float(top)) if vals.size else (np.nan, np.nan)
         return out
 
     def with_environment(self, data, names=None) -> Route:
@@ -205,7 +229,11 @@ class Route:
                 out.update(speed_kn=float(speed), time_h=out["length_nm"] / speed)
         for name in self.environment:
             vals = [leg.environment[name][1] for leg in legs]
-            out[f"max_{name}"] = float(np.nanmax(vals)) if vals else np.nan
+            if name not in LEAST:
+                out[f"max_{name}"] = float(np.nanmax(vals)) if vals else np.nan
+        if "depth" in self.environment:  # for depth the least matters (seaway.depth)
+            from .depth import least_depth
+            out["least_depth_m"], out["least_depth_at"] = least_depth(self, self.environment["depth"])
         return out
 
     def __str__(self) -> str:
@@ -216,6 +244,17 @@ class Route:
         """Any-angle smoothing (see seaway.smooth.smooth)."""
         from .smooth import smooth
         return smooth(self, **options)
+
+    def explore(self, **options):
+        """An interactive folium.Map of the route over its chart, working offline (see
+        seaway.webmap.explore for the options)."""
+        from .webmap import explore
+        return explore(self, **options)
+
+    def to_html(self, path, **options) -> None:
+        """Write the interactive map (explore()) to one self-contained HTML file, atomically."""
+        from .webmap import to_html
+        to_html(self, path, **options)
 
     def to_geojson(self) -> dict:
         """A GeoJSON Feature (LineString) with the route's cost and length as properties.

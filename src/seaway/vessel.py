@@ -8,6 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _core
+from ._validate import number
 
 #: The speed-loss formulas of the engine (cpp/seaway/weather.hpp).
 SPEED_LOSSES = tuple(_core.SpeedLoss.__members__)
@@ -43,8 +44,12 @@ class Vessel:
                           f"{2.25 * np.sqrt(self.length_m / 100):.2f} m; the forecast has {max_hs_m:.2f} m")
 
     def check(self):
-        if not (np.isfinite(self.speed_kn) and self.speed_kn > 0):
-            raise ValueError(f"speed_kn must be positive, got {self.speed_kn!r}")
+        number(self.speed_kn, "speed_kn", above=0, what="positive", example=12.0)
+        for name in ("displacement_t", "max_wind_ms", "max_wave_m"):
+            number(getattr(self, name), name, above=0)
+        for name in ("danger_wind_ms", "beam_m", "length_m", "calm_resistance_kn"):
+            if getattr(self, name) is not None:
+                number(getattr(self, name), name, above=0)
         if self.speed_loss not in SPEED_LOSSES:
             raise ValueError(f"speed_loss must be one of {SPEED_LOSSES}, got {self.speed_loss!r}")
         if self.speed_loss == "stawave1":

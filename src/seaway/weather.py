@@ -152,8 +152,6 @@ def route_safest(forecast, start, end, *, ship_length_m, speed_kn, at_hours=0.0,
     seaway._core.wave_danger and cpp/seaway/waves.hpp), on the forecast frame valid nearest
     `at_hours` after its first time. Needs wave height, direction and period fields; cost in
     danger x km."""
-    if not (ship_length_m > 0 and speed_kn > 0):
-        raise ValueError("ship_length_m and speed_kn must be positive")
     _heuristic_weight(method, None)
     fc = ForecastGrid(forecast, variables)
     model = WaveDanger(fc, ship_length_m, speed_kn, at_hours)

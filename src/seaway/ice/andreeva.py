@@ -47,6 +47,22 @@ def f1(draft, depth, delta_l=0.0):
     return np.clip(np.nan_to_num(f, nan=0.0), 0.0, 1.0)
 
 
+def depth_factor(depth, draft, delta_l=0.0):
+    """f1 on a chart from a depth raster instead of one charted depth: `depth` in m, positive
+    down, e.g. seaway.depth.depth_on_grid(seaway.depth.open_bathymetry(path), chart) (the
+    shallowest depth in each pixel); unknown depth (NaN) and land give f1 = 0, so V = 0 there.
+    A DataArray in gives a DataArray named f1 on the same grid."""
+    values = np.asarray(getattr(depth, "values", depth), dtype=float)
+    f = f1(draft, values, delta_l)
+    if hasattr(depth, "dims"):
+        out = depth.copy(data=f)
+        out.name = "f1"
+        out.attrs = {"long_name": "depth factor 1 - d / (Z - dL) (paper 002, eq. 9)",
+                     "units": "1", "draft_m": float(draft)}
+        return out
+    return f
+
+
 def f2(thickness, h_pass):
     """Ice factor 1 - h / h_pass, clipped to [0, 1]; 0 where h >= h_pass or h is NaN."""
     h = np.asarray(thickness, dtype=float)

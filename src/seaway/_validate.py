@@ -1,0 +1,35 @@
+"""One check for the numeric arguments of the public API: a real number (not a string, bool or
+array), finite, within bounds; the error names the argument and what to give instead."""
+
+from __future__ import annotations
+
+import numbers
+
+import numpy as np
+
+
+def number(value, name: str, *, minimum=None, above=None, maximum=None, integer=False,
+           what=None, example=None) -> float:
+    """`value` as a float (int if integer=True), or TypeError (not a number) / ValueError (NaN,
+    infinite or out of bounds) whose message names `name`: "{name} must be {what}, got ...".
+
+    minimum: value >= minimum; above: value > above; maximum: value <= maximum."""
+    if what is None:
+        bounds = [f">= {minimum:g}" if minimum is not None else "",
+                  f"> {above:g}" if above is not None else "",
+                  f"<= {maximum:g}" if maximum is not None else ""]
+        what = " ".join(["a finite " + ("integer" if integer else "number")]
+                        + [b for b in bounds if b])
+    message = f"{name} must be {what}, got {{}}{value!r}"
+    if example is not None:
+        message += f"; e.g. {name.split()[0]}={example!r}"
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value[()]
+    ok_type = numbers.Integral if integer else numbers.Real
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, ok_type):
+        raise TypeError(message.format(type(value).__name__ + " "))
+    v = int(value) if integer else float(value)
+    if not (np.isfinite(v) and (minimum is None or v >= minimum) and (above is None or v > above)
+            and (maximum is None or v <= maximum)):
+        raise ValueError(message.format(""))
+    return v
