@@ -13,6 +13,8 @@ SHAPE = (1900, 2300)  # the Kara Sea chart of paper 000: about 2300 x 1900 pixel
 
 MEDIANS: dict[str, float] = {}
 NOTES: dict[str, str] = {}
+CPU: dict[str, float] = {}  # median CPU seconds of the process (all threads), where recorded
+PEERS: dict[str, str] = {}  # the case a ratio is taken against (default: skimage 8-conn)
 
 
 @pytest.fixture(scope="session")
@@ -22,12 +24,16 @@ def chart():
     return cost, start, end
 
 
-def record(name, benchmark, note=""):
+def record(name, benchmark, note="", cpu=None, peer=None):
     if benchmark.stats is None:  # --benchmark-disable: the code ran once, untimed
         return
     MEDIANS[name] = benchmark.stats.stats.median
     if note:
         NOTES[name] = note
+    if cpu:
+        CPU[name] = float(np.median(cpu[-len(benchmark.stats.stats.data):]))
+    if peer:
+        PEERS[name] = peer
 
 
 def pytest_terminal_summary(terminalreporter):
@@ -41,6 +47,15 @@ def pytest_terminal_summary(terminalreporter):
     for name, med in MEDIANS.items():
         ratio = f"{peer / med:.2f}x" if peer else "-"
         tr.write_line(f"{name:44s} {med:9.3f} {ratio:>20s}  {NOTES.get(name, '')}")
+    if CPU:
+        tr.write_line("")
+        tr.write_line("CPU time (all threads of the process; steadier than wall time on a shared machine):")
+        tr.write_line(f"{'case':44s} {'wall s':>8s} {'CPU s':>8s} {'wall/peer':>10s} {'CPU/peer':>9s}  peer")
+        for name, c in CPU.items():
+            p = PEERS.get(name)
+            wr = f"{MEDIANS[name] / MEDIANS[p]:.3f}" if p in MEDIANS else "-"
+            cr = f"{c / CPU[p]:.3f}" if p in CPU else "-"
+            tr.write_line(f"{name:44s} {MEDIANS[name]:8.3f} {c:8.3f} {wr:>10s} {cr:>9s}  {p or ''}")
     for name, note in NOTES.items():
         if name not in MEDIANS:
             tr.write_line(f"{name}: {note}")

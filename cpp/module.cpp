@@ -6,6 +6,8 @@ namespace py = pybind11;
 void register_search(py::module_& m);
 void register_weather(py::module_& m);
 void register_models(py::module_& m);
+void register_exact(py::module_& m);
+void register_smooth(py::module_& m);
 void register_turns(py::module_& m);
 void register_constraints(py::module_& m);
 
@@ -14,6 +16,8 @@ PYBIND11_MODULE(_core, m) {
   register_search(m);
   register_weather(m);
   register_models(m);
+  register_exact(m);
+  register_smooth(m);
   register_turns(m);
   register_constraints(m);
 }

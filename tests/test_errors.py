@@ -195,7 +195,7 @@ def test_numpy_int_neighbourhood_is_fine():
     ({"edge_cost": "entered"}, "edge_cost must be one of"),
     ({"directions": "diag"}, r"directions must be one of \('full', 'unique'\)"),
     ({"directions": "axis"}, "directions must be one of"),
-    ({"method": "bfs"}, r"method must be one of \('dijkstra', 'astar'\)"),
+    ({"method": "bfs"}, r"method must be one of \('auto', 'dijkstra', 'astar', 'bidirectional', 'landmarks'\)"),
     ({"weight": 0.5}, "weight must be a finite number >= 1"),
     ({"weight": np.nan}, "weight must be a finite number >= 1"),
     ({"weight": np.inf}, "weight must be a finite number >= 1"),

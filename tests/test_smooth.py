@@ -8,6 +8,7 @@ from seaway._segments import Segments
 from seaway.smooth import smooth
 
 from reference import refraction_optimum
+from reference_legs import Segments as NumpySegments
 
 
 @pytest.mark.parametrize("edge_cost", ["max", "mean", "integral"])
@@ -37,7 +38,8 @@ def test_long_geographic_leg_follows_the_great_circle():
     c, km = seg.leg(np.array([10.0, 2.0]), np.array([10.0, 190.0]))
     assert c == pytest.approx(seaway._core.haversine_km(69, 170.2, 69, 189.0), rel=1e-12)
     assert km == pytest.approx(c)
-    path = seg._path(np.array([10.0, 2.0]), np.array([10.0, 190.0]), straight=False)
+    path = NumpySegments(r.chart, "integral", 5)._path(np.array([10.0, 2.0]), np.array([10.0, 190.0]),
+                                                       straight=False)
     assert path[:, 0].min() == pytest.approx(7.42, abs=0.02)  # 0.26 degrees north of 69 N
 
 
@@ -97,3 +99,35 @@ def test_smoothed_geographic_route_has_coords_and_length():
     assert s.cost == pytest.approx(gc, rel=1e-9) and s.length == pytest.approx(gc, rel=1e-9)
     assert s.coords.ravel() == pytest.approx([69, 171, 61, 189])
     assert r.cost > gc * 1.001
+
+
+@pytest.mark.parametrize("grid", ["planar", "geo_asc", "geo_desc", "geo_wrap"])
+@pytest.mark.parametrize("edge_cost", ["max", "mean", "integral"])
+def test_cpp_legs_match_the_numpy_reference(grid, edge_cost):
+    """Random legs (pixel centres, fractional points, long great circles, across the seam, into
+    land and off the chart) cost what the former numpy implementation says."""
+    from test_reference import make_chart
+
+    u, land, geo = make_chart(900 + len(grid) + len(edge_cost), grid, zeros=False)
+    u = np.where(np.isfinite(u), u, 1.0)  # keep most legs open: land comes from the mask only
+    land = land & (np.random.default_rng(1).random(u.shape) < 0.3)
+    chart = seaway.prepare(u, land=land, **geo).chart
+    ours, ref = Segments(chart, edge_cost, 5), NumpySegments(chart, edge_cost, 5)
+    rng = np.random.default_rng(2)
+    rows, cols = u.shape
+    pts = np.column_stack([rng.uniform(-0.4, rows - 0.6, 600), rng.uniform(-0.4, cols - 0.6, 600)])
+    pts[:200] = np.round(pts[:200])  # pixel centres: stencil steps and longer legs
+    pts[200:260, 0] = np.round(pts[200:260, 0]) + 0.5  # on pixel borders
+    if grid == "geo_wrap":
+        pts[260:300, 1] = rng.uniform(cols - 3, cols + 2, 40)  # across the seam
+    finite = 0
+    for a, b in zip(pts[:-1], pts[1:]):
+        c, km = ours.leg(a, b)
+        c_ref, km_ref = ref.leg(a, b)
+        assert km == pytest.approx(km_ref, rel=1e-9, abs=1e-12)
+        if np.isinf(c_ref):
+            assert np.isinf(c), (a, b)
+        else:
+            assert c == pytest.approx(c_ref, rel=1e-9, abs=1e-12), (a, b)
+            finite += 1
+    assert finite > 100

@@ -97,6 +97,7 @@ class DistanceBound {
     }
   }
 
+  bool active() const { return factor_ != 0; }
   double operator()(std::int64_t v) const {
     if (factor_ == 0) return 0;
     const std::int64_t r = v / g_.cols, c = v % g_.cols;

@@ -32,6 +32,13 @@ class RadixHeap {
     for (const auto& v : buckets_) b += v.capacity() * sizeof(HeapEntry);
     return b;
   }
+  // No key left in the heap is below this (bidirectional search's stopping rule).
+  double lower_bound() const { return last_key_; }
+  template <class F>
+  void for_each(F&& f) const {  // every entry, in no order
+    for (const auto& b : buckets_)
+      for (const HeapEntry& e : b) f(e);
+  }
 
   void push(HeapEntry e) {
     // A consistent A* bound keeps keys monotone up to rounding; never go below the last pop.
@@ -89,6 +96,15 @@ class BucketQueue {
     std::size_t b = ring_.capacity() * sizeof(ring_[0]);
     for (const auto& v : ring_) b += v.capacity() * sizeof(HeapEntry);
     return b;
+  }
+
+  // No key left in the queue is below this: the current bucket's floor, less one bucket for
+  // the rounding of key * (1 / width) (bidirectional search's stopping rule).
+  double lower_bound() const { return current_ > 0 ? double(current_ - 1) / inv_width_ : 0.0; }
+  template <class F>
+  void for_each(F&& f) const {  // every entry, in no order
+    for (const auto& b : ring_)
+      for (const HeapEntry& e : b) f(e);
   }
 
   void push(const HeapEntry& e) {

@@ -71,12 +71,18 @@ class PreparedGrid {
     check(start);
     check(target);
     Lease ws(*this);
+    return result(*ws, start, target, run(model, start, target, weight, *ws, control));
+  }
+
+  // The route to `target` a search from `start` left in `ws`.
+  RouteResult result(const Workspace& ws, std::int64_t start, std::int64_t target,
+                     const SearchStats& stats) const {
     RouteResult out;
-    out.stats = run(model, start, target, weight, *ws, control);
-    out.cost = ws->cost(target);
+    out.stats = stats;
+    out.cost = ws.cost(target);
     if (out.cost < inf) {
-      out.path = trace_path(g_, stencil_, *ws, start, target, &out.offsets);
-      for (std::int64_t p : out.path) out.cumulative.push_back(ws->cost(p));
+      out.path = trace_path(g_, stencil_, ws, start, target, &out.offsets);
+      for (std::int64_t p : out.path) out.cumulative.push_back(ws.cost(p));
     }
     return out;
   }
@@ -92,7 +98,17 @@ class PreparedGrid {
     return stats;
   }
 
- private:
+  // What the searches in bidirectional.hpp and landmarks.hpp need besides the above.
+  const std::uint8_t* clearance() const { return clearance_.data(); }
+  std::size_t clearance_bytes() const { return clearance_.capacity(); }
+  const Passability& passability() const { return pass_; }
+  LandRule land_rule() const { return rule_; }
+  double shortest_step() const { return rmin_; }  // step lengths on this grid
+  double longest_step() const { return rmax_; }
+  void check(std::int64_t p) const {
+    if (p < 0 || p >= g_.size()) throw std::out_of_range("pixel index outside the grid");
+  }
+
   // A workspace borrowed from the pool for one query, returned when the query ends.
   class Lease {
    public:
@@ -118,10 +134,7 @@ class PreparedGrid {
     std::unique_ptr<Workspace> ws_;
   };
 
-  void check(std::int64_t p) const {
-    if (p < 0 || p >= g_.size()) throw std::out_of_range("pixel index outside the grid");
-  }
-
+ private:
   // Pick the queue from the model's bounds on a step's cost (Model::bounds()): buckets when
   // every step's (reduced) cost has a positive floor and the range needs few buckets; a radix
   // heap otherwise; a 4-ary heap for weighted A*, whose keys are not monotone.

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "grid.hpp"
@@ -91,10 +92,12 @@ struct Cancelled : std::runtime_error {
 // Runs from `start` until `target` is settled (target < 0: until every reachable pixel is).
 // ws.cost(v) ends as the accumulated cost of v (exact for settled pixels), inf if not reached.
 // `clear` comes from compute_clearance() with cap = half-width + 1.
-template <class Queue, class Model>
-SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengths& lengths,
-                   const std::uint8_t* clear, double min_cost, std::int64_t start,
-                   std::int64_t target, Workspace& ws, Queue heap) {
+// `bound(v)` is A*'s lower bound on the cost from v to target (used when bound.active()).
+template <class Queue, class Model, class Bound>
+SearchStats search_with_bound(const SearchSpec& spec, const Model& model,
+                              const Grid::Lengths& lengths, const std::uint8_t* clear,
+                              double min_cost, std::int64_t start, std::int64_t target,
+                              Workspace& ws, Queue heap, const Bound& bound) {
   const Grid& g = *spec.grid;
   const std::vector<Offset>& st = *spec.stencil;
   const std::int64_t R = g.rows, C = g.cols, n_off = std::int64_t(st.size());
@@ -104,8 +107,7 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
   std::vector<std::int64_t> flat(st.size());
   for (std::size_t k = 0; k < st.size(); ++k) flat[k] = st[k].di * C + st[k].dj;
 
-  const bool use_bound = spec.heuristic_weight > 0 && target >= 0;
-  const DistanceBound bound(g, use_bound ? target : 0, use_bound ? spec.heuristic_weight * min_cost : 0);
+  const bool use_bound = bound.active() && target >= 0;
 
   ws.reset(g.size());
   double* dist = ws.dist.data();
@@ -185,6 +187,18 @@ SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengt
   stats.heap_peak = heap.peak();
   stats.state_bytes = ws.bytes() + heap.capacity_bytes();
   return stats;
+}
+
+// The straight-line (great-circle) bound, times spec.heuristic_weight x min_cost.
+template <class Queue, class Model>
+SearchStats search(const SearchSpec& spec, const Model& model, const Grid::Lengths& lengths,
+                   const std::uint8_t* clear, double min_cost, std::int64_t start,
+                   std::int64_t target, Workspace& ws, Queue heap) {
+  const bool use_bound = spec.heuristic_weight > 0 && target >= 0;
+  const DistanceBound bound(*spec.grid, use_bound ? target : 0,
+                            use_bound ? spec.heuristic_weight * min_cost : 0);
+  return search_with_bound(spec, model, lengths, clear, min_cost, start, target, ws,
+                           std::move(heap), bound);
 }
 
 // The pixels of the route from start to `target`, start first, read back from the predecessors.

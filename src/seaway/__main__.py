@@ -48,8 +48,8 @@ def _parser() -> argparse.ArgumentParser:
                       help="Russian Register ice class of the vessel (default Arc7)")
     demo.add_argument("--neighbourhood", type=_neighbourhood, default=5, metavar="K",
                       help="k of the k x k stencil: odd, 3 to 15 (default 5, as in paper 000)")
-    demo.add_argument("--method", default="astar", choices=("astar", "dijkstra"),
-                      help="search algorithm (both exact; default astar)")
+    demo.add_argument("--method", default="auto", choices=("auto", "bidirectional", "astar", "dijkstra"),
+                      help="search algorithm (all exact; default auto: the fastest for the query)")
     demo.add_argument("--out", metavar="FILE", help="also write the route as GeoJSON to FILE")
     _cli.add_commands(commands, _neighbourhood)
     _cli_season.add_season_command(commands, _neighbourhood)
@@ -119,8 +119,12 @@ def demo(args) -> int:
     print(f"route cost:   {r.cost:.1f} (sum of u x km)")
     print(f"length:       {km:.1f} km = {km / KM_PER_NM:.1f} nm")
     print(f"waypoints:    {len(r.pixels)}")
-    print(f"search:       {args.method}, {args.neighbourhood}x{args.neighbourhood} neighbourhood, "
+    print(f"search:       {r.method}, {args.neighbourhood}x{args.neighbourhood} neighbourhood, "
           f"{t_search:.2f} s, {r.stats['settled']} pixels settled")
+    t2 = time.perf_counter()
+    sm = r.smoothed()
+    print(f"smoothed:     cost {sm.cost:.1f} ({100 * (sm.cost / r.cost - 1):+.2f} %), "
+          f"{r.course_changes} -> {sm.course_changes} course changes, in {time.perf_counter() - t2:.3f} s")
     print(f"first:        {first[0]:.4f} N {first[1]:.4f} E")
     print(f"last:         {last[0]:.4f} N {last[1]:.4f} E")
     if args.out:

@@ -219,8 +219,8 @@ def add_commands(commands, neighbourhood_type) -> None:
     rp.add_argument("--edge-cost", default="max", choices=tuple(EDGE_COSTS),
                     help="step cost: max (paper 000), mean (paper 003) or integral (exact line "
                          "integral); default max")
-    rp.add_argument("--method", default="astar", choices=("astar", "dijkstra"),
-                    help="search algorithm (both exact; default astar)")
+    rp.add_argument("--method", default="auto", choices=("auto", "bidirectional", "astar", "dijkstra"),
+                    help="search algorithm (all exact; default auto: the fastest for the query)")
     rp.add_argument("--no-smooth", action="store_true",
                     help="keep the raw pixel route (default: any-angle smoothing, never costlier)")
     rp.add_argument("--snap", action="store_true",
@@ -248,8 +248,9 @@ def add_commands(commands, neighbourhood_type) -> None:
                     help="chart size (default 1900x2300, paper 000's Kara Sea chart)")
     bp.add_argument("--neighbourhood", type=neighbourhood_type, nargs="+", default=[5],
                     metavar="K", help="stencil sizes to time (default 5)")
-    bp.add_argument("--method", nargs="+", default=["astar", "dijkstra"],
-                    choices=("astar", "dijkstra"), help="methods to time (default both)")
+    bp.add_argument("--method", nargs="+", default=["auto", "dijkstra"],
+                    choices=("auto", "bidirectional", "astar", "dijkstra"),
+                    help="methods to time (default auto and dijkstra)")
     bp.add_argument("--repeat", type=int, default=3, metavar="N",
                     help="runs per case; the median is reported (default 3)")
     bp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")

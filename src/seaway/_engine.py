@@ -5,16 +5,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import _core
+from . import _core, _exact
 from ._chart import Chart, as_chart
 from ._interrupt import interruptible
 from .errors import NoRouteError
 from .models import CostModel, EdgeCost, as_model
 from .route import Route
-from ._validate import number
 
 DIRECTIONS = ("full", "unique")
-METHODS = ("dijkstra", "astar")
+METHODS = _exact.METHODS
 
 
 def _check_options(neighbourhood, directions):
@@ -29,16 +28,7 @@ def _check_options(neighbourhood, directions):
         raise ValueError(f"directions must be one of {DIRECTIONS}, got {directions!r}")
 
 
-def _heuristic_weight(method, weight) -> float:
-    if method not in METHODS:
-        raise ValueError(f"method must be one of {METHODS}, got {method!r}")
-    if method == "dijkstra":
-        if weight not in (None, 1, 1.0):
-            raise ValueError("weight inflates the A* heuristic; use it with method='astar'")
-        return 0.0
-    return 1.0 if weight is None else number(
-        weight, "weight", minimum=1, what="a finite number >= 1 (cost <= weight x optimum)",
-        example=1.5)
+_heuristic_weight = _exact.heuristic_weight
 
 
 def _nearest_passable(chart: Chart, rc) -> tuple[int, int] | None:
@@ -163,7 +153,7 @@ class PreparedChart:
     `edge_cost` is the default model of route() and cost_field()."""
 
     def __init__(self, cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-                 directions="full", edge_cost="max", keep_away=(), zones=()):
+                 directions="full", edge_cost="max", landmarks=0, keep_away=(), zones=()):
         _check_options(neighbourhood, directions)
         model = EdgeCost(edge_cost)
         if keep_away or zones:  # rasterised once, with the chart (seaway.constraints)
@@ -173,6 +163,8 @@ class PreparedChart:
         chart = as_chart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land)
         self._setup(chart, neighbourhood, directions, model, "segment")
         self._dims = getattr(cost, "dims", None)
+        if landmarks:
+            self.prepare_landmarks(landmarks)
 
     @classmethod
     def _from_chart(cls, chart: Chart, neighbourhood, directions, model: CostModel, land_rule):
@@ -188,6 +180,25 @@ class PreparedChart:
         self.neighbourhood, self.directions = neighbourhood, directions
         self._router = _core.make_router(chart.values, chart.land, chart.grid, neighbourhood,
                                          directions, land_rule)
+        self._landmarks, self.landmark_stats = {}, {}
+
+    def prepare_landmarks(self, count=8, *, model=None) -> dict:
+        """Tabulate the least costs from `count` landmark pixels (float32, 4 bytes per pixel
+        each) for `model` (default the chart's edge_cost), so that method="landmarks" (and
+        "auto") answers later queries by A* with the landmark bound. Returns the stats:
+        count, seconds, bytes, bytes_per_pixel, pixels."""
+        model = self.model if model is None else as_model(model)
+        seed = _nearest_passable(self.chart, tuple(n // 2 for n in self.chart.shape))
+        if seed is None:
+            raise ValueError("no pixel of the chart is passable: landmarks need water")
+        lm, seconds = interruptible(lambda cancel: _exact.build_landmarks(self, count, model, seed,
+                                                                          cancel))
+        self._landmarks[model.name] = lm
+        px = [divmod(int(p), self.chart.shape[1]) for p in lm.pixels]
+        self.landmark_stats[model.name] = stats = dict(
+            count=len(px), seconds=seconds, bytes=lm.bytes, bytes_per_pixel=lm.bytes / self.chart.values.size,
+            pixels=px)
+        return stats
 
     @property
     def edge_cost(self) -> str:
@@ -197,27 +208,29 @@ class PreparedChart:
     def _flat(self, rc) -> int:
         return rc[0] * self.chart.shape[1] + rc[1]
 
-    def _search(self, s, e, weight, model: CostModel):
+    def _search(self, s, e, weight, model: CostModel, method="astar"):
         """(cost, flat path, stats, cost to each path pixel, per-step values) between two
         located pixels; cost is inf if unreachable."""
         engine = model.engine(self)
-        return interruptible(lambda cancel: self._router.route(engine, self._flat(s), self._flat(e),
-                                                               weight, cancel))
+        return interruptible(lambda cancel: _exact.search(self, engine, self._flat(s), self._flat(e),
+                                                          method, weight, model, cancel))
 
-    def route(self, start, end, *, model=None, method="astar", weight=None, via=(),
+    def route(self, start, end, *, model=None, method="auto", weight=None, via=(),
               turn_penalty=None) -> Route:
         """The least-cost route from `start` to `end` under `model` (a seaway.models.CostModel
         or an edge-cost name; default the chart's edge_cost), through the `via` points in order
         and with an optional turn penalty (seaway._via). See seaway.route."""
         w = _heuristic_weight(method, weight)
         model = self.model if model is None else as_model(model)
+        method = _exact.resolve(self, model, method, weight)
+        w = _heuristic_weight(method, weight)  # the resolved method's: auto -> astar is A*
         if (via is not None and len(via)) or turn_penalty is not None:
             from ._via import route_constrained
             return route_constrained(self, start, end, model, method, w, via, turn_penalty)
         chart = self.chart
         s, e = locate(chart, start, "start"), locate(chart, end, "end")
         model.check_ends(self, s, e)
-        total, path, stats, cumulative, per_step = self._search(s, e, w, model)
+        total, path, stats, cumulative, per_step = self._search(s, e, w, model, method)
         if not np.isfinite(total):
             if isinstance(model, EdgeCost):
                 _check_overflow(chart, self.neighbourhood)
@@ -253,15 +266,17 @@ class PreparedChart:
 
 
 def prepare(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-            directions="full", edge_cost="max", keep_away=(), zones=()) -> PreparedChart:
-    """Validate and prepare a chart once for many routes; arguments as in route()."""
+            directions="full", edge_cost="max", landmarks=0, keep_away=(), zones=()) -> PreparedChart:
+    """Validate and prepare a chart once for many routes; arguments as in route().
+    landmarks=N (optional) also tabulates N landmarks for edge_cost (4 N bytes per pixel), so
+    that later exact queries run A* with the landmark bound (PreparedChart.prepare_landmarks)."""
     return PreparedChart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land,
                          neighbourhood=neighbourhood, directions=directions, edge_cost=edge_cost,
-                         keep_away=keep_away, zones=zones)
+                         landmarks=landmarks, keep_away=keep_away, zones=zones)
 
 
 def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-          directions="full", edge_cost="max", method="astar", weight=None, via=(),
+          directions="full", edge_cost="max", method="auto", weight=None, via=(),
           turn_penalty=None, keep_away=(), zones=()) -> Route:
     """The least-cost route from `start` to `end` over the raster `cost`.
 
@@ -278,10 +293,13 @@ def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, ne
         gcd(|di|, |dj|) = 1).
     edge_cost: one of seaway.models.EDGE_COSTS: "max" (paper 000), "mean" (paper 003) or
         "integral" (exact line integral).
-    method: "dijkstra" or "astar" (exact); with weight=w > 1, weighted A* (cost <= w x optimum).
+    method: "auto" (default: the fastest exact method for the query), "dijkstra", "astar",
+        "bidirectional" or "landmarks" (exact; see seaway._exact); "astar" with weight=w > 1
+        is weighted A* (cost <= w x optimum).
     via: points the route must pass, in order; each leg between consecutive points is optimal.
     turn_penalty: cost (in the route's units) per degree of course change, or a table
-        {angle_deg: cost} linear between its points; searched exactly over (pixel, last step).
+        {angle_deg: cost} linear between its points; searched exactly over (pixel, last step)
+        by Dijkstra (method "dijkstra") or A* (any other exact method).
     keep_away: seaway.constraints.KeepAway buffers from land or severe ice (hard and soft).
     zones: seaway.constraints.Zone exclusion or penalty areas (polygons).
 

@@ -101,10 +101,13 @@ class TurnPenalised(EdgeCost):
             "turn_penalty")
 
 
-def search_leg(prepared, s, e, weight, model, turns, incoming):
-    """(cost, flat path, stats, cumulative, per-step values) of one leg between located pixels."""
+def search_leg(prepared, s, e, weight, model, turns, incoming, method="astar"):
+    """(cost, flat path, stats, cumulative, per-step values) of one leg between located pixels;
+    `method` as resolved by seaway._exact. The turn search is Dijkstra for "dijkstra" and A*
+    (weighted if asked) for every other method: it has no bidirectional or landmark form."""
     if turns is None:
-        return prepared._search(s, e, weight, model)
+        return prepared._search(s, e, weight, model, method)
+    weight = 0.0 if method == "dijkstra" else (weight if method == "astar" else 1.0)
     engine = model.engine(prepared)
     angles, costs = turns
     return interruptible(lambda cancel: _core.route_turns(
@@ -139,7 +142,7 @@ def route_constrained(prepared, start, end, model, method, weight, via, turn_pen
             leg_model = model.later(elapsed)
         leg_model.check_ends(prepared, s, e)
         total, path, leg_stats, cumulative, leg_steps = search_leg(prepared, s, e, weight, leg_model,
-                                                                   turns, incoming)
+                                                                   turns, incoming, method)
         if not np.isfinite(total):
             if isinstance(model, EdgeCost):
                 _check_overflow(chart, prepared.neighbourhood)

@@ -28,7 +28,7 @@ COLUMNS = ["chart", "vessel", "voyage", "start", "end", "cost", "length", "settl
 
 
 def route_many(charts, voyages, *, vessels=None, lat=None, lon=None, dx=1.0, dy=1.0, land=None,
-               neighbourhood=5, directions="full", edge_cost="max", method="astar", weight=None,
+               neighbourhood=5, directions="full", edge_cost="max", method="auto", weight=None,
                threads=None, cluster=None, progress=None, keep_routes=False, time_dim="time",
                keep_away=(), zones=(), turn_penalty=None):
     """Route every voyage for every vessel on every chart; a pandas DataFrame, one row per route.

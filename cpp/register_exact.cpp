@@ -1,0 +1,87 @@
+// Bindings for the faster exact searches on a Router: bidirectional Dijkstra on two threads
+// (any static raster model), and A* with landmark tables built once per chart and model
+// (the symmetric models max, mean, integral). Python (seaway/_exact.py) picks and validates.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "results.hpp"
+#include "seaway/bidirectional.hpp"
+#include "seaway/landmarks.hpp"
+
+namespace py = pybind11;
+using namespace seaway;
+
+namespace {
+
+template <class M>
+void def_bidirectional(py::class_<Router>& router) {
+  router.def("route_bidirectional",
+             [](Router& r, const M& m, std::int64_t start, std::int64_t target, bool astar,
+                const CancelToken* cancel) {
+               RouteResult out;
+               {
+                 py::gil_scoped_release release;
+                 m.visit(*r.grid, [&](const auto& model) {
+                   out = astar ? route_bidirectional_astar(*r.grid, model, start, target, flag_of(cancel))
+                               : route_bidirectional(*r.grid, model, start, target, flag_of(cancel));
+                   return 0;
+                 });
+               }
+               return route_tuple(out, {});
+             },
+             py::arg("model"), py::arg("start"), py::arg("target"), py::arg("astar"),
+             py::arg("cancel") = nullptr,
+             "Exact bidirectional Dijkstra (astar: A* with the distance bound) on two threads; "
+             "returns what Router.route does");
+}
+
+template <class M>
+void def_landmarks(py::class_<Router>& router) {
+  router.def("build_landmarks",
+             [](Router& r, const M& m, int count, std::int64_t seed, const CancelToken* cancel) {
+               py::gil_scoped_release release;
+               return m.visit(*r.grid, [&](const auto& model) {
+                 return build_landmarks(*r.grid, model, count, seed, flag_of(cancel));
+               });
+             },
+             py::arg("model"), py::arg("count"), py::arg("seed"), py::arg("cancel") = nullptr,
+             "Pick `count` landmarks farthest-first from `seed` and tabulate their costs (float32)");
+  router.def("route_landmarks",
+             [](Router& r, const M& m, const Landmarks& lm, std::int64_t start, std::int64_t target,
+                const CancelToken* cancel) {
+               RouteResult out;
+               {
+                 py::gil_scoped_release release;
+                 m.visit(*r.grid, [&](const auto& model) {
+                   out = route_landmarks(*r.grid, lm, model, start, target, flag_of(cancel));
+                   return 0;
+                 });
+               }
+               return route_tuple(out, {});
+             },
+             py::arg("model"), py::arg("landmarks"), py::arg("start"), py::arg("target"),
+             py::arg("cancel") = nullptr,
+             "Exact A* with the landmark bound; returns what Router.route does");
+}
+
+}  // namespace
+
+void register_exact(py::module_& m) {
+  py::class_<Landmarks>(m, "Landmarks", "Float32 least-cost tables from landmark pixels (ALT)")
+      .def_property_readonly("pixels", [](const Landmarks& l) { return l.pixels; })
+      .def_property_readonly("bytes", &Landmarks::bytes)
+      .def_property_readonly("largest", [](const Landmarks& l) { return l.largest; });
+  py::class_<Router> router = py::reinterpret_borrow<py::class_<Router>>(m.attr("Router"));
+  router.def_property_readonly("cost_range", [](const Router& r) {
+    const Passability& p = r.grid->passability();
+    return py::make_tuple(p.passable ? p.min_cost : 0.0, p.max_cost, p.passable);
+  }, "(smallest, largest passable cost, passable pixels), from the preparation");
+  def_bidirectional<RasterModel<MaxCost>>(router);
+  def_bidirectional<RasterModel<MeanCost>>(router);
+  def_bidirectional<RasterModel<IntegralCost>>(router);
+  def_bidirectional<RasterModel<EnteredPixelCost>>(router);
+  def_landmarks<RasterModel<MaxCost>>(router);
+  def_landmarks<RasterModel<MeanCost>>(router);
+  def_landmarks<RasterModel<IntegralCost>>(router);
+}

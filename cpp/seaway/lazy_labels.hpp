@@ -1,0 +1,91 @@
+// Search labels (cost and predecessor step per pixel) in anonymous memory that the kernel
+// fills with zero pages on first write: a search that reaches part of the chart holds only the
+// pages it wrote (4 KiB: 512 costs). Costs are stored as bits(cost) ^ bits(inf), so a zero page
+// reads as "not reached" (inf); a settled pixel has its cost's sign bit set, as in Workspace.
+// Predecessor steps are stored + 1 (0: none). Accesses are relaxed atomics, so another thread
+// may read the labels while this one writes them (bidirectional.hpp); on x86-64 they are plain
+// moves. Transparent huge pages are declined: one touched pixel would map 2 MiB. Pages are
+// assumed 4 KiB (x86-64, aarch64 default) for the count of written pages.
+#pragma once
+
+#include <sys/mman.h>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <new>
+#include <vector>
+
+#include "grid.hpp"
+
+namespace seaway {
+
+class LazyLabels {
+ public:
+  explicit LazyLabels(std::int64_t n)
+      : n_(std::size_t(n)), cost_(map(n_ * 8)), pred_(map(n_)), written_((n_ >> 9) + 1) {}
+  ~LazyLabels() {
+    munmap(cost_, n_ * 8);
+    munmap(pred_, n_);
+  }
+  LazyLabels(const LazyLabels&) = delete;
+  LazyLabels& operator=(const LazyLabels&) = delete;
+
+  double get(std::int64_t v) const {
+    const std::uint64_t b = __atomic_load_n(static_cast<const std::uint64_t*>(cost_) + v, __ATOMIC_RELAXED);
+    return decode(b);
+  }
+  void set(std::int64_t v, double d) {  // by one thread only: the owner of these labels
+    __atomic_store_n(static_cast<std::uint64_t*>(cost_) + v, encode(d), __ATOMIC_RELAXED);
+    written_[std::size_t(v) >> 9] = 1;  // the 4 KiB page of 512 costs holding v
+  }
+  void set(std::int64_t v, double d, int pred) {
+    set(v, d);
+    static_cast<std::uint8_t*>(pred_)[v] = std::uint8_t(pred + 1);  // read after the threads join
+  }
+  int pred(std::int64_t v) const { return int(static_cast<const std::uint8_t*>(pred_)[v]) - 1; }
+
+  // Bytes of the pages written (4 KiB: 512 costs, 4096 predecessors); reading an unwritten
+  // page maps the kernel's shared zero page, which costs no memory. Tested against the peak
+  // resident memory of a fresh process (benchmarks/test_exact.py).
+  std::size_t resident_bytes() const {
+    std::size_t cost_pages = 0, pred_pages = 0;
+    for (std::size_t p = 0; p < written_.size(); ++p) {
+      cost_pages += written_[p];
+      if (p % 8 == 0) {
+        bool any = false;
+        for (std::size_t q = p; q < std::min(p + 8, written_.size()); ++q) any = any || written_[q];
+        pred_pages += any;
+      }
+    }
+    return (cost_pages + pred_pages) * 4096 + written_.size();
+  }
+
+ private:
+  static constexpr std::uint64_t inf_bits = 0x7ff0000000000000ull;
+  static std::uint64_t encode(double d) {
+    std::uint64_t b;
+    std::memcpy(&b, &d, 8);
+    return b ^ inf_bits;
+  }
+  static double decode(std::uint64_t b) {
+    b ^= inf_bits;
+    double d;
+    std::memcpy(&d, &b, 8);
+    return d;
+  }
+  static void* map(std::size_t bytes) {
+    void* p = mmap(nullptr, bytes ? bytes : 1, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) throw std::bad_alloc();
+#ifdef MADV_NOHUGEPAGE
+    madvise(p, bytes ? bytes : 1, MADV_NOHUGEPAGE);
+#endif
+    return p;
+  }
+  std::size_t n_;
+  void* cost_;
+  void* pred_;
+  std::vector<std::uint8_t> written_;  // per 512 pixels: a cost was written there
+};
+
+}  // namespace seaway

@@ -1,0 +1,214 @@
+// The cost and land test of an arbitrary straight leg on a chart, consistent with the engine
+// (the rules are documented in seaway/_segments.py, which binds this class).
+// Points are fractional (row, col) pixel indices; pixel (i, j) is the closed square
+// [i - 1/2, i + 1/2] x [j - 1/2, j + 1/2]. A leg is forbidden when its closed path touches the
+// closed square of an impassable pixel or leaves the chart. On geographic charts the path is
+// the great circle, followed through index space as a polyline with a vertex every <= 4
+// pixels; a leg that is one of the engine's stencil steps is the engine's straight segment.
+// Cost: split the path at pixel borders into pieces (length l_k in pixel of cost u_k);
+// integral: sum l_k u_k; max / mean: the engine's rule on the chain of pixels crossed, each
+// move between consecutive pixels of length (l_k + l_k+1) / 2 (the end half-pieces go to the
+// end moves); a stencil step costs exactly what the engine charges.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "grid.hpp"
+
+namespace seaway {
+
+enum class LegRule { integral, max, mean };
+
+struct Point {
+  double r, c;
+};
+
+class LegPricer {
+ public:
+  // The chart's cost per unit length, float32 (uf) or float64 (ud), read in place, and its
+  // land mask (or null): a pixel is impassable where land is set or its cost is NaN, inf or
+  // negative (the engine's rule).
+  LegPricer(const float* uf, const double* ud, const std::uint8_t* land, const Grid& g, LegRule rule,
+            int half)
+      : uf_(uf), ud_(ud), land_(land), g_(g), rule_(rule), half_(half) {}
+
+  // (cost, length) of the leg p -> q; cost inf if the leg is forbidden.
+  std::pair<double, double> leg(Point p, Point q) const {
+    const bool step = is_step(p, q);
+    std::vector<Point>& path = path_;
+    make_path(p, q, step, path);
+    if (!pieces(path)) {
+      double total = 0;
+      for (std::size_t i = 0; i + 1 < path.size(); ++i) total += length(path[i], path[i + 1]);
+      return {inf, total};
+    }
+    double total = 0;
+    for (const Piece& k : pieces_) total += k.len;
+    if (rule_ == LegRule::integral) {
+      double s = 0;
+      for (const Piece& k : pieces_) s += k.len * k.u;
+      return {s, total};
+    }
+    if (step) {
+      const double a = at(std::int64_t(p.r), std::int64_t(p.c)), b = at(std::int64_t(q.r), std::int64_t(q.c));
+      const double f = rule_ == LegRule::max ? std::max(a, b) : (a + b) / 2;
+      return {f * total, total};
+    }
+    // One entry per pixel crossed (consecutive pieces in the same pixel merged).
+    merged_.clear();
+    for (std::size_t i = 0; i < pieces_.size(); ++i) {
+      if (i > 0 && pieces_[i].id == pieces_[i - 1].id) merged_.back().len += pieces_[i].len;
+      else merged_.push_back(pieces_[i]);
+    }
+    const std::size_t n = merged_.size();
+    if (n == 1) return {merged_[0].len * merged_[0].u, total};
+    double s = 0;
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      double move = (merged_[i].len + merged_[i + 1].len) / 2;
+      if (i == 0) move += merged_[0].len / 2;
+      if (i + 2 == n) move += merged_[n - 1].len / 2;
+      const double a = merged_[i].u, b = merged_[i + 1].u;
+      s += move * (rule_ == LegRule::max ? std::max(a, b) : (a + b) / 2);
+    }
+    return {s, total};
+  }
+
+  double cost(const std::vector<Point>& pts) const {
+    double s = 0;
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) s += leg(pts[i], pts[i + 1]).first;
+    return s;
+  }
+
+ private:
+  static constexpr double eps = 1e-9;
+  static constexpr double subdivide = 4.0;  // index-space length of a great-circle leg's pieces
+  struct Piece {
+    double len, u;
+    std::int64_t id;
+  };
+
+  bool is_step(Point p, Point q) const {
+    return p.r == std::round(p.r) && p.c == std::round(p.c) && q.r == std::round(q.r) &&
+           q.c == std::round(q.c) && std::max(std::fabs(q.r - p.r), std::fabs(q.c - p.c)) <= half_;
+  }
+
+  double lat(double r) const { return g_.lat0 + r * g_.dlat; }
+  double lon(double c) const { return g_.lon0 + c * g_.dlon; }
+
+  double length(Point a, Point b) const {
+    if (!g_.geographic) return std::hypot((b.r - a.r) * g_.dy, (b.c - a.c) * g_.dx);
+    const double p1 = lat(a.r) * deg, p2 = lat(b.r) * deg, dl = (lon(b.c) - lon(a.c)) * deg;
+    const double s1 = std::sin((p2 - p1) / 2), s2 = std::sin(dl / 2);
+    const double x = std::clamp(s1 * s1 + std::cos(p1) * std::cos(p2) * s2 * s2, 0.0, 1.0);
+    return 2 * earth_radius_km * std::asin(std::sqrt(x));
+  }
+
+  // The path's vertices in index space: the segment, or the great circle as a polyline.
+  void make_path(Point p, Point q, bool straight, std::vector<Point>& path) const {
+    path.clear();
+    const double n_index = std::hypot(q.r - p.r, q.c - p.c);
+    if (!g_.geographic || straight || n_index <= subdivide) {
+      path = {p, q};
+      return;
+    }
+    const int m = int(std::ceil(n_index / subdivide));
+    const double la1 = lat(p.r) * deg, lo1 = lon(p.c) * deg, la2 = lat(q.r) * deg, lo2 = lon(q.c) * deg;
+    const double a[3] = {std::cos(la1) * std::cos(lo1), std::cos(la1) * std::sin(lo1), std::sin(la1)};
+    const double b[3] = {std::cos(la2) * std::cos(lo2), std::cos(la2) * std::sin(lo2), std::sin(la2)};
+    const double cx = a[1] * b[2] - a[2] * b[1], cy = a[2] * b[0] - a[0] * b[2], cz = a[0] * b[1] - a[1] * b[0];
+    const double omega = std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+    double prev = lon(p.c), unwrapped = prev, first = 0;
+    for (int i = 0; i <= m; ++i) {
+      const double f = double(i) / m;
+      double v[3];
+      for (int k = 0; k < 3; ++k)
+        v[k] = omega < 1e-12 ? a[k] : (std::sin((1 - f) * omega) * a[k] + std::sin(f * omega) * b[k]) / std::sin(omega);
+      const double la = std::atan2(v[2], std::hypot(v[0], v[1])) / deg;
+      const double lo = std::atan2(v[1], v[0]) / deg;
+      // Continuous longitudes (no jump over 180 degrees), then shifted so the first is lon(p).
+      double d = std::fmod(lo - prev + 180.0, 360.0);
+      if (d < 0) d += 360.0;
+      unwrapped += d - 180.0;
+      prev = lo;
+      if (i == 0) first = unwrapped;
+      path.push_back({(la - g_.lat0) / g_.dlat, (unwrapped + (lon(p.c) - first) - g_.lon0) / g_.dlon});
+    }
+    path.front() = p;
+    // Across the seam of a 360-degree chart the path ends at q's column plus a whole turn.
+    const double turns = g_.wrap ? std::round((path.back().c - q.c) / double(g_.cols)) : 0.0;
+    path.back() = {q.r, q.c + turns * double(g_.cols)};
+  }
+
+  // Cost of pixel (r, c): inf outside the chart; columns wrap on a 360-degree chart.
+  double at(std::int64_t r, std::int64_t c) const {
+    if (g_.wrap) c = ((c % g_.cols) + g_.cols) % g_.cols;
+    if (r < 0 || r >= g_.rows || c < 0 || c >= g_.cols) return inf;
+    const std::int64_t i = r * g_.cols + c;
+    const double x = uf_ ? double(uf_[i]) : ud_[i];
+    return (x >= 0 && x < inf && !(land_ && land_[i])) ? x : inf;
+  }
+  // The largest cost among the pixels whose closed squares hold the point (1, 2 or 4 of them),
+  // and the id of the first.
+  double around(Point x, std::int64_t* id = nullptr) const {
+    const std::int64_t r0 = std::int64_t(std::floor(x.r + 0.5 - eps)), r1 = std::int64_t(std::floor(x.r + 0.5 + eps));
+    const std::int64_t c0 = std::int64_t(std::floor(x.c + 0.5 - eps)), c1 = std::int64_t(std::floor(x.c + 0.5 + eps));
+    if (id) *id = r0 * (g_.cols + 1) + c0;
+    return std::max({at(r0, c0), at(r0, c1), at(r1, c0), at(r1, c1)});
+  }
+
+  // Pieces of the polyline inside single pixels into pieces_; false if the closed polyline
+  // touches an impassable pixel or leaves the chart.
+  bool pieces(const std::vector<Point>& path) const {
+    pieces_.clear();
+    for (std::size_t s = 0; s + 1 < path.size(); ++s) {
+      const Point a = path[s], b = path[s + 1];
+      // The border crossings of each axis, each list ascending in t, then merged.
+      ts_.assign({0.0});
+      std::size_t mid = 1;
+      for (int axis = 0; axis < 2; ++axis) {
+        const double xa = axis ? a.c : a.r, xb = axis ? b.c : b.r;
+        const double lo = std::min(xa, xb), hi = std::max(xa, xb);
+        if (hi - lo > eps) {
+          const double k0 = std::ceil(lo - 0.5 - eps), k1 = std::floor(hi - 0.5 + eps);
+          const std::size_t from = ts_.size();
+          for (double k = k0; k <= k1; ++k) ts_.push_back(std::clamp((k + 0.5 - xa) / (xb - xa), 0.0, 1.0));
+          if (xb < xa) std::reverse(ts_.begin() + std::ptrdiff_t(from), ts_.end());
+        }
+        if (axis == 0) mid = ts_.size();
+      }
+      std::inplace_merge(ts_.begin() + 1, ts_.begin() + std::ptrdiff_t(mid), ts_.end());
+      ts_.push_back(1.0);
+      kept_.clear();
+      for (std::size_t i = 0; i < ts_.size(); ++i)
+        if (i == 0 || ts_[i] - ts_[i - 1] > eps) kept_.push_back(ts_[i]);
+      const double seg = length(a, b);
+      auto point = [&](double t) { return Point{a.r + t * (b.r - a.r), a.c + t * (b.c - a.c)}; };
+      for (double t : kept_)
+        if (!(around(point(t)) < inf)) return false;
+      for (std::size_t i = 0; i + 1 < kept_.size(); ++i) {
+        std::int64_t id;
+        const double u = around(point((kept_[i] + kept_[i + 1]) / 2), &id);
+        if (!(u < inf)) return false;
+        pieces_.push_back({(kept_[i + 1] - kept_[i]) * seg, u, id});
+      }
+    }
+    return true;
+  }
+
+  const float* uf_;
+  const double* ud_;
+  const std::uint8_t* land_;
+  Grid g_;
+  LegRule rule_;
+  int half_;
+  // Scratch reused across calls (one pricer per thread).
+  mutable std::vector<Point> path_;
+  mutable std::vector<Piece> pieces_, merged_;
+  mutable std::vector<double> ts_, kept_;
+};
+
+}  // namespace seaway

@@ -1,0 +1,116 @@
+"""Which exact search answers a query, and running it (issue 12).
+
+Methods (all exact except weighted A*):
+* "dijkstra": one search from the start.
+* "astar": A* with the straight-line bound (distance x the chart's smallest cost); with
+  weight=w > 1, weighted A* (cost <= w x optimum).
+* "bidirectional": Dijkstra from the start and from the end at once on two threads, stopped
+  by the exact rule top_f + top_b >= best meeting (cpp/seaway/bidirectional.hpp); on charts
+  whose costs span at most a factor ASTAR_CONTRAST, bidirectional A* (average potential). Static
+  raster models only (max, mean, integral, entered pixel): the backward search charges each
+  step the forward step's cost, which needs costs that do not depend on the arrival time.
+* "landmarks": A* with the landmark (ALT) bound, after PreparedChart.prepare_landmarks() (or
+  prepare(..., landmarks=N)) for this model; max, mean and integral only: the bound
+  |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
+  mean of the two ends x the step's length; the integral over the same segment).
+* "auto" (the default): "astar" if a weight is given; "landmarks" when the chart has landmarks
+  for the query's model; else "astar" on a low-contrast chart (passable costs within a factor
+  ASTAR_CONTRAST, e.g. summer ice: the bound is tight, and A* on one thread settles about as
+  few pixels as bidirectional A* on two, with less work per pixel); else "bidirectional" for a
+  static raster model; else "astar" (time-dependent models). On the benchmark charts this is
+  never slower than Dijkstra (benchmarks/README.md)."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from ._validate import number
+from .models import EDGE_COSTS, EdgeCost
+
+METHODS = ("auto", "dijkstra", "astar", "bidirectional", "landmarks")
+#: "bidirectional" adds the A* potential (the average of the distance bounds to the end and from
+#: the start, x the chart's smallest cost) when the chart's passable costs span at most this
+#: factor: on the summer chart (costs 1-2) it settles 45 % fewer pixels than without; on the
+#: winter chart (1-30) the bound is too weak to pay for itself (benchmarks/README.md).
+ASTAR_CONTRAST = 2.0
+
+
+def heuristic_weight(method, weight) -> float:
+    """The A* weight of `method` (0 for the methods without one); validates both."""
+    if method not in METHODS:
+        raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+    if method == "auto" and weight is not None:
+        method = "astar"  # a weight asks for (weighted) A*
+    if method != "astar":
+        if weight not in (None, 1, 1.0):
+            raise ValueError("weight inflates the A* heuristic; use it with method='astar'")
+        return 0.0
+    return 1.0 if weight is None else number(
+        weight, "weight", minimum=1, what="a finite number >= 1 (cost <= weight x optimum)",
+        example=1.5)
+
+
+def _static(model) -> bool:
+    return isinstance(model, EdgeCost)
+
+
+def resolve(prepared, model, method: str, weight=None) -> str:
+    """The method that answers the query; refuses a method the model does not allow."""
+    if method == "auto" and weight is not None:
+        return "astar"
+    if method == "auto":
+        if model.name in prepared._landmarks and _static(model):
+            return "landmarks"
+        if _static(model) and not (model.name in EDGE_COSTS and _low_contrast(prepared)):
+            return "bidirectional"
+        return "astar"
+    if method == "bidirectional" and not _static(model):
+        raise ValueError(
+            f"method='bidirectional' needs a static raster model (edge_cost in {tuple(EDGE_COSTS)}); "
+            f"the {model.name!r} model's step costs depend on the time of arrival, so the backward "
+            "search cannot price them: use method='astar' or 'dijkstra'")
+    if method == "landmarks":
+        if not (_static(model) and model.name in EDGE_COSTS):
+            raise ValueError(
+                f"method='landmarks' needs a symmetric static model (edge_cost in "
+                f"{tuple(EDGE_COSTS)}), not {model.name!r}: use method='bidirectional' or 'astar'")
+        if model.name not in prepared._landmarks:
+            raise ValueError(
+                f"the chart has no landmarks for the {model.name!r} model: call "
+                f"prepared.prepare_landmarks(8, model={model.name!r}) first (or "
+                "seaway.prepare(..., landmarks=8)), or use method='auto'")
+    return method
+
+
+def search(prepared, engine, s: int, e: int, method: str, weight: float, model, cancel):
+    """(cost, flat path, stats, cost to each path pixel, per-step values) by `method`."""
+    router = prepared._router
+    if method == "bidirectional":
+        return router.route_bidirectional(engine, s, e, _low_contrast(prepared), cancel)
+    if method == "landmarks":
+        return router.route_landmarks(engine, prepared._landmarks[model.name], s, e, cancel)
+    return router.route(engine, s, e, weight, cancel)
+
+
+def _low_contrast(prepared) -> bool:
+    """The chart's passable costs span at most ASTAR_CONTRAST."""
+    lo, hi, _ = prepared._router.cost_range  # found while the chart was prepared
+    span = hi / lo if lo > 0 else np.inf
+    return span <= ASTAR_CONTRAST
+
+
+def build_landmarks(prepared, count, model, seed_rc, cancel):
+    """The landmark tables of `model` on `prepared`, and the seconds it took."""
+    if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
+        raise TypeError(f"landmarks must be an integer from 1 to 64, got {count!r}")
+    if not 1 <= count <= 64:
+        raise ValueError(f"landmarks must be from 1 to 64 (4 bytes per pixel each), got {count}")
+    if not (_static(model) and model.name in EDGE_COSTS):
+        raise ValueError(f"landmarks need a symmetric static model (edge_cost in {tuple(EDGE_COSTS)}), "
+                         f"not {model.name!r}")
+    t0 = time.perf_counter()
+    seed = seed_rc[0] * prepared.chart.shape[1] + seed_rc[1]
+    lm = prepared._router.build_landmarks(model.engine(prepared), int(count), int(seed), cancel)
+    return lm, time.perf_counter() - t0
