@@ -53,9 +53,6 @@ class PreparedGrid {
   }
   const std::vector<Offset>& stencil() const { return stencil_; }
   const Grid::Lengths& lengths() const { return lengths_; }
-  const std::uint8_t* clearance() const { return clearance_.data(); }
-  const Passability& passability() const { return pass_; }
-  LandRule land_rule() const { return rule_; }
   int half_width() const { return half_; }  // largest |di| or |dj| of the stencil
   // Index of the stencil offset (di, dj), or -1.
   int offset_index(int di, int dj) const {
