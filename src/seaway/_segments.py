@@ -81,29 +81,6 @@ def leg_path(chart, p, q, straight: bool) -> np.ndarray:
     return path
 
 
-def leg_path(chart, p, q, straight: bool) -> np.ndarray:
-    """Vertices in index space of the leg p -> q: the straight segment (planar charts, engine
-    steps) or the great circle every <= SUBDIVIDE pixels (geographic charts)."""
-    p, q = np.asarray(p, float), np.asarray(q, float)
-    n_index = float(np.hypot(*(q - p)))
-    if not chart.geographic or straight or n_index <= SUBDIVIDE:
-        return np.array([p, q])
-    g = chart.grid
-    lat1, lon1 = g.lat0 + p[0] * g.dlat, g.lon0 + p[1] * g.dlon
-    lat2, lon2 = g.lat0 + q[0] * g.dlat, g.lon0 + q[1] * g.dlon
-    m = int(np.ceil(n_index / SUBDIVIDE))
-    lat, lon = geo.intermediate(lat1, lon1, lat2, lon2, np.linspace(0.0, 1.0, m + 1))
-    lon = geo.unwrap_lon(np.concatenate([[lon1], lon]))[1:]
-    lon += lon1 - lon[0]
-    path = np.column_stack([(lat - g.lat0) / g.dlat, (lon - g.lon0) / g.dlon])
-    last = q.copy()
-    if g.wrap:  # a leg across the seam of a 360-degree chart ends at q's column + a whole turn
-        cols = chart.shape[1]
-        last[1] += cols * np.round((path[-1, 1] - q[1]) / cols)
-    path[0], path[-1] = p, last
-    return path
-
-
 def index_coords(chart, pts) -> np.ndarray:
     """(n, 2) lat/lon (longitude in the chart's convention) or y/x of fractional (row, col)."""
     p = np.asarray(pts, float).reshape(-1, 2)
