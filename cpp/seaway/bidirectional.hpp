@@ -5,9 +5,8 @@
 // needs no symmetry of the model, but the model must be static (a step's cost may not depend
 // on the arrival time; the caller checks).
 //
-// Rounds: in round k each side settles the pixels of its queue up to the key R_k, the same
-// bound for both (so each covers about half the route whatever the scheduler does), then the
-// two meet at a barrier. There, labels are still: each side scans the pixels it relabelled in
+// Rounds: in each round each side settles the same count of pixels (so the two threads get
+// equal work whatever the scheduler does), then the two meet at a barrier. There, labels are still: each side scans the pixels it relabelled in
 // the round (those it settled, and its queue) against the other's labels, and
 // mu = min over pixels labelled by both of d_f + d_b (a real route's cost) is updated.
 // Stop when top_f + top_b >= mu (top: no key left in a queue is lower) or a queue is empty:
@@ -80,7 +79,7 @@ struct Meeting {
 // One side of the search. Backward == true walks the steps into each pixel.
 template <bool Backward, class Queue, class Model, class Potential>
 SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::int64_t origin,
-                               LazyLabels& mine, const LazyLabels& other, Queue heap, double width, double span,
+                               LazyLabels& mine, const LazyLabels& other, Queue heap,
                                const Potential& pot, double shift, detail::Rounds& rounds,
                                Meeting& meet, const SearchControl* cancel) {
   constexpr int self = Backward ? 1 : 0;
@@ -105,13 +104,11 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
     return std::max(0.0, Backward ? d - pot(v) + shift : d + pot(v) - shift);
   };
   heap.push({0.0, std::uint32_t(origin)});
-  HeapEntry pending{0, 0};  // popped, above the round's bound: first of the next round
-  bool has_pending = false;
-  // Rounds of a few steps' cost, later 1/32 of the radius: few barriers, little overshoot. With
-  // a potential, reduced keys grow by as little as `width` a step: rounds of 64 such steps,
-  // later 1/16 of the reduced radius.
-  const double step = pot.active() ? 64 * width : 4 * span, growth = pot.active() ? 1.0 / 16 : 1.0 / 32;
-  double bound = step, mu = inf;
+  // Rounds of a count of settled pixels, the same on both sides (4096, later 1/16 of what the
+  // side has settled): the two threads get equal work whatever the ends' surroundings, and the
+  // last round overshoots the stop by at most 1/16. The count depends on nothing but this
+  // side's own search, so the rounds are the same on every run.
+  double mu = inf;
   int passed = 0;
 
   auto settle = [&](std::int64_t v, double dv) {
@@ -177,25 +174,13 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
   };
 
   for (;;) {
-    // Search: settle up to the round's bound.
+    // Search: settle this round's count of pixels.
     settled_now.clear();
-    for (;;) {
-      HeapEntry top;
-      if (has_pending) {
-        top = pending;
-        has_pending = false;
-      } else if (!heap.empty()) {
-        top = heap.pop();
-      } else {
-        break;
-      }
+    const std::int64_t quota = std::max<std::int64_t>(4096, stats.settled / 16);
+    while (std::int64_t(settled_now.size()) < quota && !heap.empty()) {
+      const HeapEntry top = heap.pop();
       const double dv = mine.get(top.id);
       if (std::signbit(dv)) continue;  // an older entry of a settled pixel
-      if (top.key > bound) {
-        pending = top;
-        has_pending = true;
-        break;
-      }
       settle(top.id, dv);
     }
     round_peak = std::max(round_peak, settled_now.capacity());
@@ -211,13 +196,11 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
     };
     for (std::uint32_t v : settled_now) check(v);
     heap.for_each([&](const HeapEntry& e) { check(e.id); });
-    if (has_pending) check(pending.id);
     const int k = passed / 2 % 2;  // this round's slot
     rounds.mu_part[k][self] = best;
     rounds.meet_part[k][self] = at;
-    rounds.top[k][self] = has_pending ? (heap.empty() ? pending.key : std::min(pending.key, heap.lower_bound()))
-                                   : (heap.empty() ? inf : heap.lower_bound());
-    rounds.empty[k][self] = !has_pending && heap.empty();
+    rounds.top[k][self] = heap.empty() ? inf : heap.lower_bound();
+    rounds.empty[k][self] = heap.empty();
     if (!rounds.barrier(self, passed)) break;
     // Decide, on the same values on both sides.
     for (int s = 0; s < 2; ++s)
@@ -230,7 +213,6 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
     if (rounds.empty[k][0] || rounds.empty[k][1] ||
         rounds.top[k][0] + rounds.top[k][1] >= mu + rounds.mu_offset + rounds.mu_slack * mu)
       break;
-    bound += std::max(step, bound * growth);
   }
   stats.heap_peak = heap.peak();
   stats.state_bytes = heap.capacity_bytes() + round_peak * sizeof(std::uint32_t);
@@ -296,9 +278,9 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
     try {
       const double shift = B ? shift_b : shift_f;
       sides[B] = buckets
-          ? bidirectional_side<B>(pg, model, origin, mine, theirs, BucketQueue(width, span), width, span,
+          ? bidirectional_side<B>(pg, model, origin, mine, theirs, BucketQueue(width, span),
                                   pot, shift, rounds, meet, cancel)
-          : bidirectional_side<B>(pg, model, origin, mine, theirs, RadixHeap{}, width, span, pot, shift,
+          : bidirectional_side<B>(pg, model, origin, mine, theirs, RadixHeap{}, pot, shift,
                                   rounds, meet, cancel);
     } catch (...) {
       errors[B] = std::current_exception();

@@ -32,12 +32,16 @@ class LazyLabels {
   LazyLabels& operator=(const LazyLabels&) = delete;
 
   double get(std::int64_t v) const {
+    // An unwritten page is not read: reading it would map the kernel's zero page, and the
+    // owner's first write would then replace that mapping, a fault that flushes the TLB of
+    // every core running the process (an interrupt to the other side's thread).
+    if (!__atomic_load_n(&written_[std::size_t(v) >> 9], __ATOMIC_RELAXED)) return inf;
     const std::uint64_t b = __atomic_load_n(static_cast<const std::uint64_t*>(cost_) + v, __ATOMIC_RELAXED);
     return decode(b);
   }
   void set(std::int64_t v, double d) {  // by one thread only: the owner of these labels
     __atomic_store_n(static_cast<std::uint64_t*>(cost_) + v, encode(d), __ATOMIC_RELAXED);
-    written_[std::size_t(v) >> 9] = 1;  // the 4 KiB page of 512 costs holding v
+    __atomic_store_n(&written_[std::size_t(v) >> 9], std::uint8_t(1), __ATOMIC_RELAXED);  // v's 4 KiB page
   }
   void set(std::int64_t v, double d, int pred) {
     set(v, d);
