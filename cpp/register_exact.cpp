@@ -49,20 +49,23 @@ void def_landmarks(py::class_<Router>& router) {
              "Pick `count` landmarks farthest-first from `seed` and tabulate their costs (float32)");
   router.def("route_landmarks",
              [](Router& r, const M& m, const Landmarks& lm, std::int64_t start, std::int64_t target,
-                const CancelToken* cancel) {
+                bool bidirectional, const CancelToken* cancel) {
                RouteResult out;
                {
                  py::gil_scoped_release release;
                  m.visit(*r.grid, [&](const auto& model) {
-                   out = route_landmarks(*r.grid, lm, model, start, target, flag_of(cancel));
+                   out = bidirectional
+                             ? route_landmarks_bidirectional(*r.grid, lm, model, start, target, flag_of(cancel))
+                             : route_landmarks(*r.grid, lm, model, start, target, flag_of(cancel));
                    return 0;
                  });
                }
                return route_tuple(out, {});
              },
              py::arg("model"), py::arg("landmarks"), py::arg("start"), py::arg("target"),
-             py::arg("cancel") = nullptr,
-             "Exact A* with the landmark bound; returns what Router.route does");
+             py::arg("bidirectional"), py::arg("cancel") = nullptr,
+             "Exact A* with the landmark bound (bidirectional: on two threads, with the average "
+             "potential); returns what Router.route does");
 }
 
 }  // namespace

@@ -30,8 +30,11 @@ def _ends(ref, start, expect, rng):
 @pytest.mark.parametrize("edge_cost,k,directions,grid", CASES)
 def test_exact_methods_match_reference(edge_cost, k, directions, grid, potential, monkeypatch):
     """Both forms of the bidirectional search: plain, and with the A* potential (used on
-    low-contrast charts; forced here on every chart)."""
+    low-contrast charts; forced here on every chart); and both forms of the landmark search:
+    A* on one thread (with the plain bidirectional runs) and bidirectional A* with the average
+    landmark potential on two (with the A* runs)."""
     monkeypatch.setattr(seaway._exact, "ASTAR_CONTRAST", np.inf if potential else 0.0)
+    monkeypatch.setattr(seaway._exact, "BIDIRECTIONAL_LANDMARKS", potential)
     seed = CASES.index((edge_cost, k, directions, grid))
     u, land, geo = make_chart(3000 + seed, grid, zeros=seed % 3 == 0)
     opts = dict(land=land, neighbourhood=k, directions=directions, edge_cost=edge_cost, **geo)

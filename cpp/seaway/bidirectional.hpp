@@ -176,7 +176,8 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
   for (;;) {
     // Search: settle this round's count of pixels.
     settled_now.clear();
-    const std::int64_t quota = std::max<std::int64_t>(4096, stats.settled / 16);
+    static const long q0 = getenv("Q0") ? atol(getenv("Q0")) : 4096, qd = getenv("QD") ? atol(getenv("QD")) : 16;
+    const std::int64_t quota = std::max<std::int64_t>(q0, stats.settled / qd);
     while (std::int64_t(settled_now.size()) < quota && !heap.empty()) {
       const HeapEntry top = heap.pop();
       const double dv = mine.get(top.id);
@@ -277,11 +278,15 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
     const std::int64_t origin = B ? target : start;
     try {
       const double shift = B ? shift_b : shift_f;
-      sides[B] = buckets
-          ? bidirectional_side<B>(pg, model, origin, mine, theirs, BucketQueue(width, span),
-                                  pot, shift, rounds, meet, cancel)
-          : bidirectional_side<B>(pg, model, origin, mine, theirs, RadixHeap{}, pot, shift,
-                                  rounds, meet, cancel);
+      auto run = [&](const auto& p) {
+        return buckets ? bidirectional_side<B>(pg, model, origin, mine, theirs, BucketQueue(width, span),
+                                               p, shift, rounds, meet, cancel)
+                       : bidirectional_side<B>(pg, model, origin, mine, theirs, RadixHeap{}, p, shift,
+                                               rounds, meet, cancel);
+      };
+      // A potential is asked for at every push: each side keeps the values it computed.
+      if constexpr (std::is_same_v<Potential, NoPotential>) sides[B] = run(pot);
+      else sides[B] = run(CachedBound<Potential>(pot, g.size()));
     } catch (...) {
       errors[B] = std::current_exception();
       rounds.abort.store(true);

@@ -19,11 +19,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include <sys/mman.h>
-
-#include <cstring>
-#include <new>
-
+#include "bidirectional.hpp"
 #include "router.hpp"
 
 namespace seaway {
@@ -75,39 +71,6 @@ class LandmarkBound {
   std::vector<float> at_target_;
 };
 
-// A bound computed once per pixel: the search asks for it at every push (about three per
-// pixel on the benchmark chart), and the landmark bound reads `count` table entries each time.
-// Kept in lazily mapped pages (8 bytes per pixel reached; NaN bits: not computed yet), as the
-// double it is, so nothing changes in the search but the time.
-template <class Bound>
-class CachedBound {
- public:
-  CachedBound(const Bound& b, std::int64_t n) : b_(b), n_(std::size_t(n)) {
-    void* p = mmap(nullptr, n_ * 8 + 8, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (p == MAP_FAILED) throw std::bad_alloc();
-    cache_ = static_cast<std::uint64_t*>(p);
-  }
-  ~CachedBound() { munmap(cache_, n_ * 8 + 8); }
-  CachedBound(const CachedBound&) = delete;
-  bool active() const { return b_.active(); }
-  double operator()(std::int64_t v) const {
-    std::uint64_t bits = cache_[v] ^ nan_bits;
-    double h;
-    std::memcpy(&h, &bits, 8);
-    if (h == h) return h;  // computed
-    h = b_(v);
-    std::memcpy(&bits, &h, 8);
-    cache_[v] = bits ^ nan_bits;
-    return h;
-  }
-
- private:
-  static constexpr std::uint64_t nan_bits = 0x7ff8000000000000ull;
-  const Bound& b_;
-  std::size_t n_;
-  std::uint64_t* cache_;
-};
-
 // Distances from `count` landmarks picked farthest-first from `seed`. The model must be
 // symmetric (max, mean, integral).
 template <class Model>
@@ -145,6 +108,28 @@ Landmarks build_landmarks(PreparedGrid& pg, const Model& model, int count, std::
   return lm;
 }
 
+// The landmark search's share of the bound given up (eps) and its float32 rounding allowance
+// (ulp); eps >= 0.5: the tables cannot give an exact bound here.
+struct LandmarkSlack {
+  double eps, ulp, cheapest, rmax;
+  template <class Model>
+  LandmarkSlack(const PreparedGrid& pg, const Landmarks& lm, const Model& model, const StepBounds& b) {
+    const double rmin = b.per_length ? pg.shortest_step() : 1.0;
+    rmax = b.per_length ? pg.longest_step() : 1.0;
+    cheapest = b.min_rate * rmin;
+    ulp = lm.largest * std::ldexp(1.0, -23);  // >= one float32 ulp of any entry
+    // As little as the float32 rounding allows (0.01 settled 35 % fewer pixels than 0.05 on
+    // the benchmark chart; below, the rounding floor decides).
+    eps = cheapest > 0 ? std::max(0.01, 4 * ulp / cheapest) : 1.0;
+    (void)model;
+  }
+};
+
+inline void check_landmarks(const PreparedGrid& pg, const Landmarks& lm) {
+  if (lm.table.size() != std::size_t(pg.grid().size()) * lm.count())
+    throw std::invalid_argument("the landmarks were built for another chart");
+}
+
 // Least-cost route by A* with the landmark bound (exact). When the bound cannot be made exact
 // in float32 (zero-cost pixels, or steps far cheaper than the tables' rounding), it runs
 // Dijkstra instead; stats.min_cost is then reported as is.
@@ -154,20 +139,14 @@ RouteResult route_landmarks(PreparedGrid& pg, const Landmarks& lm, const Model& 
                             const SearchControl* cancel = nullptr) {
   pg.check(start);
   pg.check(target);
-  if (lm.table.size() != std::size_t(pg.grid().size()) * lm.count())
-    throw std::invalid_argument("the landmarks were built for another chart");
+  check_landmarks(pg, lm);
   const StepBounds b = model.bounds(pg.passability());
-  const double rmin = b.per_length ? pg.shortest_step() : 1.0;
-  const double rmax = b.per_length ? pg.longest_step() : 1.0;
-  const double cheapest = b.min_rate * rmin;
-  const double ulp = lm.largest * std::ldexp(1.0, -23);  // >= one float32 ulp of any entry
-  // The share of the bound given up: as little as the float32 rounding allows (0.01 settled
-  // 35 % fewer pixels than 0.05 on the benchmark chart; below, the rounding floor decides).
-  const double eps = cheapest > 0 ? std::max(0.01, 4 * ulp / cheapest) : 1.0;
+  const LandmarkSlack sl(pg, lm, model, b);
+  const double eps = sl.eps;
   if (!(eps < 0.5)) return pg.route(model, start, target, 0.0, cancel);
   // Every step's reduced cost is at least eps x cheapest - ulp >= cheapest x eps / 2.
-  const double width = 0.999999 * 0.5 * eps * cheapest;
-  const double span = 1.000001 * (2 * b.max_rate * rmax + ulp) + 1e-300;
+  const double width = 0.999999 * 0.5 * eps * sl.cheapest;
+  const double span = 1.000001 * (2 * b.max_rate * sl.rmax + sl.ulp) + 1e-300;
   const LandmarkBound exact_bound(lm, start, target, 1 - eps, lm.count());
   const CachedBound<LandmarkBound> bound(exact_bound, pg.grid().size());
   SearchSpec spec{&pg.grid(), &pg.stencil(), pg.land_rule(), 1.0, cancel};
@@ -181,6 +160,26 @@ RouteResult route_landmarks(PreparedGrid& pg, const Landmarks& lm, const Model& 
                               target, *ws, RadixHeap{}, bound);
   stats.state_bytes += pg.clearance_bytes();
   return pg.result(*ws, start, target, stats);
+}
+
+// The same query by bidirectional A* on two threads (bidirectional.hpp) with the average
+// potential of the landmark bounds to the target and from the start (scaled by 1 - eps). Each
+// bound moves by at most a step's cost plus one ulp across a step, so every reduced cost lies
+// between eps x cheapest - ulp >= eps x cheapest / 2 and 2 x the step's cost + ulp.
+template <class Model>
+RouteResult route_landmarks_bidirectional(PreparedGrid& pg, const Landmarks& lm, const Model& model,
+                                          std::int64_t start, std::int64_t target,
+                                          const SearchControl* cancel = nullptr) {
+  pg.check(start);
+  pg.check(target);
+  check_landmarks(pg, lm);
+  const StepBounds b = model.bounds(pg.passability());
+  const LandmarkSlack sl(pg, lm, model, b);
+  if (!(sl.eps < 0.5)) return route_bidirectional(pg, model, start, target, cancel);
+  const AveragePotential<LandmarkBound> pot{LandmarkBound(lm, start, target, 1.0, lm.count()),
+                                            LandmarkBound(lm, target, start, 1.0, lm.count()), 1 - sl.eps};
+  return route_bidirectional(pg, model, start, target, cancel, pot, 0.5 * sl.eps,
+                             b.max_rate + sl.ulp / sl.rmax);
 }
 
 }  // namespace seaway

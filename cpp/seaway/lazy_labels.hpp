@@ -92,4 +92,44 @@ class LazyLabels {
   std::vector<std::uint8_t> written_;  // per 512 pixels: a cost was written there
 };
 
+// A bound (or potential) computed once per pixel: a search asks for it at every push (about
+// three per pixel on the benchmark chart), and a landmark bound reads a table row each time.
+// Kept in lazily mapped pages (8 bytes per pixel reached), as the double it is, so nothing
+// changes in the search but the time. A page no bound was written to is not read (it would map
+// the kernel's zero page, and the first write would then fault a second time).
+template <class Bound>
+class CachedBound {
+ public:
+  CachedBound(const Bound& b, std::int64_t n) : b_(b), n_(std::size_t(n)), written_((n_ >> 9) + 1) {
+    void* p = mmap(nullptr, n_ * 8 + 8, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) throw std::bad_alloc();
+    cache_ = static_cast<std::uint64_t*>(p);
+  }
+  ~CachedBound() { munmap(cache_, n_ * 8 + 8); }
+  CachedBound(const CachedBound&) = delete;
+  bool active() const { return b_.active(); }
+  double operator()(std::int64_t v) const {
+    std::uint8_t& page = written_[std::size_t(v) >> 9];
+    double h;
+    if (page) {
+      const std::uint64_t bits = cache_[v] ^ nan_bits;  // zero bits: NaN, not computed yet
+      std::memcpy(&h, &bits, 8);
+      if (h == h) return h;
+    }
+    h = b_(v);
+    std::uint64_t bits;
+    std::memcpy(&bits, &h, 8);
+    cache_[v] = bits ^ nan_bits;
+    page = 1;
+    return h;
+  }
+
+ private:
+  static constexpr std::uint64_t nan_bits = 0x7ff8000000000000ull;
+  const Bound& b_;
+  std::size_t n_;
+  std::uint64_t* cache_;
+  mutable std::vector<std::uint8_t> written_;  // per 512 pixels: a bound was stored there
+};
+
 }  // namespace seaway

@@ -9,8 +9,9 @@ Methods (all exact except weighted A*):
   whose costs span at most a factor ASTAR_CONTRAST, bidirectional A* (average potential). Static
   raster models only (max, mean, integral, entered pixel): the backward search charges each
   step the forward step's cost, which needs costs that do not depend on the arrival time.
-* "landmarks": A* with the landmark (ALT) bound, after PreparedChart.prepare_landmarks() (or
-  prepare(..., landmarks=N)) for this model; max, mean and integral only: the bound
+* "landmarks": bidirectional A* on two threads with the average potential of the landmark
+  (ALT) bounds (one-thread A* with the landmark bound if BIDIRECTIONAL_LANDMARKS is False),
+  after PreparedChart.prepare_landmarks() (or prepare(..., landmarks=N)) for this model; max, mean and integral only: the bound
   |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
   mean of the two ends x the step's length; the integral over the same segment).
 * "auto" (the default): "astar" if a weight is given; "landmarks" when the chart has landmarks
@@ -35,6 +36,8 @@ METHODS = ("auto", "dijkstra", "astar", "bidirectional", "landmarks")
 #: factor: on the summer chart (costs 1-2) it settles 45 % fewer pixels than without; on the
 #: winter chart (1-30) the bound is too weak to pay for itself (benchmarks/README.md).
 ASTAR_CONTRAST = 2.0
+#: "landmarks" runs on two threads (bidirectional A*); False: A* on one thread (both exact).
+BIDIRECTIONAL_LANDMARKS = True
 
 
 def heuristic_weight(method, weight) -> float:
@@ -90,7 +93,8 @@ def search(prepared, engine, s: int, e: int, method: str, weight: float, model, 
     if method == "bidirectional":
         return router.route_bidirectional(engine, s, e, _low_contrast(prepared), cancel)
     if method == "landmarks":
-        return router.route_landmarks(engine, prepared._landmarks[model.name], s, e, cancel)
+        return router.route_landmarks(engine, prepared._landmarks[model.name], s, e,
+                                      BIDIRECTIONAL_LANDMARKS, cancel)
     return router.route(engine, s, e, weight, cancel)
 
 
