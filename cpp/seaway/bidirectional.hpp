@@ -176,8 +176,7 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
   for (;;) {
     // Search: settle this round's count of pixels.
     settled_now.clear();
-    static const long q0 = getenv("Q0") ? atol(getenv("Q0")) : 4096, qd = getenv("QD") ? atol(getenv("QD")) : 16;
-    const std::int64_t quota = std::max<std::int64_t>(q0, stats.settled / qd);
+    const std::int64_t quota = std::max<std::int64_t>(4096, stats.settled / 16);
     while (std::int64_t(settled_now.size()) < quota && !heap.empty()) {
       const HeapEntry top = heap.pop();
       const double dv = mine.get(top.id);
@@ -222,6 +221,7 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
 
 // No potential: plain bidirectional Dijkstra.
 struct NoPotential {
+  static constexpr bool worth_caching = false;
   bool active() const { return false; }
   double operator()(std::int64_t) const { return 0; }
 };
@@ -231,6 +231,8 @@ struct NoPotential {
 // cost c - p(v) + p(w) is at least eps x c (less the bounds' rounding), forward and backward.
 template <class Bound>
 struct AveragePotential {
+  // Kept per pixel when the bounds read tables (landmarks), recomputed when they are arithmetic.
+  static constexpr bool worth_caching = !std::is_same_v<Bound, DistanceBound>;
   Bound to_target, from_start;
   double scale;
   bool active() const { return true; }
@@ -285,7 +287,7 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
                                                rounds, meet, cancel);
       };
       // A potential is asked for at every push: each side keeps the values it computed.
-      if constexpr (std::is_same_v<Potential, NoPotential>) sides[B] = run(pot);
+      if constexpr (!Potential::worth_caching) sides[B] = run(pot);
       else sides[B] = run(CachedBound<Potential>(pot, g.size()));
     } catch (...) {
       errors[B] = std::current_exception();

@@ -83,9 +83,10 @@ class RadixHeap {
 
 class BucketQueue {
  public:
-  // width: at most the cheapest step; span: at least the costliest step.
+  // width: at most the cheapest step; span: at least the costliest step. The ring has a power
+  // of two of buckets (a mask, not a division, finds a key's bucket).
   BucketQueue(double width, double span)
-      : inv_width_(1.0 / width), ring_(std::size_t(span / width) + 2) {}
+      : inv_width_(1.0 / width), ring_(ring_size(span / width + 2)), mask_(ring_.size() - 1) {}
 
   // How many buckets a queue for these step costs needs.
   static double buckets_needed(double width, double span) { return span / width + 2; }
@@ -103,8 +104,9 @@ class BucketQueue {
   double lower_bound() const { return current_ > 0 ? double(current_ - 1) / inv_width_ : 0.0; }
   template <class F>
   void for_each(F&& f) const {  // every entry, in no order
-    for (const auto& b : ring_)
-      for (const HeapEntry& e : b) f(e);
+    if (size_ == 0) return;
+    for (std::uint64_t k = current_; k <= highest_; ++k)  // no entry lies outside these buckets
+      for (const HeapEntry& e : ring_[k & mask_]) f(e);
   }
 
   void push(const HeapEntry& e) {
@@ -112,18 +114,19 @@ class BucketQueue {
     // above it (a step costs < span); clamp rounding at both ends.
     std::uint64_t k = std::uint64_t(e.key * inv_width_);
     if (!started_) {  // the first key (an A* bound) may lie far from zero: start the ring there
-      current_ = k;
+      current_ = highest_ = k;
       started_ = true;
     }
     if (k < current_) k = current_;
-    if (k >= current_ + ring_.size()) k = current_ + ring_.size() - 1;
-    ring_[k % ring_.size()].push_back(e);
+    if (k > current_ + mask_) k = current_ + mask_;
+    if (k > highest_) highest_ = k;
+    ring_[k & mask_].push_back(e);
     if (++size_ > peak_) peak_ = size_;
   }
 
   HeapEntry pop() {
-    while (ring_[current_ % ring_.size()].empty()) ++current_;
-    std::vector<HeapEntry>& b = ring_[current_ % ring_.size()];
+    while (ring_[current_ & mask_].empty()) ++current_;
+    std::vector<HeapEntry>& b = ring_[current_ & mask_];
     const HeapEntry top = b.back();
     b.pop_back();
     --size_;
@@ -131,9 +134,15 @@ class BucketQueue {
   }
 
  private:
+  static std::size_t ring_size(double needed) {
+    std::size_t n = 2;
+    while (double(n) < needed) n *= 2;
+    return n;
+  }
   double inv_width_;
   std::vector<std::vector<HeapEntry>> ring_;
-  std::uint64_t current_ = 0;
+  std::uint64_t mask_;
+  std::uint64_t current_ = 0, highest_ = 0;  // the lowest and highest bucket that may hold entries
   bool started_ = false;
   std::size_t size_ = 0, peak_ = 0;
 };
