@@ -84,7 +84,9 @@ class RadixHeap {
 class BucketQueue {
  public:
   // width: at most the cheapest step; span: at least the costliest step. The ring has a power
-  // of two of buckets (a mask, not a division, finds a key's bucket).
+  // of two of buckets (a mask, not a division, finds a key's bucket). A bucket holds only the
+  // pixel ids (4 bytes, not a 16-byte entry): the order within a bucket does not matter, so
+  // pop() gives the bucket's floor as the key.
   BucketQueue(double width, double span)
       : inv_width_(1.0 / width), ring_(ring_size(span / width + 2)), mask_(ring_.size() - 1) {}
 
@@ -95,7 +97,7 @@ class BucketQueue {
   std::size_t peak() const { return peak_; }
   std::size_t capacity_bytes() const {
     std::size_t b = ring_.capacity() * sizeof(ring_[0]);
-    for (const auto& v : ring_) b += v.capacity() * sizeof(HeapEntry);
+    for (const auto& v : ring_) b += v.capacity() * sizeof(std::uint32_t);
     return b;
   }
 
@@ -106,10 +108,10 @@ class BucketQueue {
   void for_each(F&& f) const {  // every entry, in no order
     if (size_ == 0) return;
     for (std::uint64_t k = current_; k <= highest_; ++k)  // no entry lies outside these buckets
-      for (const HeapEntry& e : ring_[k & mask_]) f(e);
+      for (std::uint32_t id : ring_[k & mask_]) f(HeapEntry{double(k) / inv_width_, id});
   }
 
-  void push(const HeapEntry& e) {
+  __attribute__((always_inline)) void push(const HeapEntry& e) {
     // Keys are never below the current bucket (a step costs >= 0), and never a ring or more
     // above it (a step costs < span); clamp rounding at both ends.
     std::uint64_t k = std::uint64_t(e.key * inv_width_);
@@ -120,17 +122,17 @@ class BucketQueue {
     if (k < current_) k = current_;
     if (k > current_ + mask_) k = current_ + mask_;
     if (k > highest_) highest_ = k;
-    ring_[k & mask_].push_back(e);
+    ring_[k & mask_].push_back(e.id);
     if (++size_ > peak_) peak_ = size_;
   }
 
   HeapEntry pop() {
     while (ring_[current_ & mask_].empty()) ++current_;
-    std::vector<HeapEntry>& b = ring_[current_ & mask_];
-    const HeapEntry top = b.back();
+    std::vector<std::uint32_t>& b = ring_[current_ & mask_];
+    const std::uint32_t id = b.back();
     b.pop_back();
     --size_;
-    return top;
+    return {double(current_) / inv_width_, id};
   }
 
  private:
@@ -140,7 +142,7 @@ class BucketQueue {
     return n;
   }
   double inv_width_;
-  std::vector<std::vector<HeapEntry>> ring_;
+  std::vector<std::vector<std::uint32_t>> ring_;
   std::uint64_t mask_;
   std::uint64_t current_ = 0, highest_ = 0;  // the lowest and highest bucket that may hold entries
   bool started_ = false;
