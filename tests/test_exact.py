@@ -67,15 +67,19 @@ def test_auto_picks_landmarks_then_bidirectional():
     ref = RefGraph(u, land=land, k=5, edge_cost="mean", **geo)
     ok = np.argwhere(np.isfinite(ref.costs(tuple(np.argwhere(ref.ok)[0]))))
     s, e = (tuple(int(v) for v in ok[0]), tuple(int(v) for v in ok[-1]))
-    assert chart.route(s, e).method == "bidirectional"
+    assert chart.route(s, e).method == "dijkstra"  # a small chart: one thread
+    reps = int(np.ceil(np.sqrt(seaway._exact.SMALL_CHART / u.size)))
+    big = seaway.prepare(np.tile(u, (reps, reps)), land=np.tile(land, (reps, reps)), edge_cost="mean")
+    assert big.chart.values.size >= seaway._exact.SMALL_CHART
+    assert big.route(s, e).method == "bidirectional"
     chart.prepare_landmarks(3)
     assert chart.route(s, e).method == "landmarks"
-    assert chart.route(s, e, model="max").method == "bidirectional"  # landmarks are per model
+    assert chart.route(s, e, model="max").method == "dijkstra"  # landmarks are per model
     st = chart.landmark_stats["mean"]
     assert st["count"] == 3 and st["bytes_per_pixel"] == 12.0 and len(st["pixels"]) == 3
     light = seaway.prepare(1.0 + u / (10 * np.nanmax(u[np.isfinite(u)])), **opts)  # within 1.1x
-    a = light.route(s, e)
-    assert a.method == "astar"  # low contrast: the A* bound is tight
+    a = light.route(s, e)  # a small chart, low contrast: one-thread A*, whose bound prunes
+    assert a.method == "astar"
     assert a.stats["settled"] < light.route(s, e, method="dijkstra").stats["settled"]
 
 

@@ -11,15 +11,15 @@ Methods (all exact except weighted A*):
   step the forward step's cost, which needs costs that do not depend on the arrival time.
 * "landmarks": bidirectional A* on two threads with the average potential of the landmark
   (ALT) bounds (one-thread A* with the landmark bound if BIDIRECTIONAL_LANDMARKS is False),
-  after PreparedChart.prepare_landmarks() (or prepare(..., landmarks=N)) for this model; max, mean and integral only: the bound
-  |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
+  after PreparedChart.prepare_landmarks() (or prepare(..., landmarks=N)) for this model; max,
+  mean and integral only: the bound |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
   mean of the two ends x the step's length; the integral over the same segment).
 * "auto" (the default): "astar" if a weight is given; "landmarks" when the chart has landmarks
-  for the query's model; else "astar" on a low-contrast chart (passable costs within a factor
-  ASTAR_CONTRAST, e.g. summer ice: the bound is tight, and A* on one thread settles about as
-  few pixels as bidirectional A* on two, with less work per pixel); else "bidirectional" for a
-  static raster model; else "astar" (time-dependent models). On the benchmark charts this is
-  never slower than Dijkstra (benchmarks/README.md)."""
+  for the query's model; else "bidirectional" for a static raster model (with the A* potential
+  on a low-contrast chart: on the summer benchmark chart it takes 0.7 x one-thread A*'s time),
+  but on charts under SMALL_CHART pixels "astar" on a low-contrast chart and "dijkstra" on
+  others; else "astar" (time-dependent models). On the benchmark charts this is never slower than
+  Dijkstra (benchmarks/README.md)."""
 
 from __future__ import annotations
 
@@ -31,6 +31,9 @@ from ._validate import number
 from .models import EDGE_COSTS, EdgeCost
 
 METHODS = ("auto", "dijkstra", "astar", "bidirectional", "landmarks")
+#: Below this many pixels "auto" searches on one thread (A* on a low-contrast chart, else
+#: Dijkstra): the whole search takes about as long as starting the second thread.
+SMALL_CHART = 65536
 #: "bidirectional" adds the A* potential (the average of the distance bounds to the end and from
 #: the start, x the chart's smallest cost) when the chart's passable costs span at most this
 #: factor: on the summer chart (costs 1-2) it settles 45 % fewer pixels than without; on the
@@ -66,9 +69,11 @@ def resolve(prepared, model, method: str, weight=None) -> str:
     if method == "auto":
         if model.name in prepared._landmarks and _static(model):
             return "landmarks"
-        if _static(model) and not (model.name in EDGE_COSTS and _low_contrast(prepared)):
-            return "bidirectional"
-        return "astar"
+        if not _static(model):
+            return "astar"
+        if prepared.chart.values.size < SMALL_CHART:  # a thread costs more than the search
+            return "astar" if model.name in EDGE_COSTS and _low_contrast(prepared) else "dijkstra"
+        return "bidirectional"
     if method == "bidirectional" and not _static(model):
         raise ValueError(
             f"method='bidirectional' needs a static raster model (edge_cost in {tuple(EDGE_COSTS)}); "
