@@ -30,6 +30,9 @@ Passability compute_clearance(const Grid& g, const T* cost, const std::uint8_t* 
   const std::int64_t R = g.rows, C = g.cols;
   // Pass 1: distance along the row to the nearest impassable pixel of that row.
   auto rows_pass1 = [&](std::int64_t r_begin, std::int64_t r_end, Passability& out) {
+    double lo = out.min_cost, hi = out.max_cost;  // locals: kept in registers (a byte store
+    std::int64_t passable = 0;                    // could alias what the lambda captured)
+    const std::int64_t C = g.cols;
     for (std::int64_t r = r_begin; r < r_end; ++r) {
       const T* u = cost + r * C;
       const std::uint8_t* l = land ? land + r * C : nullptr;
@@ -49,9 +52,9 @@ Passability compute_clearance(const Grid& g, const T* cost, const std::uint8_t* 
           last = c;
         } else {
           const double x = double(u[c]);
-          if (x < out.min_cost) out.min_cost = x;
-          if (x > out.max_cost) out.max_cost = x;
-          ++out.passable;
+          lo = std::min(lo, x);
+          hi = std::max(hi, x);
+          ++passable;
         }
         h[c] = std::uint8_t(std::min<std::int64_t>(c - last, cap));
       }
@@ -64,18 +67,24 @@ Passability compute_clearance(const Grid& g, const T* cost, const std::uint8_t* 
         h[c] = std::uint8_t(std::min<std::int64_t>(h[c], last - c));
       }
     }
+    out.min_cost = lo;
+    out.max_cost = hi;
+    out.passable += passable;
   };
   // Pass 2: Chebyshev distance = min over nearby rows of max(row gap, distance in that row).
+  // (restrict: the rows do not overlap, so the compiler may vectorise the byte loop)
   auto rows_pass2 = [&](std::int64_t r_begin, std::int64_t r_end) {
     for (std::int64_t r = r_begin; r < r_end; ++r) {
-      std::uint8_t* out_row = clearance + r * C;
+      std::uint8_t* __restrict out_row = clearance + r * C;
       std::copy(scratch + r * C, scratch + (r + 1) * C, out_row);
       for (int d = 1; d < cap; ++d)
         for (std::int64_t rr : {r - d, r + d}) {
           if (rr < 0 || rr >= R) continue;
-          const std::uint8_t* h = scratch + rr * C;
-          for (std::int64_t c = 0; c < C; ++c)
-            out_row[c] = std::min<std::uint8_t>(out_row[c], std::max<std::uint8_t>(std::uint8_t(d), h[c]));
+          const std::uint8_t* __restrict h = scratch + rr * C;
+          const std::uint8_t gap = std::uint8_t(d);
+          const std::int64_t n = C;  // a local: a byte store could alias the captured C
+          for (std::int64_t c = 0; c < n; ++c)
+            out_row[c] = std::min(out_row[c], std::max(gap, h[c]));
         }
     }
   };

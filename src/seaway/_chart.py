@@ -30,6 +30,7 @@ class Chart:
     y: np.ndarray | None = None  # pixel-centre y / x (planar grids)
     x: np.ndarray | None = None
     template: object = None  # the DataArray the cost came in, for DataArray results
+    lowest: float = float("nan")  # the smallest cost, NaN ignored (NaN: not known or all NaN)
 
     @property
     def geographic(self) -> bool:
@@ -160,7 +161,8 @@ def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negat
     # C order and aligned (an array unpickled from a buffer, e.g. on a Dask worker, may sit at
     # an odd address: the engine reads doubles in place, which needs alignment).
     values = np.require(values, requirements=["C_CONTIGUOUS", "ALIGNED"])
-    if not allow_negative:
+    lowest = float(np.fmin.reduce(values, axis=None))  # one pass, no temporary array
+    if not allow_negative and lowest < 0:
         negative = values < 0
         if negative.any():
             r, c = np.argwhere(negative)[0]
@@ -182,7 +184,7 @@ def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negat
 
     grid = _core.Grid()
     grid.rows, grid.cols = rows, cols
-    chart = Chart(values=values, land=mask, grid=grid, template=template)
+    chart = Chart(values=values, land=mask, grid=grid, template=template, lowest=lowest)
     if "lat" in coords:
         la, lo = coords["lat"], coords["lon"]
         if la.shape != (rows,) or lo.shape != (cols,):
