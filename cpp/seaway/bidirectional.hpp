@@ -281,6 +281,11 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
     try {
       const double shift = B ? shift_b : shift_f;
       auto run = [&](const auto& p) {
+        // Landmark potentials need buckets a small share of a step wide: many, sparsely filled.
+        if constexpr (Potential::worth_caching)
+          if (buckets && BucketQueue::buckets_needed(width, span) > 4096)
+            return bidirectional_side<B>(pg, model, origin, mine, theirs, ChunkedBucketQueue(width, span),
+                                         p, shift, rounds, meet, cancel);
         return buckets ? bidirectional_side<B>(pg, model, origin, mine, theirs, BucketQueue(width, span),
                                                p, shift, rounds, meet, cancel)
                        : bidirectional_side<B>(pg, model, origin, mine, theirs, RadixHeap{}, p, shift,

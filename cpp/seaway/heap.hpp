@@ -6,6 +6,7 @@
 //  - BucketQueue: for Dijkstra when every step costs at least `width` > 0: pixels whose keys
 //    share a bucket [k*width, (k+1)*width) cannot improve each other, so a bucket may be
 //    emptied in any order and the labels stay exact (Dial's algorithm on real keys).
+//  - ChunkedBucketQueue: the same, with buckets in pooled chunks (for rings of many buckets).
 //  - QuaternaryHeap: a 4-ary heap for keys that are not monotone (weighted A*).
 #pragma once
 
@@ -143,6 +144,109 @@ class BucketQueue {
   }
   double inv_width_;
   std::vector<std::vector<std::uint32_t>> ring_;
+  std::uint64_t mask_;
+  std::uint64_t current_ = 0, highest_ = 0;  // the lowest and highest bucket that may hold entries
+  bool started_ = false;
+  std::size_t size_ = 0, peak_ = 0;
+};
+
+class ChunkedBucketQueue {
+ public:
+  // As BucketQueue, but each bucket is a stack of 64-byte chunks of 15 ids taken from one pool
+  // and given back when emptied: no allocation per bucket, and the chunks in use stay few and
+  // warm in cache. For rings of many sparsely filled buckets (landmark A*, whose bucket width
+  // is a small share of the cheapest step): 7 % faster there; on Dijkstra's few full buckets
+  // the vectors of BucketQueue are 10 % faster.
+  ChunkedBucketQueue(double width, double span)
+      : inv_width_(1.0 / width), head_(ring_size(span / width + 2), none), fill_(head_.size(), 0),
+        mask_(head_.size() - 1) {}
+
+  // How many buckets a queue for these step costs needs.
+  static double buckets_needed(double width, double span) { return span / width + 2; }
+
+  bool empty() const { return size_ == 0; }
+  std::size_t peak() const { return peak_; }
+  std::size_t capacity_bytes() const {
+    return chunks_.capacity() * sizeof(Chunk) + head_.capacity() * sizeof(std::uint32_t) + fill_.capacity();
+  }
+
+  // No key left in the queue is below this: the current bucket's floor, less one bucket for
+  // the rounding of key * (1 / width) (bidirectional search's stopping rule).
+  double lower_bound() const { return current_ > 0 ? double(current_ - 1) / inv_width_ : 0.0; }
+  template <class F>
+  void for_each(F&& f) const {  // every entry, in no order
+    if (size_ == 0) return;
+    for (std::uint64_t k = current_; k <= highest_; ++k) {  // no entry lies outside these buckets
+      const double key = double(k) / inv_width_;
+      std::size_t n = fill_[k & mask_];
+      for (std::uint32_t c = head_[k & mask_]; c != none; c = chunks_[c].next, n = per_chunk)
+        for (std::size_t i = 0; i < n; ++i) f(HeapEntry{key, chunks_[c].ids[i]});
+    }
+  }
+
+  __attribute__((always_inline)) void push(const HeapEntry& e) {
+    // Keys are never below the current bucket (a step costs >= 0), and never a ring or more
+    // above it (a step costs < span); clamp rounding at both ends.
+    std::uint64_t k = std::uint64_t(e.key * inv_width_);
+    if (!started_) {  // the first key (an A* bound) may lie far from zero: start the ring there
+      current_ = highest_ = k;
+      started_ = true;
+    }
+    if (k < current_) k = current_;
+    if (k > current_ + mask_) k = current_ + mask_;
+    if (k > highest_) highest_ = k;
+    const std::size_t b = k & mask_;
+    if (head_[b] == none || fill_[b] == per_chunk) {  // a new chunk on top of the bucket's stack
+      const std::uint32_t c = take_chunk();
+      chunks_[c].next = head_[b];
+      head_[b] = c;
+      fill_[b] = 0;
+    }
+    chunks_[head_[b]].ids[fill_[b]++] = e.id;
+    if (++size_ > peak_) peak_ = size_;
+  }
+
+  HeapEntry pop() {
+    while (head_[current_ & mask_] == none) ++current_;
+    const std::size_t b = current_ & mask_;
+    const std::uint32_t c = head_[b];
+    const std::uint32_t id = chunks_[c].ids[--fill_[b]];
+    if (fill_[b] == 0) {  // the chunk is empty: back to the pool; the one below it is full
+      head_[b] = chunks_[c].next;
+      fill_[b] = head_[b] == none ? 0 : per_chunk;
+      chunks_[c].next = free_;
+      free_ = c;
+    }
+    --size_;
+    return {double(current_) / inv_width_, id};
+  }
+
+ private:
+  static constexpr std::uint32_t none = 0xffffffffu;
+  static constexpr std::uint8_t per_chunk = 15;
+  struct Chunk {
+    std::uint32_t next;  // the chunk below in the bucket's stack (full), or in the free list
+    std::uint32_t ids[per_chunk];
+  };
+  std::uint32_t take_chunk() {
+    if (free_ != none) {
+      const std::uint32_t c = free_;
+      free_ = chunks_[c].next;
+      return c;
+    }
+    chunks_.emplace_back();
+    return std::uint32_t(chunks_.size() - 1);
+  }
+  static std::size_t ring_size(double needed) {
+    std::size_t n = 2;
+    while (double(n) < needed) n *= 2;
+    return n;
+  }
+  double inv_width_;
+  std::vector<std::uint32_t> head_;  // per bucket: its top chunk, or none
+  std::vector<std::uint8_t> fill_;   // per bucket: ids in its top chunk
+  std::vector<Chunk> chunks_;
+  std::uint32_t free_ = none;
   std::uint64_t mask_;
   std::uint64_t current_ = 0, highest_ = 0;  // the lowest and highest bucket that may hold entries
   bool started_ = false;

@@ -152,9 +152,9 @@ RouteResult route_landmarks(PreparedGrid& pg, const Landmarks& lm, const Model& 
   SearchSpec spec{&pg.grid(), &pg.stencil(), pg.land_rule(), 1.0, cancel};
   PreparedGrid::Lease ws(pg);
   SearchStats stats;
-  if (span < inf && BucketQueue::buckets_needed(width, span) < 65536)
+  if (span < inf && BucketQueue::buckets_needed(width, span) < 65536)  // many sparse buckets
     stats = search_with_bound(spec, model, pg.lengths(), pg.clearance(), b.min_rate, start,
-                              target, *ws, BucketQueue(width, span), bound);
+                              target, *ws, ChunkedBucketQueue(width, span), bound);
   else
     stats = search_with_bound(spec, model, pg.lengths(), pg.clearance(), b.min_rate, start,
                               target, *ws, RadixHeap{}, bound);
