@@ -184,3 +184,31 @@ def test_cancel_token_stops_bidirectional_and_landmark_building():
         chart._router.build_landmarks(engine, 2, 0, token)
     full = chart.cost_field((0, 0))
     assert chart.route((0, 0), (399, 399), method="bidirectional").cost == pytest.approx(full[399, 399], rel=RTOL)
+
+
+def test_bidirectional_is_the_same_bit_for_bit_on_one_core_and_on_two():
+    """The rounds are counts of settled pixels and the stop is decided at barriers, so the
+    threads' timing cannot change the answer: pinned to one core (the two sides then take turns)
+    and free on two, the route and its cost are identical, over many rounds (4096 pixels each)."""
+    import os
+
+    rng = np.random.default_rng(9)
+    u = rng.uniform(1.0, 30.0, (300, 400))
+    u[rng.random(u.shape) < 0.2] = np.inf
+    u[5, 5] = u[290, 390] = 2.0
+    chart = seaway.prepare(u, edge_cost="mean")
+    free = chart.route((5, 5), (290, 390), method="bidirectional")
+    assert free.stats["settled"] > 10 * 4096  # many rounds
+    runs = [chart.route((5, 5), (290, 390), method="bidirectional") for _ in range(3)]
+    if hasattr(os, "sched_setaffinity") and len(os.sched_getaffinity(0)) > 1:
+        cores = os.sched_getaffinity(0)
+        os.sched_setaffinity(0, {min(cores)})  # new threads inherit the calling thread's mask
+        try:
+            runs.append(chart.route((5, 5), (290, 390), method="bidirectional"))
+        finally:
+            os.sched_setaffinity(0, cores)
+    for r in runs:
+        assert r.cost == free.cost  # exactly: same meeting pixel, same sums
+        np.testing.assert_array_equal(r.pixels, free.pixels)
+        assert r.stats["settled"] == free.stats["settled"]
+    assert free.cost == pytest.approx(chart.route((5, 5), (290, 390), method="dijkstra").cost, rel=RTOL)
