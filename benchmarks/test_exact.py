@@ -2,9 +2,8 @@
 
 * One route on a fresh chart (seaway.route: validation, preparation and search; nothing kept
   between rounds), default method="auto" (bidirectional Dijkstra on two threads on the winter
-  chart, A* on the summer chart), and "bidirectional" (bidirectional A* on the summer chart),
-  against plain
-  Dijkstra and skimage's MCP_Geometric, on the winter chart (costs 1-30) and the summer chart
+  chart, bidirectional A* on the summer chart), the same by method="bidirectional", against
+  plain Dijkstra and skimage's MCP_Geometric, on the winter chart (costs 1-30) and the summer chart
   (costs 1-2). Goal: <= 0.15 x skimage; auto never slower than Dijkstra.
 * Many routes on a prepared chart with 8 landmarks: 8 fixed voyages (the corner-to-corner one
   and 7 random pairs, seed 6), each against skimage on the same voyage. Goal: <= 0.05 x skimage;
