@@ -212,3 +212,31 @@ def test_bidirectional_is_the_same_bit_for_bit_on_one_core_and_on_two():
         np.testing.assert_array_equal(r.pixels, free.pixels)
         assert r.stats["settled"] == free.stats["settled"]
     assert free.cost == pytest.approx(chart.route((5, 5), (290, 390), method="dijkstra").cost, rel=RTOL)
+
+
+def test_labels_kept_between_queries_give_the_same_routes():
+    """The chart keeps a query's bidirectional labels for the next one (zeroed by each side
+    before it starts): queries in any order, after a long one or a cancelled one, give the
+    routes a fresh chart gives, bit for bit."""
+    rng = np.random.default_rng(12)
+    u = rng.uniform(1.0, 20.0, (250, 300))
+    u[rng.random(u.shape) < 0.2] = np.inf
+    water = [tuple(int(v) for v in p) for p in np.argwhere(np.isfinite(u))]
+    pairs = [(water[i], water[j]) for i, j in rng.integers(len(water), size=(6, 2))]
+    kept = seaway.prepare(u, edge_cost="max")
+    token = _core.CancelToken()
+    token.set()  # stops after 4096 pixels, leaving its labels half written
+    with pytest.raises(KeyboardInterrupt, match="search cancelled"):
+        kept._router.route_bidirectional(kept.model.engine(kept), 0, u.size - 1, False, token)
+    for s, e in pairs + pairs[::-1]:
+        fresh = seaway.prepare(u, edge_cost="max")
+        try:
+            want = fresh.route(s, e, method="bidirectional")
+        except seaway.NoRouteError:
+            with pytest.raises(seaway.NoRouteError):
+                kept.route(s, e, method="bidirectional")
+            continue
+        got = kept.route(s, e, method="bidirectional")
+        assert got.cost == want.cost
+        np.testing.assert_array_equal(got.pixels, want.pixels)
+        assert got.cost == pytest.approx(fresh.route(s, e, method="dijkstra").cost, rel=RTOL)

@@ -21,7 +21,8 @@
 // Memory: each side's labels live in anonymous zero-filled pages that the kernel maps only when
 // first written (lazy_labels.hpp); the two sides together touch about the pixels one Dijkstra
 // reaches, so the search needs about one workspace's 9 B per reached pixel plus the frontier;
-// stats.state_bytes counts the resident pages.
+// stats.state_bytes counts the resident pages. The chart keeps the labels of the last query
+// for the next one (PreparedGrid::LabelLease), which then writes them without page faults.
 #pragma once
 
 #include <algorithm>
@@ -262,9 +263,8 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
   const bool buckets = width > 0 && span < inf && BucketQueue::buckets_needed(width, span) < 65536;
   const double shift_f = pot.active() ? pot(start) : 0.0, shift_b = pot.active() ? pot(target) : 0.0;
 
-  LazyLabels fw(g.size()), bw(g.size());
-  fw.set(start, 0.0);
-  bw.set(target, 0.0);
+  PreparedGrid::LabelLease fw_lease(pg), bw_lease(pg);  // pooled: no page faults when reused
+  LazyLabels &fw = *fw_lease, &bw = *bw_lease;
   detail::Rounds rounds;
   if (pot.active()) {
     rounds.mu_offset = shift_b - shift_f;
@@ -279,6 +279,10 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
     const LazyLabels& theirs = B ? fw : bw;
     const std::int64_t origin = B ? target : start;
     try {
+      // A pooled side's pages from the last query are zeroed here, each side on its own thread;
+      // the other side reads these labels only after the first round's barrier.
+      mine.clear();
+      mine.set(origin, 0.0);
       const double shift = B ? shift_b : shift_f;
       auto run = [&](const auto& p) {
         // Landmark potentials need buckets a small share of a step wide: many, sparsely filled.

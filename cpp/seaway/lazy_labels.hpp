@@ -35,13 +35,13 @@ class LazyLabels {
     // An unwritten page is not read: reading it would map the kernel's zero page, and the
     // owner's first write would then replace that mapping, a fault that flushes the TLB of
     // every core running the process (an interrupt to the other side's thread).
-    if (!__atomic_load_n(&written_[std::size_t(v) >> 9], __ATOMIC_RELAXED)) return inf;
+    if (__atomic_load_n(&written_[std::size_t(v) >> 9], __ATOMIC_RELAXED) != this_search) return inf;
     const std::uint64_t b = __atomic_load_n(static_cast<const std::uint64_t*>(cost_) + v, __ATOMIC_RELAXED);
     return decode(b);
   }
   void set(std::int64_t v, double d) {  // by one thread only: the owner of these labels
     __atomic_store_n(static_cast<std::uint64_t*>(cost_) + v, encode(d), __ATOMIC_RELAXED);
-    __atomic_store_n(&written_[std::size_t(v) >> 9], std::uint8_t(1), __ATOMIC_RELAXED);  // v's 4 KiB page
+    __atomic_store_n(&written_[std::size_t(v) >> 9], this_search, __ATOMIC_RELAXED);  // v's 4 KiB page
   }
   void set(std::int64_t v, double d, int pred) {
     set(v, d);
@@ -49,16 +49,34 @@ class LazyLabels {
   }
   int pred(std::int64_t v) const { return int(static_cast<const std::uint8_t*>(pred_)[v]) - 1; }
 
-  // Bytes of the pages written (4 KiB: 512 costs, 4096 predecessors); reading an unwritten
-  // page maps the kernel's shared zero page, which costs no memory. Tested against the peak
-  // resident memory of a fresh process (benchmarks/test_exact.py).
+  // Back to "nothing reached" for the next search on the same chart, keeping the pages (a pool
+  // of PreparedGrid): the cost pages this search wrote are zeroed, so the next search writes
+  // them without page faults. Predecessors are not: a search reads only those it wrote.
+  void clear() {
+    for (std::size_t p = 0; p < written_.size(); ++p)
+      if (written_[p] == this_search) {
+        const std::size_t first = p << 9, count = std::min<std::size_t>(512, n_ - first);
+        std::memset(static_cast<std::uint64_t*>(cost_) + first, 0, count * 8);
+        written_[p] = zeroed_earlier;
+      }
+  }
+  // Give every page back to the kernel (zero pages again on the next write).
+  void release() {
+    madvise(cost_, n_ * 8 ? n_ * 8 : 1, MADV_DONTNEED);
+    madvise(pred_, n_ ? n_ : 1, MADV_DONTNEED);
+    std::fill(written_.begin(), written_.end(), std::uint8_t(0));
+  }
+
+  // Bytes of the pages written, by this search or earlier ones on these labels (4 KiB: 512
+  // costs, 4096 predecessors). Tested against the peak resident memory of a fresh process
+  // (benchmarks/test_exact.py).
   std::size_t resident_bytes() const {
     std::size_t cost_pages = 0, pred_pages = 0;
     for (std::size_t p = 0; p < written_.size(); ++p) {
-      cost_pages += written_[p];
+      cost_pages += written_[p] != 0;
       if (p % 8 == 0) {
         bool any = false;
-        for (std::size_t q = p; q < std::min(p + 8, written_.size()); ++q) any = any || written_[q];
+        for (std::size_t q = p; q < std::min(p + 8, written_.size()); ++q) any = any || written_[q] != 0;
         pred_pages += any;
       }
     }
@@ -67,6 +85,9 @@ class LazyLabels {
 
  private:
   static constexpr std::uint64_t inf_bits = 0x7ff0000000000000ull;
+  // A page's state in written_: never written (0), written by this search, or written by an
+  // earlier one and zeroed since (resident, reads as "not reached").
+  static constexpr std::uint8_t this_search = 1, zeroed_earlier = 2;
   static std::uint64_t encode(double d) {
     std::uint64_t b;
     std::memcpy(&b, &d, 8);
@@ -89,7 +110,7 @@ class LazyLabels {
   std::size_t n_;
   void* cost_;
   void* pred_;
-  std::vector<std::uint8_t> written_;  // per 512 pixels: a cost was written there
+  std::vector<std::uint8_t> written_;  // per 512 pixels (one 4 KiB cost page): its state
 };
 
 // A bound (or potential) computed once per pixel: a search asks for it at every push (about

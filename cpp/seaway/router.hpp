@@ -14,6 +14,7 @@
 
 #include "cost_models.hpp"
 #include "heap.hpp"
+#include "lazy_labels.hpp"
 #include "passability.hpp"
 #include "search.hpp"
 
@@ -106,6 +107,33 @@ class PreparedGrid {
     if (p < 0 || p >= g_.size()) throw std::out_of_range("pixel index outside the grid");
   }
 
+  // Labels for one side of a bidirectional search, borrowed for one query. They come back as
+  // the search left them (the side clears them on its own thread before it starts) and are kept
+  // for the next query, two at most, while they hold at most 6 bytes per pixel of the chart;
+  // beyond that their pages go back to the kernel (the next search faults them in again).
+  class LabelLease {
+   public:
+    explicit LabelLease(PreparedGrid& p) : p_(p) {
+      std::lock_guard<std::mutex> lock(p_.pool_mutex_);
+      if (p_.label_pool_.empty()) {
+        labels_ = std::make_unique<LazyLabels>(p_.g_.size());
+      } else {
+        labels_ = std::move(p_.label_pool_.back());
+        p_.label_pool_.pop_back();
+      }
+    }
+    ~LabelLease() {
+      if (labels_->resident_bytes() > 6 * std::size_t(p_.g_.size())) labels_->release();
+      std::lock_guard<std::mutex> lock(p_.pool_mutex_);
+      if (p_.label_pool_.size() < 2) p_.label_pool_.push_back(std::move(labels_));
+    }
+    LazyLabels& operator*() { return *labels_; }
+
+   private:
+    PreparedGrid& p_;
+    std::unique_ptr<LazyLabels> labels_;
+  };
+
   // A workspace borrowed from the pool for one query, returned when the query ends.
   class Lease {
    public:
@@ -177,6 +205,7 @@ class PreparedGrid {
   int half_ = 0;
   mutable std::mutex pool_mutex_;
   std::vector<std::unique_ptr<Workspace>> pool_;
+  std::vector<std::unique_ptr<LazyLabels>> label_pool_;
   std::size_t workspaces_made_ = 0;
 };
 
