@@ -6,9 +6,10 @@
 // on the arrival time; the caller checks).
 //
 // Rounds: in each round each side settles the same count of pixels (so the two threads get
-// equal work whatever the scheduler does), then the two meet at a barrier. There, labels are still: each side scans the pixels it relabelled in
-// the round (those it settled, and its queue) against the other's labels, and
-// mu = min over pixels labelled by both of d_f + d_b (a real route's cost) is updated.
+// equal work whatever the scheduler does), then the two meet at a barrier. There, labels are
+// still: each side scans the pixels it relabelled in the round (those it settled, and its
+// queue) against the other's labels, and mu = min over pixels labelled by both of d_f + d_b
+// (a real route's cost) is updated.
 // Stop when top_f + top_b >= mu (top: no key left in a queue is lower) or a queue is empty:
 // then mu is optimal. On an optimal route of cost L < top_f + top_b there is a step (x, y)
 // with x settled forward and y settled backward; relaxing x labelled y forward, so y is

@@ -112,8 +112,7 @@ Landmarks build_landmarks(PreparedGrid& pg, const Model& model, int count, std::
 // (ulp); eps >= 0.5: the tables cannot give an exact bound here.
 struct LandmarkSlack {
   double eps, ulp, cheapest, rmax;
-  template <class Model>
-  LandmarkSlack(const PreparedGrid& pg, const Landmarks& lm, const Model& model, const StepBounds& b) {
+  LandmarkSlack(const PreparedGrid& pg, const Landmarks& lm, const StepBounds& b) {
     const double rmin = b.per_length ? pg.shortest_step() : 1.0;
     rmax = b.per_length ? pg.longest_step() : 1.0;
     cheapest = b.min_rate * rmin;
@@ -121,7 +120,6 @@ struct LandmarkSlack {
     // As little as the float32 rounding allows (0.01 settled 35 % fewer pixels than 0.05 on
     // the benchmark chart; below, the rounding floor decides).
     eps = cheapest > 0 ? std::max(0.01, 4 * ulp / cheapest) : 1.0;
-    (void)model;
   }
 };
 
@@ -141,7 +139,7 @@ RouteResult route_landmarks(PreparedGrid& pg, const Landmarks& lm, const Model& 
   pg.check(target);
   check_landmarks(pg, lm);
   const StepBounds b = model.bounds(pg.passability());
-  const LandmarkSlack sl(pg, lm, model, b);
+  const LandmarkSlack sl(pg, lm, b);
   const double eps = sl.eps;
   if (!(eps < 0.5)) return pg.route(model, start, target, 0.0, cancel);
   // Every step's reduced cost is at least eps x cheapest - ulp >= cheapest x eps / 2.
@@ -174,7 +172,7 @@ RouteResult route_landmarks_bidirectional(PreparedGrid& pg, const Landmarks& lm,
   pg.check(target);
   check_landmarks(pg, lm);
   const StepBounds b = model.bounds(pg.passability());
-  const LandmarkSlack sl(pg, lm, model, b);
+  const LandmarkSlack sl(pg, lm, b);
   if (!(sl.eps < 0.5)) return route_bidirectional(pg, model, start, target, cancel);
   const AveragePotential<LandmarkBound> pot{LandmarkBound(lm, start, target, 1.0, lm.count()),
                                             LandmarkBound(lm, target, start, 1.0, lm.count()), 1 - sl.eps};
