@@ -111,6 +111,7 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
   // last round overshoots the stop by at most 1/16. The count depends on nothing but this
   // side's own search, so the rounds are the same on every run.
   double mu = inf;
+  std::int64_t mu_pixel = -1;  // the best meeting so far: cost mu, this pixel
   int passed = 0;
 
   auto settle = [&](std::int64_t v, double dv) {
@@ -206,12 +207,14 @@ SearchStats bidirectional_side(const PreparedGrid& pg, const Model& model, std::
     if (!rounds.barrier(self, passed)) break;
     // Decide, on the same values on both sides.
     for (int s = 0; s < 2; ++s)
-      if (rounds.mu_part[k][s] < mu || (rounds.mu_part[k][s] == mu && rounds.meet_part[k][s] < meet.pixel)) {
+      if (rounds.mu_part[k][s] < mu || (rounds.mu_part[k][s] == mu && rounds.meet_part[k][s] < mu_pixel)) {
         mu = rounds.mu_part[k][s];
-        if (Backward) continue;  // the forward side keeps the answer
-        meet.pixel = rounds.meet_part[k][s];
-        meet.cost = mu;
+        mu_pixel = rounds.meet_part[k][s];
       }
+    if (!Backward) {  // the forward side keeps the answer (the same on both sides)
+      meet.pixel = mu_pixel;
+      meet.cost = mu;
+    }
     if (rounds.empty[k][0] || rounds.empty[k][1] ||
         rounds.top[k][0] + rounds.top[k][1] >= mu + rounds.mu_offset + rounds.mu_slack * mu)
       break;
@@ -297,8 +300,13 @@ RouteResult route_bidirectional(PreparedGrid& pg, const Model& model, std::int64
                                                rounds, meet, cancel);
       };
       // A potential is asked for at every push: each side keeps the values it computed.
-      if constexpr (!Potential::worth_caching) sides[B] = run(pot);
-      else sides[B] = run(CachedBound<Potential>(pot, g.size()));
+      if constexpr (!Potential::worth_caching) {
+        sides[B] = run(pot);
+      } else {
+        const CachedBound<Potential> cached(pot, g.size());
+        sides[B] = run(cached);
+        sides[B].state_bytes += cached.resident_bytes();
+      }
     } catch (...) {
       errors[B] = std::current_exception();
       rounds.abort.store(true);

@@ -156,7 +156,7 @@ RouteResult route_landmarks(PreparedGrid& pg, const Landmarks& lm, const Model& 
   else
     stats = search_with_bound(spec, model, pg.lengths(), pg.clearance(), b.min_rate, start,
                               target, *ws, RadixHeap{}, bound);
-  stats.state_bytes += pg.clearance_bytes();
+  stats.state_bytes += pg.clearance_bytes() + bound.resident_bytes();
   return pg.result(*ws, start, target, stats);
 }
 

@@ -124,7 +124,16 @@ class CachedBound {
   CachedBound(const Bound& b, std::int64_t n) : b_(b), n_(std::size_t(n)), written_((n_ >> 9) + 1) {
     void* p = mmap(nullptr, n_ * 8 + 8, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (p == MAP_FAILED) throw std::bad_alloc();
+#ifdef MADV_NOHUGEPAGE
+    madvise(p, n_ * 8 + 8, MADV_NOHUGEPAGE);  // as LazyLabels: memory only where bounds were kept
+#endif
     cache_ = static_cast<std::uint64_t*>(p);
+  }
+  // Bytes of the pages holding a bound (4 KiB: 512 of them).
+  std::size_t resident_bytes() const {
+    std::size_t pages = 0;
+    for (std::uint8_t w : written_) pages += w;
+    return pages * 4096 + written_.size();
   }
   ~CachedBound() { munmap(cache_, n_ * 8 + 8); }
   CachedBound(const CachedBound&) = delete;

@@ -96,6 +96,15 @@ class PreparedGrid {
     return stats;
   }
 
+  // Dijkstra from `from` into `ws` until `stop` is settled (stop < 0: every reachable pixel),
+  // for a search that reads the costs it leaves (the turn search's bound, turns.hpp).
+  template <class Model>
+  SearchStats search_into(const Model& model, std::int64_t from, std::int64_t stop, Workspace& ws,
+                          const SearchControl* control = nullptr) const {
+    check(from);
+    return run(model, from, stop, 0.0, ws, control);
+  }
+
   // What the searches in bidirectional.hpp and landmarks.hpp need besides the above.
   const std::uint8_t* clearance() const { return clearance_.data(); }
   std::size_t clearance_bytes() const { return clearance_.capacity(); }

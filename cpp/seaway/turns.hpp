@@ -21,6 +21,7 @@
 #include <cstring>
 #include <memory>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -159,22 +160,34 @@ RouteResult route_with_turns(PreparedGrid& pg, const Model& model, const TurnPen
   // A* in a heap: the bound is consistent; shave it by 1e-9 against rounding. In buckets: 0.95.
   const double scale = weight != 1 ? weight : (buckets ? 1 - eps : 1 - 1e-9);
   const DistanceBound bound(g, target, use_bound ? b.min_rate * scale : 0);
-  // Exact A*'s bound: the least cost from each pixel to the target without turn penalties, by
-  // one plain search from the target (these models cost a step the same both ways, so costs
-  // from the target are costs to it). Penalties are >= 0, so it is consistent; it is far
-  // tighter than the straight-line bound in ice (the default chart: 40 s -> a few seconds), and
-  // a pixel that cannot reach the target is never pushed. 8 bytes per pixel while searching.
-  std::vector<double> to_go;
-  if (astar) {
-    to_go.resize(std::size_t(n));
-    pg.field(model, target, to_go.data(), control);
-    if (!(to_go[std::size_t(start)] < inf)) {  // the target is out of reach: no route
+  // Exact A*'s bound: the least cost to the target without turn penalties, by one plain search
+  // from the target (these models cost a step the same both ways, so costs from the target are
+  // costs to it), stopped once it settles the start. A pixel it settled has its exact cost to
+  // go d(v); any other costs at least R = d(start). So h = d where settled, R elsewhere, is
+  // consistent (penalties are >= 0), far tighter than the straight-line bound in ice (the
+  // default chart: 40 s -> 6 s), and costs a short search for a short leg. It holds one more
+  // workspace while the search runs.
+  std::optional<PreparedGrid::Lease> field;
+  const double* to_go = nullptr;
+  double radius = 0;
+  std::size_t field_bytes = 0;
+  if (astar && start != target && pg.clearance()[start] > 0) {
+    field.emplace(pg);
+    pg.search_into(model, target, start, **field, control);
+    radius = (*field)->cost(start);
+    if (!(radius < inf)) {  // the target is out of reach: no route
       RouteResult none;
       none.stats.min_cost = b.min_rate;
       return none;
     }
+    to_go = (*field)->dist.data();
+    field_bytes = (*field)->bytes();
   }
-  auto h = [&](std::int64_t w) { return to_go.empty() ? bound(w) : scale * to_go[std::size_t(w)]; };
+  auto h = [&](std::int64_t w) {
+    if (!to_go) return bound(w);
+    const double d = to_go[std::size_t(w)];
+    return scale * (std::signbit(d) ? -d : radius);  // settled pixels have a negative cost
+  };
 
   const std::size_t states = std::size_t(n * K);
   auto cost_bits = detail::zeroed<std::uint64_t>(states);
@@ -195,7 +208,7 @@ RouteResult route_with_turns(PreparedGrid& pg, const Model& model, const TurnPen
       const double* len = lengths.row(row);
       for_each_step(pg, v, [&](std::int64_t w, std::int64_t o, auto&& cell) {
         const double c = model(v, w, int(o), len[o], dv, cell);
-        if (!(c < inf) || (!to_go.empty() && !(to_go[std::size_t(w)] < inf))) return;
+        if (!(c < inf)) return;
         const double nd = dv + c + (in >= 0 ? penalty(row, in, o) : 0.0);
         const std::int64_t s = w * K + o;
         if (nd < dist(s)) {  // false for expanded states: their cost is negative
@@ -239,7 +252,7 @@ RouteResult route_with_turns(PreparedGrid& pg, const Model& model, const TurnPen
   if (weight > 1) run(QuaternaryHeap{});
   else if (buckets) run(BucketQueue(width, span));
   else run(RadixHeap{});
-  stats.state_bytes = states * 9 + queue_bytes + penalty.bytes() + to_go.capacity() * sizeof(double);
+  stats.state_bytes = states * 9 + queue_bytes + penalty.bytes() + field_bytes;
   out.stats = stats;
   if (reached < 0) return out;
   // The target has one state per incoming step. A bucket empties in any order, so another of

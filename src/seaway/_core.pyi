@@ -104,7 +104,7 @@ class Router:
     def build_landmarks(self, model: Model, count: int, seed: int,
                         cancel: CancelToken | None = None) -> Landmarks: ...
     def route_landmarks(self, model: Model, landmarks: Landmarks, start: int, target: int,
-                        cancel: CancelToken | None = None) -> tuple[
+                        bidirectional: bool, cancel: CancelToken | None = None) -> tuple[
         float, npt.NDArray[np.int64], dict, npt.NDArray[np.float64],
         dict[str, npt.NDArray[np.float64]]]: ...
 
