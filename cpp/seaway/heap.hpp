@@ -82,40 +82,30 @@ class RadixHeap {
   std::size_t size_ = 0, peak_ = 0;
 };
 
-class BucketQueue {
+namespace detail {
+
+// The key arithmetic both bucket queues share: a ring of a power of two of buckets (a mask,
+// not a division, finds a key's bucket), the current and highest bucket in use, and the counts.
+class BucketRing {
  public:
-  // width: at most the cheapest step; span: at least the costliest step. The ring has a power
-  // of two of buckets (a mask, not a division, finds a key's bucket). A bucket holds only the
-  // pixel ids (4 bytes, not a 16-byte entry): the order within a bucket does not matter, so
-  // pop() gives the bucket's floor as the key.
-  BucketQueue(double width, double span)
-      : inv_width_(1.0 / width), ring_(ring_size(span / width + 2)), mask_(ring_.size() - 1) {}
+  BucketRing(double width, double span) : inv_width_(1.0 / width), mask_(ring_size(span / width + 2) - 1) {}
 
-  // How many buckets a queue for these step costs needs.
-  static double buckets_needed(double width, double span) { return span / width + 2; }
-
+  std::size_t buckets() const { return std::size_t(mask_ + 1); }
   bool empty() const { return size_ == 0; }
   std::size_t peak() const { return peak_; }
-  std::size_t capacity_bytes() const {
-    std::size_t b = ring_.capacity() * sizeof(ring_[0]);
-    for (const auto& v : ring_) b += v.capacity() * sizeof(std::uint32_t);
-    return b;
-  }
-
   // No key left in the queue is below this: the current bucket's floor, less one bucket for
   // the rounding of key * (1 / width) (bidirectional search's stopping rule).
   double lower_bound() const { return current_ > 0 ? double(current_ - 1) / inv_width_ : 0.0; }
-  template <class F>
-  void for_each(F&& f) const {  // every entry, in no order
-    if (size_ == 0) return;
-    for (std::uint64_t k = current_; k <= highest_; ++k)  // no entry lies outside these buckets
-      for (std::uint32_t id : ring_[k & mask_]) f(HeapEntry{double(k) / inv_width_, id});
-  }
+  double floor(std::uint64_t k) const { return double(k) / inv_width_; }
+  std::uint64_t current() const { return current_; }
+  std::uint64_t highest() const { return highest_; }
+  std::size_t slot(std::uint64_t k) const { return std::size_t(k & mask_); }
 
-  __attribute__((always_inline)) void push(const HeapEntry& e) {
-    // Keys are never below the current bucket (a step costs >= 0), and never a ring or more
-    // above it (a step costs < span); clamp rounding at both ends.
-    std::uint64_t k = std::uint64_t(e.key * inv_width_);
+  // The bucket of a pushed key, counted in. Keys are never below the current bucket (a step
+  // costs >= 0), and never a ring or more above it (a step costs < span); rounding is clamped
+  // at both ends.
+  __attribute__((always_inline)) std::uint64_t add(double key) {
+    std::uint64_t k = std::uint64_t(key * inv_width_);
     if (!started_) {  // the first key (an A* bound) may lie far from zero: start the ring there
       current_ = highest_ = k;
       started_ = true;
@@ -123,31 +113,73 @@ class BucketQueue {
     if (k < current_) k = current_;
     if (k > current_ + mask_) k = current_ + mask_;
     if (k > highest_) highest_ = k;
-    ring_[k & mask_].push_back(e.id);
     if (++size_ > peak_) peak_ = size_;
+    return k;
   }
-
-  HeapEntry pop() {
-    while (ring_[current_ & mask_].empty()) ++current_;
-    std::vector<std::uint32_t>& b = ring_[current_ & mask_];
-    const std::uint32_t id = b.back();
-    b.pop_back();
+  // The first bucket from the current one on that `bucket_empty(slot)` says holds entries, made
+  // current; one entry is counted out of it.
+  template <class IsEmpty>
+  std::uint64_t take(IsEmpty&& bucket_empty) {
+    while (bucket_empty(slot(current_))) ++current_;
     --size_;
-    return {double(current_) / inv_width_, id};
+    return current_;
   }
 
  private:
-  static std::size_t ring_size(double needed) {
-    std::size_t n = 2;
+  static std::uint64_t ring_size(double needed) {
+    std::uint64_t n = 2;
     while (double(n) < needed) n *= 2;
     return n;
   }
   double inv_width_;
-  std::vector<std::vector<std::uint32_t>> ring_;
   std::uint64_t mask_;
   std::uint64_t current_ = 0, highest_ = 0;  // the lowest and highest bucket that may hold entries
   bool started_ = false;
   std::size_t size_ = 0, peak_ = 0;
+};
+
+}  // namespace detail
+
+class BucketQueue {
+ public:
+  // width: at most the cheapest step; span: at least the costliest step. A bucket holds only
+  // the pixel ids (4 bytes, not a 16-byte entry): the order within a bucket does not matter,
+  // so pop() gives the bucket's floor as the key.
+  BucketQueue(double width, double span) : keys_(width, span), ring_(keys_.buckets()) {}
+
+  // How many buckets a queue for these step costs needs.
+  static double buckets_needed(double width, double span) { return span / width + 2; }
+
+  bool empty() const { return keys_.empty(); }
+  std::size_t peak() const { return keys_.peak(); }
+  std::size_t capacity_bytes() const {
+    std::size_t b = ring_.capacity() * sizeof(ring_[0]);
+    for (const auto& v : ring_) b += v.capacity() * sizeof(std::uint32_t);
+    return b;
+  }
+  double lower_bound() const { return keys_.lower_bound(); }
+  template <class F>
+  void for_each(F&& f) const {  // every entry, in no order
+    if (keys_.empty()) return;
+    for (std::uint64_t k = keys_.current(); k <= keys_.highest(); ++k)  // no entry lies outside these
+      for (std::uint32_t id : ring_[keys_.slot(k)]) f(HeapEntry{keys_.floor(k), id});
+  }
+
+  __attribute__((always_inline)) void push(const HeapEntry& e) {
+    ring_[keys_.slot(keys_.add(e.key))].push_back(e.id);
+  }
+
+  HeapEntry pop() {
+    const std::uint64_t k = keys_.take([&](std::size_t b) { return ring_[b].empty(); });
+    std::vector<std::uint32_t>& b = ring_[keys_.slot(k)];
+    const std::uint32_t id = b.back();
+    b.pop_back();
+    return {keys_.floor(k), id};
+  }
+
+ private:
+  detail::BucketRing keys_;
+  std::vector<std::vector<std::uint32_t>> ring_;
 };
 
 class ChunkedBucketQueue {
@@ -158,44 +190,29 @@ class ChunkedBucketQueue {
   // is a small share of the cheapest step): 7 % faster there; on Dijkstra's few full buckets
   // the vectors of BucketQueue are 10 % faster.
   ChunkedBucketQueue(double width, double span)
-      : inv_width_(1.0 / width), head_(ring_size(span / width + 2), none), fill_(head_.size(), 0),
-        mask_(head_.size() - 1) {}
+      : keys_(width, span), head_(keys_.buckets(), none), fill_(keys_.buckets(), 0) {}
 
-  // How many buckets a queue for these step costs needs.
-  static double buckets_needed(double width, double span) { return span / width + 2; }
+  static double buckets_needed(double width, double span) { return BucketQueue::buckets_needed(width, span); }
 
-  bool empty() const { return size_ == 0; }
-  std::size_t peak() const { return peak_; }
+  bool empty() const { return keys_.empty(); }
+  std::size_t peak() const { return keys_.peak(); }
   std::size_t capacity_bytes() const {
     return chunks_.capacity() * sizeof(Chunk) + head_.capacity() * sizeof(std::uint32_t) + fill_.capacity();
   }
-
-  // No key left in the queue is below this: the current bucket's floor, less one bucket for
-  // the rounding of key * (1 / width) (bidirectional search's stopping rule).
-  double lower_bound() const { return current_ > 0 ? double(current_ - 1) / inv_width_ : 0.0; }
+  double lower_bound() const { return keys_.lower_bound(); }
   template <class F>
   void for_each(F&& f) const {  // every entry, in no order
-    if (size_ == 0) return;
-    for (std::uint64_t k = current_; k <= highest_; ++k) {  // no entry lies outside these buckets
-      const double key = double(k) / inv_width_;
-      std::size_t n = fill_[k & mask_];
-      for (std::uint32_t c = head_[k & mask_]; c != none; c = chunks_[c].next, n = per_chunk)
-        for (std::size_t i = 0; i < n; ++i) f(HeapEntry{key, chunks_[c].ids[i]});
+    if (keys_.empty()) return;
+    for (std::uint64_t k = keys_.current(); k <= keys_.highest(); ++k) {  // no entry lies outside these
+      const std::size_t b = keys_.slot(k);
+      std::size_t n = fill_[b];
+      for (std::uint32_t c = head_[b]; c != none; c = chunks_[c].next, n = per_chunk)
+        for (std::size_t i = 0; i < n; ++i) f(HeapEntry{keys_.floor(k), chunks_[c].ids[i]});
     }
   }
 
   __attribute__((always_inline)) void push(const HeapEntry& e) {
-    // Keys are never below the current bucket (a step costs >= 0), and never a ring or more
-    // above it (a step costs < span); clamp rounding at both ends.
-    std::uint64_t k = std::uint64_t(e.key * inv_width_);
-    if (!started_) {  // the first key (an A* bound) may lie far from zero: start the ring there
-      current_ = highest_ = k;
-      started_ = true;
-    }
-    if (k < current_) k = current_;
-    if (k > current_ + mask_) k = current_ + mask_;
-    if (k > highest_) highest_ = k;
-    const std::size_t b = k & mask_;
+    const std::size_t b = keys_.slot(keys_.add(e.key));
     if (head_[b] == none || fill_[b] == per_chunk) {  // a new chunk on top of the bucket's stack
       const std::uint32_t c = take_chunk();
       chunks_[c].next = head_[b];
@@ -203,12 +220,11 @@ class ChunkedBucketQueue {
       fill_[b] = 0;
     }
     chunks_[head_[b]].ids[fill_[b]++] = e.id;
-    if (++size_ > peak_) peak_ = size_;
   }
 
   HeapEntry pop() {
-    while (head_[current_ & mask_] == none) ++current_;
-    const std::size_t b = current_ & mask_;
+    const std::uint64_t k = keys_.take([&](std::size_t b) { return head_[b] == none; });
+    const std::size_t b = keys_.slot(k);
     const std::uint32_t c = head_[b];
     const std::uint32_t id = chunks_[c].ids[--fill_[b]];
     if (fill_[b] == 0) {  // the chunk is empty: back to the pool; the one below it is full
@@ -217,8 +233,7 @@ class ChunkedBucketQueue {
       chunks_[c].next = free_;
       free_ = c;
     }
-    --size_;
-    return {double(current_) / inv_width_, id};
+    return {keys_.floor(k), id};
   }
 
  private:
@@ -237,20 +252,11 @@ class ChunkedBucketQueue {
     chunks_.emplace_back();
     return std::uint32_t(chunks_.size() - 1);
   }
-  static std::size_t ring_size(double needed) {
-    std::size_t n = 2;
-    while (double(n) < needed) n *= 2;
-    return n;
-  }
-  double inv_width_;
+  detail::BucketRing keys_;
   std::vector<std::uint32_t> head_;  // per bucket: its top chunk, or none
   std::vector<std::uint8_t> fill_;   // per bucket: ids in its top chunk
   std::vector<Chunk> chunks_;
   std::uint32_t free_ = none;
-  std::uint64_t mask_;
-  std::uint64_t current_ = 0, highest_ = 0;  // the lowest and highest bucket that may hold entries
-  bool started_ = false;
-  std::size_t size_ = 0, peak_ = 0;
 };
 
 class QuaternaryHeap {

@@ -108,11 +108,20 @@ Landmarks build_landmarks(PreparedGrid& pg, const Model& model, int count, std::
   return lm;
 }
 
-// The landmark search's share of the bound given up (eps) and its float32 rounding allowance
-// (ulp); eps >= 0.5: the tables cannot give an exact bound here.
-struct LandmarkSlack {
+// What both landmark searches need of a query, after checking its ends and tables: the model's
+// step bounds, the share of the bound given up (eps) and the float32 rounding allowance (ulp);
+// eps >= 0.5: the tables cannot give an exact bound here.
+struct LandmarkQuery {
+  StepBounds b;
   double eps, ulp, cheapest, rmax;
-  LandmarkSlack(const PreparedGrid& pg, const Landmarks& lm, const StepBounds& b) {
+  template <class Model>
+  LandmarkQuery(const PreparedGrid& pg, const Landmarks& lm, const Model& model, std::int64_t start,
+                std::int64_t target)
+      : b(model.bounds(pg.passability())) {
+    pg.check(start);
+    pg.check(target);
+    if (lm.table.size() != std::size_t(pg.grid().size()) * lm.count())
+      throw std::invalid_argument("the landmarks were built for another chart");
     const double rmin = b.per_length ? pg.shortest_step() : 1.0;
     rmax = b.per_length ? pg.longest_step() : 1.0;
     cheapest = b.min_rate * rmin;
@@ -123,11 +132,6 @@ struct LandmarkSlack {
   }
 };
 
-inline void check_landmarks(const PreparedGrid& pg, const Landmarks& lm) {
-  if (lm.table.size() != std::size_t(pg.grid().size()) * lm.count())
-    throw std::invalid_argument("the landmarks were built for another chart");
-}
-
 // Least-cost route by A* with the landmark bound (exact). When the bound cannot be made exact
 // in float32 (zero-cost pixels, or steps far cheaper than the tables' rounding), it runs
 // Dijkstra instead; stats.min_cost is then reported as is.
@@ -135,11 +139,8 @@ template <class Model>
 RouteResult route_landmarks(PreparedGrid& pg, const Landmarks& lm, const Model& model,
                             std::int64_t start, std::int64_t target,
                             const SearchControl* cancel = nullptr) {
-  pg.check(start);
-  pg.check(target);
-  check_landmarks(pg, lm);
-  const StepBounds b = model.bounds(pg.passability());
-  const LandmarkSlack sl(pg, lm, b);
+  const LandmarkQuery sl(pg, lm, model, start, target);
+  const StepBounds& b = sl.b;
   const double eps = sl.eps;
   if (!(eps < 0.5)) return pg.route(model, start, target, 0.0, cancel);
   // Every step's reduced cost is at least eps x cheapest - ulp >= cheapest x eps / 2.
@@ -168,16 +169,12 @@ template <class Model>
 RouteResult route_landmarks_bidirectional(PreparedGrid& pg, const Landmarks& lm, const Model& model,
                                           std::int64_t start, std::int64_t target,
                                           const SearchControl* cancel = nullptr) {
-  pg.check(start);
-  pg.check(target);
-  check_landmarks(pg, lm);
-  const StepBounds b = model.bounds(pg.passability());
-  const LandmarkSlack sl(pg, lm, b);
+  const LandmarkQuery sl(pg, lm, model, start, target);
   if (!(sl.eps < 0.5)) return route_bidirectional(pg, model, start, target, cancel);
   const AveragePotential<LandmarkBound> pot{LandmarkBound(lm, start, target, 1.0, lm.count()),
                                             LandmarkBound(lm, target, start, 1.0, lm.count()), 1 - sl.eps};
   return route_bidirectional(pg, model, start, target, cancel, pot, 0.5 * sl.eps,
-                             b.max_rate + sl.ulp / sl.rmax);
+                             sl.b.max_rate + sl.ulp / sl.rmax);
 }
 
 }  // namespace seaway
