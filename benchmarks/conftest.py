@@ -7,7 +7,7 @@ import platform
 import numpy as np
 import pytest
 
-from seaway.charts import synthetic_endpoints, synthetic_sea
+from seaway.samples import synthetic_endpoints, synthetic_sea
 
 SHAPE = (1900, 2300)  # the Kara Sea chart of paper 000: about 2300 x 1900 pixels
 

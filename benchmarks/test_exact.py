@@ -86,7 +86,7 @@ def test_one_route_fresh_chart(benchmark, charts, season, method):
     assert r.stats["settled"] <= exact.stats["settled"]
     if method != "dijkstra" and season == "summer":  # the bound is tight in summer: it prunes
         assert r.stats["settled"] < 0.5 * exact.stats["settled"]
-    if method == "auto":  # the rule of seaway._exact: bidirectional (A* potential in summer)
+    if method == "auto":  # the rule of seaway.engine.methods: bidirectional (A* potential in summer)
         assert r.method == "bidirectional"
         assert r.stats["state_bytes"] / cost.size <= 16
 

@@ -149,7 +149,7 @@ print(wall, status("VmHWM:"), before, t.cost[0], t.settled[0], t.length[0])
 
 def test_route_on_1e8_pixels_memory_mapped(benchmark, tmp_path):
     """A 10 000 x 10 000 float32 chart (400 MB file, np.memmap) routed corner to corner."""
-    from seaway.charts import synthetic_endpoints, synthetic_sea
+    from seaway.samples import synthetic_endpoints, synthetic_sea
 
     n, f = 10_000, 10  # synthetic_sea(1000 x 1000), each pixel repeated into a 10 x 10 block
     path = tmp_path / "chart.f32"

@@ -1,5 +1,5 @@
 """A season of ice charts on the Kara-Sea-sized chart (issue 10, part 3): seven daily charts of
-1900 x 2300 pixels (seaway.charts.kara_season), an Arc7 at 14 kn from the Kara Gate to the
+1900 x 2300 pixels (seaway.samples.kara_season), an Arc7 at 14 kn from the Kara Gate to the
 western approach of the Vilkitsky Strait, against the static route through the departure
 day's chart in the same run (the same hours per km, seaway's integral model, and scikit-image's
 MCP_Geometric as the project's peer). Asserts what can be checked at this size: A* and Dijkstra
@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 import seaway
-from seaway._engine import locate
-from seaway.charts import kara_season
+from seaway.chart.locate import locate
+from seaway.samples import kara_season
 from seaway.ice.season import SeasonGrid
 from seaway.models import IceSeasonTime
 

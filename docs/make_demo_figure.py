@@ -9,8 +9,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import seaway  # noqa: E402
-from seaway.__main__ import KARA_GATE, VILKITSKY_STRAIT, nearest_water  # noqa: E402
-from seaway.charts import ice_impact, kara_sea  # noqa: E402
+from seaway.cli.demo import KARA_GATE, VILKITSKY_STRAIT, nearest_water  # noqa: E402
+from seaway.samples import ice_impact, kara_sea  # noqa: E402
 
 ds = kara_sea()
 u = ice_impact(ds.stage_of_development, "Arc7")

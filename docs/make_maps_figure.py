@@ -4,8 +4,8 @@ built-in winter chart, ice in the WMO colour code by stage of development (seawa
 Run from the repository root: python docs/make_maps_figure.py (needs seaway[plot])."""
 
 import seaway
-from seaway.__main__ import KARA_GATE, VILKITSKY_STRAIT, nearest_water
-from seaway.charts import ice_impact, kara_sea
+from seaway.cli.demo import KARA_GATE, VILKITSKY_STRAIT, nearest_water
+from seaway.samples import ice_impact, kara_sea
 from seaway.plot import plot_route
 
 ds = kara_sea((950, 1150))  # half the default resolution: the same ice, a smaller file

@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from seaway import _geometry as geo
+from seaway.base import sphere as geo
 
 EPS = 1e-9
 SUBDIVIDE = 4.0  # index-space length of the pieces a great-circle leg is followed by

@@ -17,8 +17,8 @@ import xarray as xr
 
 import seaway
 from seaway import export
-from seaway.__main__ import main
-from seaway.forecast import open_forecast
+from seaway.cli import main
+from seaway.weather.forecast import open_forecast
 
 
 def _dataset():
@@ -247,13 +247,13 @@ def test_an_interrupt_that_passed_through_PyRun_String_still_exits_130(tmp_path)
     (status -2). The entry point must exit 130 whatever the timing."""
     (tmp_path / "interrupted_in_pyrun.py").write_text(
         "import ctypes\n"
-        "import seaway.__main__ as cli\n"
+        "import seaway.cli as cli\n"
         "run = ctypes.pythonapi.PyRun_String\n"
         "run.argtypes = [ctypes.c_char_p, ctypes.c_int, ctypes.py_object, ctypes.py_object]\n"
         "run.restype = ctypes.py_object\n"
         "def route(args):\n"
         "    run(b'raise KeyboardInterrupt', 257, {}, {})  # 257: Py_file_input\n"
-        "cli._cli.run_route = route\n"
+        "cli.run_route = route\n"
         "cli.entry(['route', 'kara', '--from', '70.3,58.5', '--to', '77.7,104'])\n")
     proc = subprocess.run([sys.executable, "-m", "interrupted_in_pyrun"], cwd=tmp_path,
                           capture_output=True, text=True, timeout=120)

@@ -11,8 +11,8 @@ import pytest
 import xarray as xr
 
 import seaway
-from seaway import charts
-from seaway.__main__ import main
+from seaway import samples as charts
+from seaway.cli import main
 
 INF = np.inf
 # Paper 000, Table 2 (Arc7 and stronger) and Table 3 (Arc5), transcribed independently of

@@ -11,7 +11,7 @@ import pytest
 import xarray as xr
 
 import seaway
-from seaway.charts import ice_impact
+from seaway.samples import ice_impact
 
 
 def run(*args, timeout=120):
@@ -158,7 +158,7 @@ def test_bench_small():
     assert "synthetic_sea 95 x 115 pixels" in lines[0]
     cells = [line.split() for line in lines[2:]]
     assert [(c[0], int(c[1])) for c in cells] == [("astar", 3), ("astar", 5)]
-    cost = seaway.charts.synthetic_sea((95, 115))
-    s, e = seaway.charts.synthetic_endpoints((95, 115))
+    cost = seaway.samples.synthetic_sea((95, 115))
+    s, e = seaway.samples.synthetic_endpoints((95, 115))
     exact = seaway.route(cost, s, e, neighbourhood=5, edge_cost="mean").cost
     assert float(cells[1][-1]) == pytest.approx(exact, abs=0.006)

@@ -12,7 +12,7 @@ import xarray as xr
 
 import seaway
 from reference import haversine
-from seaway._chart import as_chart
+from seaway.chart.raster import as_chart
 from seaway.constraints import KeepAway, Zone, constrain, distance_to, rasterise_zone
 
 shapely = pytest.importorskip("shapely")

@@ -4,7 +4,8 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from seaway import NoRouteError, _geometry as geo
+from seaway import NoRouteError
+from seaway.base import sphere as geo
 from seaway.corridor import corridor
 
 SF = (37 + 40.4 / 60, -(122 + 25.9 / 60))

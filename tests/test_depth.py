@@ -19,7 +19,7 @@ import xarray as xr
 import seaway
 from seaway.depth import apply_draft, depth_on_grid, least_depth, open_bathymetry
 from seaway.errors import NoRouteError
-from seaway.ice import andreeva
+from seaway.ice import andreeva, pareto
 from seaway.ice.grids import latlon_grid
 
 ndimage = pytest.importorskip("scipy.ndimage")
@@ -201,7 +201,7 @@ def test_paper_002_time_route_with_f1_from_depth_keeps_out_of_shallows(ob_chart)
     a, b = _pixel(cost, OB["start"]), _pixel(cost, OB["end"])
     neck = _bottleneck(z.values, a, b)
     F = andreeva.depth_factor(z, 7.0)
-    found = andreeva.pareto_routes(F, OB["start"], OB["end"], v0_kn=12, thresholds=[1e-9])
+    found = pareto.pareto_routes(F, OB["start"], OB["end"], v0_kn=12, thresholds=[1e-9])
     r = found[0].route
     assert found[0].safety == pytest.approx(float(F.values[r.pixels[:, 0], r.pixels[:, 1]].min()))
     assert float(z.values[r.pixels[:, 0], r.pixels[:, 1]].min()) > 7.0
@@ -213,7 +213,7 @@ def test_paper_002_time_route_with_f1_from_depth_keeps_out_of_shallows(ob_chart)
     hours = np.sum(km / (np.minimum(f[:-1], f[1:]) * 12 * 1.852))
     assert found[0].time == pytest.approx(hours, rel=1e-9)
     with pytest.raises(NoRouteError):
-        andreeva.pareto_routes(andreeva.depth_factor(z, neck + 0.05), OB["start"], OB["end"],
+        pareto.pareto_routes(andreeva.depth_factor(z, neck + 0.05), OB["start"], OB["end"],
                                v0_kn=12, thresholds=[1e-9])
 
 

@@ -33,8 +33,8 @@ def test_exact_methods_match_reference(edge_cost, k, directions, grid, potential
     low-contrast charts; forced here on every chart); and both forms of the landmark search:
     A* on one thread (with the plain bidirectional runs) and bidirectional A* with the average
     landmark potential on two (with the A* runs)."""
-    monkeypatch.setattr(seaway._exact, "ASTAR_CONTRAST", np.inf if potential else 0.0)
-    monkeypatch.setattr(seaway._exact, "BIDIRECTIONAL_LANDMARKS", potential)
+    monkeypatch.setattr(seaway.engine.methods, "ASTAR_CONTRAST", np.inf if potential else 0.0)
+    monkeypatch.setattr(seaway.engine.methods, "BIDIRECTIONAL_LANDMARKS", potential)
     seed = CASES.index((edge_cost, k, directions, grid))
     u, land, geo = make_chart(3000 + seed, grid, zeros=seed % 3 == 0)
     opts = dict(land=land, neighbourhood=k, directions=directions, edge_cost=edge_cost, **geo)
@@ -68,9 +68,9 @@ def test_auto_picks_landmarks_then_bidirectional():
     ok = np.argwhere(np.isfinite(ref.costs(tuple(np.argwhere(ref.ok)[0]))))
     s, e = (tuple(int(v) for v in ok[0]), tuple(int(v) for v in ok[-1]))
     assert chart.route(s, e).method == "dijkstra"  # a small chart: one thread
-    reps = int(np.ceil(np.sqrt(seaway._exact.SMALL_CHART / u.size)))
+    reps = int(np.ceil(np.sqrt(seaway.engine.methods.SMALL_CHART / u.size)))
     big = seaway.prepare(np.tile(u, (reps, reps)), land=np.tile(land, (reps, reps)), edge_cost="mean")
-    assert big.chart.values.size >= seaway._exact.SMALL_CHART
+    assert big.chart.values.size >= seaway.engine.methods.SMALL_CHART
     assert big.route(s, e).method == "bidirectional"
     chart.prepare_landmarks(3)
     assert chart.route(s, e).method == "landmarks"
@@ -94,7 +94,7 @@ def test_landmarks_prune_and_bidirectional_splits_the_work(monkeypatch):
         r = chart.route((100, 40), (100, 160), method=method)
         assert r.cost == pytest.approx(d.cost, rel=RTOL)
         assert r.stats["settled"] < share * d.stats["settled"], method
-    monkeypatch.setattr(seaway._exact, "ASTAR_CONTRAST", 0.0)
+    monkeypatch.setattr(seaway.engine.methods, "ASTAR_CONTRAST", 0.0)
     plain = seaway.prepare(u, edge_cost="mean").route((100, 40), (100, 160), method="bidirectional")
     assert plain.cost == pytest.approx(d.cost, rel=RTOL)
     assert r.stats["settled"] < plain.stats["settled"] < 0.85 * d.stats["settled"]
@@ -141,8 +141,8 @@ def test_bidirectional_refuses_time_dependent_models():
 
     chart = seaway.prepare(np.ones((5, 5)))
     with pytest.raises(ValueError, match="time of arrival"):
-        seaway._exact.resolve(chart, FakeTime(), "bidirectional")
-    assert seaway._exact.resolve(chart, FakeTime(), "auto") == "astar"
+        seaway.engine.methods.resolve(chart, FakeTime(), "bidirectional")
+    assert seaway.engine.methods.resolve(chart, FakeTime(), "auto") == "astar"
 
 
 def test_bidirectional_from_many_threads_equals_serial():
@@ -179,9 +179,9 @@ def test_cancel_token_stops_bidirectional_and_landmark_building():
     token.set()
     engine = chart.model.engine(chart)
     with pytest.raises(KeyboardInterrupt, match="search cancelled"):
-        chart._router.route_bidirectional(engine, 0, u.size - 1, True, token)
+        chart.router.route_bidirectional(engine, 0, u.size - 1, True, token)
     with pytest.raises(KeyboardInterrupt, match="search cancelled"):
-        chart._router.build_landmarks(engine, 2, 0, token)
+        chart.router.build_landmarks(engine, 2, 0, token)
     full = chart.cost_field((0, 0))
     assert chart.route((0, 0), (399, 399), method="bidirectional").cost == pytest.approx(full[399, 399], rel=RTOL)
 
@@ -227,7 +227,7 @@ def test_labels_kept_between_queries_give_the_same_routes():
     token = _core.CancelToken()
     token.set()  # stops after 4096 pixels, leaving its labels half written
     with pytest.raises(KeyboardInterrupt, match="search cancelled"):
-        kept._router.route_bidirectional(kept.model.engine(kept), 0, u.size - 1, False, token)
+        kept.router.route_bidirectional(kept.model.engine(kept), 0, u.size - 1, False, token)
     for s, e in pairs + pairs[::-1]:
         fresh = seaway.prepare(u, edge_cost="max")
         try:

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import seaway
-from seaway.charts import synthetic_endpoints, synthetic_sea
+from seaway.samples import synthetic_endpoints, synthetic_sea
 
 pd = pytest.importorskip("pandas")
 

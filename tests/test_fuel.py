@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from seaway import _core
-from seaway.fuel import FuelCurve, route_fuel, route_min_fuel, tradeoff
+from seaway.weather.fuel import FuelCurve, route_fuel, route_min_fuel, tradeoff
 from seaway.weather import Vessel
 
 from test_weather import forecast

@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 from seaway.ice import andreeva as a
+from seaway.ice import pareto
 
 # Paper 002, "Параметры маршрутов": route, l (nm), Z (m), h (m), f1, f2, F, V (kn), T (h).
 # Arc7, draft 12 m, h_pass 1.7 m, V0 12 kn, f3 = 1, dL = 0 (the table's f1 is 1 - d/Z).
@@ -83,7 +84,7 @@ def test_pareto_sweep_on_a_chart():
     F[22:, :] = 0.35
     F[:, :10] = 0.9
     F[:, 50:] = 0.9
-    out = a.pareto_routes(F, (5, 1), (5, 58), v0_kn=10.0, neighbourhood=5)
+    out = pareto.pareto_routes(F, (5, 1), (5, 58), v0_kn=10.0, neighbourhood=5)
     assert [p.safety for p in out] == [0.3, 0.35]  # the 0.9 threshold closes the way
     fast, safe = out
     assert (fast.threshold, safe.threshold) == (0.3, 0.35)
@@ -95,4 +96,4 @@ def test_pareto_sweep_on_a_chart():
     assert 40 / (0.3 * kmh) + 17 / (0.9 * kmh) <= fast.time <= 43 / (0.3 * kmh) + 14 / (0.9 * kmh)
     assert fast.time == pytest.approx(fast.route.cost) and safe.time == pytest.approx(safe.route.cost)
     with pytest.raises(ValueError, match="impassable"):
-        a.pareto_routes(np.zeros((5, 5)), (0, 0), (4, 4), v0_kn=10.0, thresholds=[0.1])
+        pareto.pareto_routes(np.zeros((5, 5)), (0, 0), (4, 4), v0_kn=10.0, thresholds=[0.1])

@@ -6,7 +6,7 @@ import pytest
 import xarray as xr
 
 import seaway
-from seaway import charts
+from seaway import samples as charts
 from seaway.ice import classes, impact
 from seaway.ice.impact import ice_impact
 

@@ -138,7 +138,7 @@ def test_inputs_refused_with_the_fix(week, tmp_path):
 
 
 def test_command_line_routes_through_dated_sigrid3_files(week, tmp_path, capsys):
-    from seaway.__main__ import main
+    from seaway.cli import main
 
     for i, day in enumerate(DAYS):
         write_chart(tmp_path / f"c{i}.shp", plug=i < 3)

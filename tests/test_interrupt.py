@@ -29,7 +29,7 @@ def _interrupt_after(seconds):
 def test_ctrl_c_stops_a_long_search_and_the_chart_still_answers(big, monkeypatch):
     chart = seaway.prepare(big, neighbourhood=7)
     full = chart.cost_field((0, 0))
-    assert chart._router.workspaces == 1
+    assert chart.router.workspaces == 1
     tokens, make_token = [], _core.CancelToken
     monkeypatch.setattr(_core, "CancelToken", lambda: tokens.append(make_token()) or tokens[-1])
 
@@ -48,12 +48,12 @@ def test_ctrl_c_stops_a_long_search_and_the_chart_still_answers(big, monkeypatch
     # Stopped part-way (the counter is published every 4096 expansions, where the cancel flag
     # is polled), and the search had given its workspace back: the chart still has one.
     assert token.is_set and 0 < token.settled < big.size and token.settled % 4096 == 0
-    assert chart._router.workspaces == 1
+    assert chart.router.workspaces == 1
     # The interrupted query's workspace is reused: the next answers are exact.
     np.testing.assert_array_equal(chart.cost_field((0, 0)), full)
     r = chart.route((0, 0), (2499, 2499), method="dijkstra")
     assert r.cost == full[2499, 2499]
-    assert chart._router.workspaces == 1
+    assert chart.router.workspaces == 1
 
 
 def test_a_cancel_token_stops_the_engine_from_any_thread(big):
@@ -61,7 +61,7 @@ def test_a_cancel_token_stops_the_engine_from_any_thread(big):
     token = _core.CancelToken()
     token.set()
     with pytest.raises(KeyboardInterrupt, match="search cancelled"):
-        chart._router.route(chart.model.engine(chart), 0, big.size - 1, 0.0, token)
+        chart.router.route(chart.model.engine(chart), 0, big.size - 1, 0.0, token)
     assert token.is_set
     fresh = seaway.route(big, (0, 0), (0, 5), neighbourhood=5, method="dijkstra").cost
-    assert chart._router.route(chart.model.engine(chart), 0, 5, 0.0)[0] == fresh
+    assert chart.router.route(chart.model.engine(chart), 0, 5, 0.0)[0] == fresh

@@ -41,7 +41,7 @@ def test_unknown_model_names_raise_with_the_list():
 def test_engine_model_on_another_grid_is_refused():
     chart = seaway.prepare(np.ones((6, 6)))
     with pytest.raises(ValueError, match="6 x 7 pixels but the chart 6 x 6"):
-        chart._router.route(_core.MeanCost(np.ones((6, 7))), 0, 35, 0.0)
+        chart.router.route(_core.MeanCost(np.ones((6, 7))), 0, 35, 0.0)
 
 
 def test_pair_costs_are_the_engines_step_costs():

@@ -124,8 +124,8 @@ def test_map_projection_follows_the_hemisphere(ice_chart):
     import cartopy.crs as ccrs
 
     cost, land, _, _ = ice_chart
-    north = seaway._chart.as_chart(cost)
-    south = seaway._chart.as_chart(cost.assign_coords(lat=-cost.lat))
+    north = seaway.chart.raster.as_chart(cost)
+    south = seaway.chart.raster.as_chart(cost.assign_coords(lat=-cost.lat))
     try:
         m = plot._Map(north, (6, 5))
         assert isinstance(m.ax.projection, ccrs.NorthPolarStereo)

@@ -12,7 +12,7 @@ import pytest
 
 import seaway
 from seaway import _core
-from seaway._interrupt import interruptible, reporting
+from seaway.base.interrupt import interruptible, reporting
 
 
 def _sleep_until(condition):
@@ -26,7 +26,7 @@ def test_after_ctrl_c_the_next_query_reuses_the_workspace():
     cost = np.random.default_rng(3).uniform(1.0, 9.0, (300, 300))
     chart = seaway.prepare(cost, neighbourhood=5)
     expected = chart.route((0, 0), (299, 299), method="dijkstra").cost
-    assert chart._router.workspaces == 1
+    assert chart.router.workspaces == 1
 
     ended = []
 
@@ -35,7 +35,7 @@ def test_after_ctrl_c_the_next_query_reuses_the_workspace():
         _sleep_until(lambda: token.is_set)
         os.kill(os.getpid(), signal.SIGINT)  # ... and again, while the main thread waits
         try:
-            return chart._router.field(chart.model.engine(chart), 0, token)
+            return chart.router.field(chart.model.engine(chart), 0, token)
         finally:
             ended.append(token.settled)
 
@@ -45,7 +45,7 @@ def test_after_ctrl_c_the_next_query_reuses_the_workspace():
     # reached the caller, 4096 expansions in; the next query reuses that workspace.
     assert ended == [4096]
     assert chart.route((0, 0), (299, 299), method="dijkstra").cost == expected
-    assert chart._router.workspaces == 1
+    assert chart.router.workspaces == 1
 
 
 def test_settled_counter_is_published_every_4096_expansions():
@@ -53,7 +53,7 @@ def test_settled_counter_is_published_every_4096_expansions():
     chart = seaway.prepare(cost, neighbourhood=3)
     token = _core.CancelToken()
     assert token.settled == 0
-    _, stats = chart._router.field(chart.model.engine(chart), 0, token)
+    _, stats = chart.router.field(chart.model.engine(chart), 0, token)
     assert stats["settled"] == 200 * 150
     assert token.settled == (200 * 150) // 4096 * 4096  # the last multiple of 4096 reached
 
@@ -64,12 +64,12 @@ def test_the_waiting_thread_hands_the_settled_count_to_a_listener(monkeypatch):
     """No clock: the search settles 200 x 150 pixels (counter at 28672, the last multiple of
     4096), then waits until the listener has heard that count (it may hear smaller ones
     first, while the search runs)."""
-    monkeypatch.setattr(seaway._interrupt, "POLL_S", 0.001)
+    monkeypatch.setattr(seaway.base.interrupt, "POLL_S", 0.001)
     chart = seaway.prepare(np.ones((200, 150)), neighbourhood=3)
     heard, release = [], threading.Event()
 
     def search(token):
-        chart._router.field(chart.model.engine(chart), 0, token)
+        chart.router.field(chart.model.engine(chart), 0, token)
         release.wait()
         return "done"
 
@@ -90,7 +90,7 @@ def test_the_waiting_thread_hands_the_settled_count_to_a_listener(monkeypatch):
 
 def test_settled_progress_is_throttled_to_once_a_second_of_its_clock():
     now, said = [100.0], []
-    progress = seaway._interrupt.SettledProgress(said.append, 1_000_000, clock=lambda: now[0])
+    progress = seaway.base.interrupt.SettledProgress(said.append, 1_000_000, clock=lambda: now[0])
     for t, settled in [(100.5, 4096), (101.0, 8192), (101.5, 12288), (101.9, 16384),
                        (102.0, 20480), (103.5, 20480), (104.0, 500_000)]:
         now[0] = t
@@ -109,7 +109,7 @@ def test_a_non_number_cell_size_is_named(kw, name):
 
 
 def test_every_numeric_argument_is_checked_by_name():
-    from seaway.charts import synthetic_sea
+    from seaway.samples import synthetic_sea
     from seaway.corridor import corridor
     from seaway.vessel import Vessel
 
@@ -213,10 +213,10 @@ def test_compat_negative_start_matches_skimage():
 def test_the_cli_reports_pixels_settled_during_a_long_search(monkeypatch, capsys):
     """`seaway route`'s search block prints the token's count on stderr: a search that holds on
     until a line has been printed for its 28672 settled pixels (no clock in the test)."""
-    from seaway._cli import Progress, searching
+    from seaway.cli.common import Progress, searching
 
-    monkeypatch.setattr(seaway._interrupt, "POLL_S", 0.001)
-    monkeypatch.setattr(seaway._interrupt, "PROGRESS_EVERY_S", 0.0)
+    monkeypatch.setattr(seaway.base.interrupt, "POLL_S", 0.001)
+    monkeypatch.setattr(seaway.base.interrupt, "PROGRESS_EVERY_S", 0.0)
     chart = seaway.prepare(np.ones((200, 150)), neighbourhood=3)
     printed = threading.Event()
 
@@ -227,7 +227,7 @@ def test_the_cli_reports_pixels_settled_during_a_long_search(monkeypatch, capsys
                 printed.set()
 
     def search(token):
-        chart._router.field(chart.model.engine(chart), 0, token)
+        chart.router.field(chart.model.engine(chart), 0, token)
         printed.wait()
         return "done"
 

@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 import seaway
-from seaway._segments import Segments
-from seaway.smooth import smooth
+from seaway.chart.legs import Segments
+from seaway import smooth
 
 from reference import refraction_optimum
 from reference_legs import Segments as NumpySegments

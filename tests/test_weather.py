@@ -184,7 +184,7 @@ ROMS = Path(__file__).resolve().parents[2] / "shared" / "data" / "ocean_model" /
 
 def test_to_latlon_turns_grid_vectors_to_east_and_north():
     pyproj = pytest.importorskip("pyproj")
-    from seaway.forecast import to_latlon
+    from seaway.weather.forecast import to_latlon
 
     # ROMS Arctic's projection; a current of 1 m/s due north everywhere, given in grid x/y:
     # on a north-polar stereographic grid north is (-sin t, cos t), t = lon - lon_0.
@@ -210,7 +210,7 @@ def test_to_latlon_turns_grid_vectors_to_east_and_north():
 
 @pytest.mark.skipif(not ROMS.exists(), reason="../shared/data is absent")
 def test_route_on_the_roms_currents():
-    from seaway.forecast import open_forecast, to_latlon
+    from seaway.weather.forecast import open_forecast, to_latlon
 
     pytest.importorskip("pyproj")
     ds = open_forecast(ROMS)[["ubar", "vbar", "mask", "polar_stereographic"]]

@@ -21,7 +21,8 @@ import seaway
 folium = pytest.importorskip("folium")
 from matplotlib import image  # noqa: E402
 
-from seaway import plot, webmap  # noqa: E402
+from seaway import plot  # noqa: E402
+from seaway.output import webmap  # noqa: E402
 
 
 @pytest.fixture

@@ -65,7 +65,7 @@ def test_zone_closed_only_when_the_ship_is_elsewhere_changes_nothing(window):
 def test_closed_block_is_detoured_while_closed():
     """A block over the straight line, closed all voyage: the detour of the static route with
     the block as land, in hours. Closed for the first 2 h only: the plain route."""
-    chart = seaway._chart.as_chart(np.ones((21, 31)), lat=LAT, lon=LON)
+    chart = seaway.chart.raster.as_chart(np.ones((21, 31)), lat=LAT, lon=LON)
     block = seaway.constraints.rasterise_zone(Zone(BLOCK), chart)
     assert block.sum() == 7 * 5
     detour = km_route(A, B, land=block).cost / KMH

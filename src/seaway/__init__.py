@@ -3,12 +3,17 @@
 The C++ core searches the implicit graph whose vertices are a chart's pixels and whose edges
 join each pixel to the pixels of the k x k square around it (Dijkstra and exact A*)."""
 
-from ._engine import PreparedChart, cost_field, prepare, route
+from importlib.metadata import PackageNotFoundError, version
+
+from .engine import PreparedChart, cost_field, prepare, route
 from .errors import NoRouteError
 from .fleet import route_many
-from .route import Leg, Route
-from .smooth import smooth
+from .result import Leg, Route
+from .smoothing import smooth
 
 __all__ = ["route", "cost_field", "prepare", "PreparedChart", "Route", "NoRouteError", "Leg",
            "smooth", "route_many"]
-__version__ = "0.1.0"
+try:
+    __version__ = version("seaway")  # one version: pyproject.toml's, from the package metadata
+except PackageNotFoundError:  # run from a source tree that was never installed
+    __version__ = "0+unknown"

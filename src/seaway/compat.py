@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._chart import as_chart
-from ._engine import PreparedChart
-from ._interrupt import interruptible
+from .base.interrupt import interruptible
+from .chart.raster import as_chart
+from .engine.prepared import PreparedChart
 from .errors import NoRouteError
 from .models import EdgeCost, EnteredPixel
 
@@ -29,7 +29,7 @@ def _from_negative_start(prepared, s, e, fully_connected):
     if not (u[e] >= 0 and u[e] < np.inf):  # skimage never steps onto an impassable end
         return np.inf, None
     engine = prepared.model.engine(prepared)
-    field, _ = interruptible(lambda cancel: prepared._router.field(
+    field, _ = interruptible(lambda cancel: prepared.router.field(
         engine, e[0] * cols + e[1], cancel))
     best = (np.inf, None)
     for di, dj in ((-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1)):
@@ -43,7 +43,7 @@ def _from_negative_start(prepared, s, e, fully_connected):
             best = (first + field[n], n)
     if best[1] is None:
         return np.inf, None
-    _, rest, *_ = prepared._search(best[1], e, 0.0, prepared.model)
+    rest = prepared.search(best[1], e, 0.0, prepared.model).path
     return best[0], np.concatenate([[s[0] * cols + s[1]], rest])
 
 
@@ -71,12 +71,13 @@ def route_through_array(costs, start, end, fully_connected=True, geometric=True)
     if not geometric and not chart.values[s] < np.inf:  # +inf or NaN start: skimage finds no path
         raise NoRouteError("no minimum-cost path was found to the specified end point")
     model = EdgeCost("mean") if geometric else EnteredPixel()
-    prepared = PreparedChart._from_chart(chart, 3, "full" if fully_connected else "axis", model,
-                                         "ends")
+    prepared = PreparedChart.from_chart(chart, 3, "full" if fully_connected else "axis", model,
+                                        "ends")
     if geometric and chart.values[s] < 0 and s != e:
         total, path = _from_negative_start(prepared, s, e, fully_connected)
     else:
-        total, path, *_ = prepared._search(s, e, 0.0, model)
+        found = prepared.search(s, e, 0.0, model)
+        total, path = found.cost, found.path
     if not total < np.inf:  # (a -inf start gives -inf, as in skimage)
         raise NoRouteError("no minimum-cost path was found to the specified end point")
     if not geometric:

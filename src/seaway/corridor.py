@@ -26,12 +26,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _geometry as geo
-from ._chart import as_chart
-from ._validate import number
+from .base import sphere as geo
+from .base.validate import number
+from .chart.raster import as_chart
+from .engine.api import route as engine_route
 from .errors import NoRouteError
-from .models import EdgeCost
-from .route import Route
+from .models.base import EdgeCost
+from .result.route import Route
 
 
 @dataclass
@@ -90,7 +91,6 @@ class Corridor:
             path = self._forward(u, env, max_shift or rows, model, checks)
             extra = {}
         elif steps == "stencil":
-            from ._engine import route as engine_route
             r = engine_route(u, (self.m, 0), (self.m, layers - 1), dx=self.leg_km, dy=self.row_km,
                              neighbourhood=neighbourhood, edge_cost=edge_cost)
             path = r.pixels

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _core
-from ._validate import number
+from .base.validate import number
 
 #: The speed-loss formulas of the engine (cpp/seaway/weather.hpp).
 SPEED_LOSSES = tuple(_core.SpeedLoss.__members__)

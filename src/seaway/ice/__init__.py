@@ -1,8 +1,9 @@
 """Ice navigation: ice classes, SIGRID-3 codes, and the cost models of paper 000 (impact
 tables), IMO POLARIS (MSC.1/Circ.1519) and paper 002 (Andreeva: speed V = F*V0, time, Pareto).
 
-Modules: classes, codes, impact, polaris, andreeva, summary, season (routes through a time
-series of charts; numpy/xarray only) and sigrid
+Modules: classes, codes, impact, polaris, andreeva (formulas), colours; pareto (Andreeva's
+time-safety routes), summary, season (routes through a time series of charts; numpy/xarray
+only) and sigrid
 (readers of SIGRID-3 shapefiles/GeoPackages and NSIDC NetCDF; needs ``pip install
 "seaway[ice]"``, imported only when you import seaway.ice.sigrid).
 
@@ -27,9 +28,21 @@ Coordinates: lat/lon (degrees, pixel centres) or y/x (km in the grid's projectio
 PROJ string is the Dataset attribute ``crs``).
 """
 
-from . import andreeva, classes, codes, impact, polaris, season, summary
+import importlib
+
+from . import andreeva, classes, codes, impact, polaris
 from .classes import CLASSES, IceClass, class_names, get_class
 from .impact import ICE_IMPACT, chart_impact, ice_impact
 
-__all__ = ["andreeva", "classes", "codes", "impact", "polaris", "season", "summary", "CLASSES",
+#: The modules that route (they import the engine, which imports the formulas above): loaded on
+#: first use, so that the cost models can read the ice classes without a cycle.
+_ROUTING = ("pareto", "season", "summary")
+
+
+def __getattr__(name):
+    if name in _ROUTING:
+        return importlib.import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+__all__ = ["andreeva", "classes", "codes", "impact", "polaris", "pareto", "season", "summary", "CLASSES",
            "IceClass", "class_names", "get_class", "ICE_IMPACT", "ice_impact", "chart_impact"]

@@ -20,11 +20,10 @@ engine measures km, so time_cost() returns hours per km (1 nm = 1.852 km).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
-KM_PER_NM = 1.852
+from ..base.units import KM_PER_NM
+
 NSR_K = 0.006  # paper 002: largest vertical roughness index at 95 % on the NSR
 
 
@@ -120,50 +119,3 @@ def pareto_front(times, safeties) -> list:
         if not dominated.any():
             keep.append(i)
     return sorted(keep, key=lambda i: (t[i], -s[i]))
-
-
-@dataclass
-class ParetoRoute:
-    """One route of the sweep: the F threshold it was found with, its time (route cost: hours
-    on geographic charts), its safety (lowest F along its pixels) and the Route itself."""
-
-    threshold: float
-    time: float
-    safety: float
-    route: object
-
-
-def pareto_routes(F, start, end, *, v0_kn, thresholds=None, **route_kwargs) -> list:
-    """Sweep the F threshold: for each t, forbid pixels with F < t, find the minimum-time route
-    (cost = time_cost), measure its safety; return the non-dominated ParetoRoutes, fastest
-    first. thresholds default to the distinct F values of the chart (at most 20 quantiles).
-    route_kwargs go to seaway.route (lat/lon, land, neighbourhood, ...)."""
-    from .._engine import route
-    from ..errors import NoRouteError
-
-    values = np.asarray(getattr(F, "values", F), dtype=float)
-    if thresholds is None:
-        positive = np.unique(values[np.isfinite(values) & (values > 0)])
-        if positive.size > 20:
-            positive = np.unique(np.quantile(positive, np.linspace(0, 1, 20), method="lower"))
-        thresholds = positive
-    found = []
-    for t in sorted(float(x) for x in thresholds):
-        allowed = np.where(values >= t, values, 0.0)
-        cost = time_cost(F.copy(data=allowed) if hasattr(F, "dims") else allowed, v0_kn)
-        try:
-            r = route(cost, start, end, **route_kwargs)
-        except (NoRouteError, ValueError):
-            if not found:
-                raise
-            break  # the threshold closed the way or an end pixel; higher ones forbid more
-        safety = float(values[r.pixels[:, 0], r.pixels[:, 1]].min())
-        found.append(ParetoRoute(t, float(r.cost), safety, r))
-    keep = pareto_front([p.time for p in found], [p.safety for p in found])
-    unique, seen = [], set()
-    for i in keep:
-        key = (round(found[i].time, 9), found[i].safety)
-        if key not in seen:
-            seen.add(key)
-            unique.append(found[i])
-    return unique

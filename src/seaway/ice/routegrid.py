@@ -19,10 +19,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..base.units import EARTH_RADIUS_KM, KM_PER_DEG  # noqa: F401 - EARTH_RADIUS_KM: part of this API
 from .grids import Grid, latlon_grid
 
-EARTH_RADIUS_KM = 6371.0088
-KM_PER_DEG = np.pi * EARTH_RADIUS_KM / 180.0
 DLAT = 0.05  # degrees: 5.6 km, the Kara Sea grid
 MIN_MARGIN_KM = 300.0
 MAX_PIXELS = 4_000_000

@@ -38,13 +38,16 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from .._chart import as_chart
-from .._engine import PreparedChart, _check_options
+from ..base.files import open_netcdf
+from ..chart.raster import as_chart
+from ..engine.methods import check_options
+from ..engine.prepared import PreparedChart
 from ..models import EdgeCost, IceSeasonTime
 from . import andreeva
 from .classes import get_class
 from .codes import ICE_FREE, STAGE_CODES
 from .impact import governing_stage
+from .sigrid import read_sigrid3
 
 __all__ = ["read_season", "as_season", "SeasonGrid", "andreeva_speed_kn", "table_speed_kn",
            "route_season", "arrival_field"]
@@ -54,8 +57,6 @@ def read_season(charts, grid, **read_kwargs) -> xr.Dataset:
     """SIGRID-3 files with their dates -> a season Dataset on `grid` (seaway.ice.grids).
     charts: {date: path} or [(date, path), ...] in date order; each chart is valid from its
     date (any form numpy.datetime64 takes) until the next one's. read_kwargs go to read_sigrid3."""
-    from .sigrid import read_sigrid3
-
     items = list(charts.items()) if isinstance(charts, dict) else list(charts)
     if not items:
         raise ValueError("give at least one (date, path) chart")
@@ -81,9 +82,7 @@ def as_season(season) -> xr.Dataset:
     """A season Dataset from a Dataset or NetCDF path: CF sea_ice_area_fraction (fraction or %)
     becomes CT in tenths, sea_ice_thickness becomes `thickness` (m); times must increase."""
     if not isinstance(season, xr.Dataset):
-        from ..forecast import open_forecast
-
-        season = open_forecast(season)
+        season = open_netcdf(season, "a season of ice charts is a NetCDF file with a time axis")
     ds = season
     by_std = {v.attrs.get("standard_name"): k for k, v in ds.data_vars.items()}
     if "CT" not in ds and "sea_ice_area_fraction" in by_std:
@@ -194,10 +193,10 @@ class SeasonGrid:
     def prepare(self, neighbourhood=5) -> PreparedChart:
         """The season's grid as a chart (lat/lon or planar y/x); its static cost is 1 per unit
         length, the season's model brings its own."""
-        _check_options(neighbourhood, "full")
+        check_options(neighbourhood, "full")
         one = self.template.copy(data=np.ones(self.shape, np.float32))
         chart = as_chart(one, land=self.dry)
-        return PreparedChart._from_chart(chart, neighbourhood, "full", EdgeCost("integral"), "segment")
+        return PreparedChart.from_chart(chart, neighbourhood, "full", EdgeCost("integral"))
 
     def departure_frames(self, departure):
         """(departure, index of the chart valid then); refuses departures outside the season."""

@@ -37,11 +37,11 @@ EXTRA = 'pip install "seaway[ice]"'
 
 def _require():
     try:
+        import antimeridian  # noqa: F401
         import pyogrio.raw  # noqa: F401
         import pyproj  # noqa: F401
         import rasterio.features  # noqa: F401
         import shapely  # noqa: F401
-        import antimeridian  # noqa: F401
     except ImportError as exc:
         raise ImportError(f"seaway.ice.sigrid needs the optional packages pyogrio, shapely, "
                           f"rasterio, pyproj and antimeridian ({exc.name} is missing): {EXTRA}") from exc

@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..models import EdgeCost
+from ..models.base import EdgeCost
 from .codes import stage_name
+from .impact import governing_stage
 
 BANDS = (("ice free <1/10", -np.inf, 1.0), ("very open 1-3/10", 1.0, 4.0),
          ("open 4-6/10", 4.0, 7.0), ("close 7-8/10", 7.0, 9.0),
@@ -36,7 +37,6 @@ def _layer(x, pixels):
 def _chart_layers(chart):
     """(stage, concentration) rasters of a chart Dataset: SIGRID names or kara_sea() names."""
     if "CT" in chart and "SA" in chart:
-        from .impact import governing_stage
 
         return governing_stage(chart), chart["CT"]
     return chart["stage_of_development"], chart["sea_ice_concentration"]

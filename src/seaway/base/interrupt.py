@@ -1,0 +1,104 @@
+"""Ctrl-C during a search, and progress of long searches. The C++ search runs without the GIL,
+so Python's KeyboardInterrupt would only arrive when it returns. In the main thread the search
+therefore runs in a helper thread while the main thread waits; on Ctrl-C the main thread sets
+the search's cancel token (polled every 4096 expanded pixels), waits for the search to stop and
+give its workspace back (further Ctrl-Cs while it waits are absorbed: the search stops within
+4096 expansions), and re-raises. Elsewhere (worker threads, Dask) the search runs directly:
+signals only reach the main thread.
+
+The same token counts the pixels settled so far (published by the search every 4096
+expansions); `reporting(callback)` makes the waiting main thread hand it to callback at each
+poll, and SettledProgress turns that into a line on stderr at most once a second (the CLI).
+Without a listener nothing is reported."""
+
+from __future__ import annotations
+
+import contextlib
+import threading
+import time
+
+from .. import _core
+
+_listener = None  # callback(settled pixels) while a `reporting` block runs
+POLL_S = 0.1  # how often the waiting main thread looks at the search (and calls the listener)
+PROGRESS_EVERY_S = 1.0  # SettledProgress says at most this often
+
+
+@contextlib.contextmanager
+def reporting(callback):
+    """Within the block, a search run by interruptible() in the main thread calls
+    callback(settled pixels so far) each time the waiting main thread polls it (every POLL_S);
+    the callback throttles (see SettledProgress)."""
+    global _listener
+    previous, _listener = _listener, callback
+    try:
+        yield
+    finally:
+        _listener = previous
+
+
+class SettledProgress:
+    """A `reporting` callback that says "searching: N pixels settled (P % of the chart)" at
+    most once every `every_s` seconds of `clock`, and only when N has grown."""
+
+    def __init__(self, say, pixels: int, every_s: float | None = None, clock=time.monotonic):
+        every_s = PROGRESS_EVERY_S if every_s is None else every_s
+        self.say, self.pixels, self.every_s, self.clock = say, max(int(pixels), 1), every_s, clock
+        self.due, self.last = clock() + every_s, 0
+
+    def __call__(self, settled: int) -> None:
+        now = self.clock()
+        if now < self.due or settled <= self.last:
+            return
+        self.due, self.last = now + self.every_s, settled
+        self.say(f"searching: {settled:,} pixels settled ({100 * settled / self.pixels:.0f} % "
+                 "of the chart)")
+
+
+def _stop(finished: threading.Event, token) -> None:
+    """Cancel the search and wait until it has returned, even if more Ctrl-Cs arrive meanwhile:
+    the search stops within 4096 expansions and gives its workspace back to the chart's pool,
+    so the next query reuses it instead of allocating a second one."""
+    token.set()
+    while True:
+        try:
+            finished.wait()
+            return
+        except KeyboardInterrupt:
+            continue
+
+
+def interruptible(search):
+    """Run `search(cancel_token)` so that Ctrl-C stops it promptly; returns its result.
+
+    The main thread waits on an Event, not Thread.join: in CPython 3.11 a KeyboardInterrupt
+    that interrupts join() marks the thread as stopped while it still runs (bpo-45274's
+    cleanup releases the running thread's own lock), so a later join() returned at once and
+    the cancelled search kept its workspace (issue 13)."""
+    if threading.current_thread() is not threading.main_thread():
+        return search(None)
+    token = _core.CancelToken()
+    outcome = {}
+    finished = threading.Event()
+
+    def work():
+        try:
+            outcome["value"] = search(token)
+        except BaseException as exc:  # handed to the main thread below
+            outcome["error"] = exc
+        finally:
+            finished.set()
+
+    worker = threading.Thread(target=work, name="seaway-search", daemon=True)
+    listener = _listener
+    try:
+        worker.start()
+        while not finished.wait(POLL_S):
+            if listener is not None:
+                listener(token.settled)
+    except KeyboardInterrupt:
+        _stop(finished, token)
+        raise
+    if "error" in outcome:
+        raise outcome["error"]
+    return outcome["value"]

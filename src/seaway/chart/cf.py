@@ -1,0 +1,51 @@
+"""CF conventions, written once: the names and attributes that say which coordinate of a file is
+latitude, longitude, y or x, and which variable of a forecast plays which role."""
+
+from __future__ import annotations
+
+LAT_NAMES = ("lat", "latitude", "nav_lat")
+LON_NAMES = ("lon", "longitude", "long", "nav_lon")
+Y_NAMES = ("y", "yc", "northing")
+X_NAMES = ("x", "xc", "easting")
+
+#: CF standard names searched for each field, first match wins.
+STANDARD_NAMES = {
+    "current_east": ("eastward_sea_water_velocity", "surface_eastward_sea_water_velocity",
+                     "barotropic_eastward_sea_water_velocity"),
+    "current_north": ("northward_sea_water_velocity", "surface_northward_sea_water_velocity",
+                      "barotropic_northward_sea_water_velocity"),
+    "wave_height": ("sea_surface_wave_significant_height",),
+    "wave_from": ("sea_surface_wave_from_direction",),
+    "wave_period": ("sea_surface_wave_mean_period",
+                    "sea_surface_wave_mean_period_from_variance_spectral_density_first_frequency_moment",
+                    "sea_surface_wave_period_at_variance_spectral_density_maximum"),
+    "wind_east": ("eastward_wind",),
+    "wind_north": ("northward_wind",),
+    "wind_speed": ("wind_speed",),
+}
+
+#: Grid-relative vector pairs and the east/north names they become.
+GRID_VECTORS = {
+    ("barotropic_sea_water_x_velocity", "barotropic_sea_water_y_velocity"):
+        ("barotropic_eastward_sea_water_velocity", "barotropic_northward_sea_water_velocity"),
+    ("x_sea_water_velocity", "y_sea_water_velocity"):
+        ("eastward_sea_water_velocity", "northward_sea_water_velocity"),
+    ("x_wind", "y_wind"): ("eastward_wind", "northward_wind"),
+}
+
+
+def coord_role(name: str, attrs: dict) -> str | None:
+    """'lat', 'lon', 'y' or 'x' for a coordinate, by its name or CF attributes."""
+    lname = str(name).lower()
+    std = str(attrs.get("standard_name", "")).lower()
+    units = str(attrs.get("units", "")).lower()
+    axis = str(attrs.get("axis", "")).upper()
+    if lname in LAT_NAMES or std == "latitude" or units in ("degrees_north", "degree_north", "degrees_n"):
+        return "lat"
+    if lname in LON_NAMES or std == "longitude" or units in ("degrees_east", "degree_east", "degrees_e"):
+        return "lon"
+    if lname in Y_NAMES or std == "projection_y_coordinate" or axis == "Y":
+        return "y"
+    if lname in X_NAMES or std == "projection_x_coordinate" or axis == "X":
+        return "x"
+    return None

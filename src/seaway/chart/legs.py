@@ -1,0 +1,98 @@
+"""The cost and land test of an arbitrary straight leg on a chart, consistent with the engine;
+computed in C++ (cpp/seaway/legs.hpp, _core.LegPricer), which also smooths (seaway.smooth).
+
+Points are fractional (row, col) pixel indices; pixel (i, j) is the closed square
+[i - 1/2, i + 1/2] x [j - 1/2, j + 1/2]. A leg is forbidden when the closed path touches the
+closed square of an impassable pixel or leaves the chart (the engine's land rule).
+
+Path of a leg: on planar charts the straight segment; on geographic charts the great circle
+between its ends, followed through lat/lon index space as a polyline with one vertex every
+<= 4 pixels (the chord of a 4-pixel piece departs from the arc by ~1e-3 pixel). A leg that is
+one of the engine's stencil steps (pixel centres, offset within the k x k square) is the
+engine's straight segment in index space, so it costs exactly what the engine charges.
+
+Cost of a leg: split the path at pixel boundaries into pieces of lengths l_k (great-circle km or
+planar units) inside pixels of cost u_k.
+* "integral": sum l_k u_k (the engine's exact line integral).
+* "max" / "mean": the engine's edge rule applied to the chain of pixels the leg crosses: the
+  move between consecutive pixels k, k+1 has length (l_k + l_(k+1))/2 (the first and last
+  half-pieces go to the first and last move) and costs max(u_k, u_(k+1)) or their mean per unit
+  length; a leg inside one pixel costs l_0 u_0. A stencil step of the engine costs what the
+  engine charges (max(u_i, u_j) r or (u_i + u_j)/2 r: only its two ends count).
+A piece lying exactly on a pixel boundary is charged the larger of the two sides.
+tests/reference_legs.py keeps the former numpy implementation as the check of the C++ one."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import _core
+from ..base import sphere as geo
+
+SUBDIVIDE = 4.0  # index-space length of the pieces a great-circle leg is followed by (legs.hpp)
+
+
+class Segments:
+    def __init__(self, chart, edge_cost: str = "integral", neighbourhood: int = 3):
+        self.chart, self.edge_cost, self.half = chart, edge_cost, (neighbourhood - 1) // 2
+        g = chart.grid
+        grid = _core.Grid()
+        for name in ("rows", "cols", "geographic", "dx", "dy", "lat0", "dlat", "lon0", "dlon"):
+            setattr(grid, name, getattr(g, name))
+        grid.wrap = bool(chart.geographic and g.wrap)
+        # reads chart.values and chart.land in place: NaN, inf, negative and land are impassable
+        self.pricer = _core.LegPricer(chart.values, chart.land, grid, edge_cost, self.half)
+
+    def coords(self, pts) -> np.ndarray:
+        return index_coords(self.chart, pts)
+
+    def is_step(self, p, q) -> bool:
+        d = np.abs(np.asarray(q, float) - p)
+        return bool(np.all(p == np.round(p)) and np.all(q == np.round(q)) and d.max() <= self.half)
+
+    def leg(self, p, q) -> tuple[float, float]:
+        """(cost, length) of the leg p -> q; (inf, length) if it is forbidden."""
+        return self.pricer.leg(float(p[0]), float(p[1]), float(q[0]), float(q[1]))
+
+    def cost(self, pts) -> float:
+        return float(sum(self.leg(a, b)[0] for a, b in zip(pts[:-1], pts[1:])))
+
+
+def leg_path(chart, p, q, straight: bool) -> np.ndarray:
+    """Vertices in index space of the leg p -> q: the straight segment (planar charts, engine
+    steps) or the great circle every <= SUBDIVIDE pixels (geographic charts)."""
+    p, q = np.asarray(p, float), np.asarray(q, float)
+    n_index = float(np.hypot(*(q - p)))
+    if not chart.geographic or straight or n_index <= SUBDIVIDE:
+        return np.array([p, q])
+    g = chart.grid
+    lat1, lon1 = g.lat0 + p[0] * g.dlat, g.lon0 + p[1] * g.dlon
+    lat2, lon2 = g.lat0 + q[0] * g.dlat, g.lon0 + q[1] * g.dlon
+    m = int(np.ceil(n_index / SUBDIVIDE))
+    lat, lon = geo.intermediate(lat1, lon1, lat2, lon2, np.linspace(0.0, 1.0, m + 1))
+    lon = geo.unwrap_lon(np.concatenate([[lon1], lon]))[1:]
+    lon += lon1 - lon[0]
+    path = np.column_stack([(lat - g.lat0) / g.dlat, (lon - g.lon0) / g.dlon])
+    last = q.copy()
+    if g.wrap:  # a leg across the seam of a 360-degree chart ends at q's column + a whole turn
+        cols = chart.shape[1]
+        last[1] += cols * np.round((path[-1, 1] - q[1]) / cols)
+    path[0], path[-1] = p, last
+    return path
+
+
+def index_coords(chart, pts) -> np.ndarray:
+    """(n, 2) lat/lon (longitude in the chart's convention) or y/x of fractional (row, col)."""
+    p = np.asarray(pts, float).reshape(-1, 2)
+    g = chart.grid
+    if chart.geographic:
+        lon = g.lon0 + p[:, 1] * g.dlon
+        lon = lon % 360.0 if np.nanmax(chart.lon) > 180 else geo.wrap_lon(lon)
+        return np.column_stack([g.lat0 + p[:, 0] * g.dlat, lon])
+    return np.column_stack([chart.y[0] + p[:, 0] * _step(chart.y, g.dy),
+                            chart.x[0] + p[:, 1] * _step(chart.x, g.dx)])
+
+
+def _step(v, default):
+    v = np.asarray(v, float)
+    return float((v[-1] - v[0]) / (v.size - 1)) if v.size > 1 else float(default)

@@ -1,0 +1,210 @@
+"""Turn what the user gives (numpy arrays or xarray DataArrays, with coordinates or cell sizes)
+into the engine's inputs: a C-contiguous float raster, a land mask and a `_core.Grid`.
+
+All validation happens here, so the C++ core only sees consistent input."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import _core
+from ..base.validate import number
+from .cf import coord_role
+
+
+@dataclass
+class Chart:
+    """A validated raster: cost values, land mask and grid geometry."""
+
+    values: np.ndarray  # (rows, cols) float32 or float64, C-contiguous
+    land: np.ndarray | None  # (rows, cols) uint8 or None
+    grid: _core.Grid
+    lat: np.ndarray | None = None  # pixel-centre latitudes (geographic grids)
+    lon: np.ndarray | None = None
+    y: np.ndarray | None = None  # pixel-centre y / x (planar grids)
+    x: np.ndarray | None = None
+    template: object = None  # the DataArray the cost came in, for DataArray results
+    lowest: float = float("nan")  # the smallest cost, NaN ignored (NaN: not known or all NaN)
+
+    @property
+    def geographic(self) -> bool:
+        return bool(self.grid.geographic)
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        return self.values.shape
+
+    def passable(self, rc) -> bool:
+        r, c = rc
+        u = self.values[r, c]
+        return bool(np.isfinite(u) and u >= 0 and (self.land is None or not self.land[r, c]))
+
+    @property
+    def axes(self) -> tuple[np.ndarray, np.ndarray]:
+        """The pixel-centre coordinates along rows and columns: (lat, lon) on geographic charts,
+        (y, x) on planar ones."""
+        a, b = (self.lat, self.lon) if self.geographic else (self.y, self.x)
+        if a is None or b is None:
+            raise ValueError("the chart has no pixel-centre coordinates")
+        return a, b
+
+    def pixel_coords(self, pixels: np.ndarray) -> np.ndarray:
+        """(n, 2) lat/lon (geographic) or y/x (planar) of pixel centres."""
+        a, b = self.axes
+        return np.column_stack([a[pixels[:, 0]], b[pixels[:, 1]]])
+
+
+def from_dataarray(da):
+    """Values in (row, col) order and the 1-D coordinates found along each dimension."""
+    if da.ndim != 2:
+        raise ValueError(
+            f"cost must be 2-D, got a DataArray with dims {da.dims}; select one time or level "
+            "first, e.g. da.isel(time=0)"
+        )
+    roles = {}
+    for dim in da.dims:
+        coord = da.coords.get(dim)
+        if coord is None:
+            continue
+        role = coord_role(dim, coord.attrs)
+        if role:
+            roles[role] = (dim, np.asarray(coord.values, dtype=float))
+    if "lat" in roles and "lon" in roles:
+        if da.dims.index(roles["lat"][0]) == 1:  # (lon, lat) order: make rows latitude
+            da = da.transpose(roles["lat"][0], roles["lon"][0])
+        return np.asarray(da.values), {"lat": roles["lat"][1], "lon": roles["lon"][1]}, da
+    if "y" in roles and "x" in roles:
+        if da.dims.index(roles["y"][0]) == 1:
+            da = da.transpose(roles["y"][0], roles["x"][0])
+        return np.asarray(da.values), {"y": roles["y"][1], "x": roles["x"][1]}, da
+    return np.asarray(da.values), {}, da
+
+
+def _regular_step(values: np.ndarray, name: str) -> float:
+    if values.ndim != 1:
+        raise ValueError(f"{name} must be 1-D (pixel centres along one axis), got shape {values.shape}")
+    if not np.all(np.isfinite(values)):
+        raise ValueError(f"{name} holds NaN or infinite values; give the pixel-centre coordinates")
+    if values.size < 2:
+        return 1.0  # a single row or column: no step along this axis is ever taken
+    steps = np.diff(values)
+    step = (values[-1] - values[0]) / (values.size - 1)
+    if step == 0 or np.max(np.abs(steps - step)) > 1e-6 * abs(step) + 1e-9:
+        worst = int(np.argmax(np.abs(steps - step)))
+        raise ValueError(
+            f"{name} is not regularly spaced (step {steps[worst]:g} at index {worst}, mean step "
+            f"{step:g}); resample the chart onto a regular grid first, e.g. with "
+            "DataArray.interp()"
+        )
+    return float(step)
+
+
+def _land_mask(land: np.ndarray) -> np.ndarray:
+    """The land mask as uint8 0/1: bool, or integers/floats holding only 0 (sea) and 1 (land).
+    Anything else (NaN, 2, 0.5, -1, strings) is refused rather than silently read as land."""
+    if land.dtype == np.bool_:
+        return land.view(np.uint8)
+    if not (np.issubdtype(land.dtype, np.integer) or np.issubdtype(land.dtype, np.floating)):
+        raise TypeError(f"land must be a boolean mask (True = land), got dtype {land.dtype}; "
+                        "give a bool array, or 0/1 integers or floats")
+    bad = (land != 0) & (land != 1)  # NaN compares unequal to both
+    if bad.any():
+        r, c = np.argwhere(bad)[0]
+        raise ValueError(
+            f"land must hold only 0 (sea) and 1 (land), got {int(bad.sum())} other value(s), e.g. "
+            f"{land[r, c]!r} at pixel ({r}, {c}); give a bool mask, e.g. land=np.isnan(mask) | "
+            "(mask > 0.5) to say how such values should be read")
+    return (land == 1).astype(np.uint8)
+
+
+def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negative=False) -> Chart:
+    """Validate the user's raster and coordinates and build the engine's view of them."""
+    template = None
+    coords: dict = {}
+    if hasattr(cost, "dims") and hasattr(cost, "coords"):  # an xarray.DataArray
+        values, coords, template = from_dataarray(cost)
+    else:
+        values = np.asarray(cost)
+    if lat is not None or lon is not None:
+        if lat is None or lon is None:
+            raise ValueError("give both lat and lon (1-D pixel-centre coordinates), or neither")
+        coords = {"lat": np.asarray(lat, dtype=float), "lon": np.asarray(lon, dtype=float)}
+    if values.ndim != 2:
+        raise ValueError(
+            f"cost must be a 2-D raster, got shape {values.shape}; give one (rows, cols) layer, "
+            "e.g. cost[0] for the first time step"
+        )
+    if values.shape[0] < 1 or values.shape[1] < 1:
+        raise ValueError(f"cost is empty (shape {values.shape}); give at least one pixel")
+    if values.size >= 2**32 - 1:
+        raise ValueError(f"the chart has {values.size} pixels; the engine handles fewer than 2**32")
+    if values.dtype == np.bool_ or not np.issubdtype(values.dtype, np.number) or np.iscomplexobj(values):
+        raise TypeError(f"cost must hold real numbers, got dtype {values.dtype}")
+    if values.dtype not in (np.float32, np.float64):
+        values = values.astype(np.float64)
+    # C order and aligned (an array unpickled from a buffer, e.g. on a Dask worker, may sit at
+    # an odd address: the engine reads doubles in place, which needs alignment).
+    values = np.require(values, requirements=["C_CONTIGUOUS", "ALIGNED"])
+    lowest = float(np.fmin.reduce(values, axis=None))  # one pass, no temporary array
+    if not allow_negative and lowest < 0:
+        negative = values < 0
+        if negative.any():
+            r, c = np.argwhere(negative)[0]
+            raise ValueError(
+                f"cost has {int(negative.sum())} negative value(s), e.g. {values[r, c]:g} at pixel "
+                f"({r}, {c}); costs must be >= 0: mark impassable pixels with np.inf (or NaN) or "
+                "pass them in the land mask"
+            )
+
+    rows, cols = values.shape
+    mask = None
+    if land is not None:
+        if hasattr(land, "dims") and template is not None and set(land.dims) == set(template.dims):
+            land = land.transpose(*template.dims)  # same (row, col) order as the cost
+        land_arr = np.asarray(land.values if hasattr(land, "dims") else land)
+        if land_arr.shape != values.shape:
+            raise ValueError(f"land has shape {land_arr.shape} but cost has shape {values.shape}; give a mask of the same shape")
+        mask = np.ascontiguousarray(_land_mask(land_arr))
+
+    grid = _core.Grid()
+    grid.rows, grid.cols = rows, cols
+    chart = Chart(values=values, land=mask, grid=grid, template=template, lowest=lowest)
+    if "lat" in coords:
+        la, lo = coords["lat"], coords["lon"]
+        if la.shape != (rows,) or lo.shape != (cols,):
+            raise ValueError(
+                f"lat has {la.size} values and lon {lo.size}, but the cost has {rows} rows and "
+                f"{cols} columns; give one latitude per row and one longitude per column"
+            )
+        lo_grid = lo
+        if lo.size > 1 and np.all(np.isfinite(lo)) and np.any(np.abs(np.diff(lo)) > 180):
+            # labelled across the antimeridian (..., 170, -180, -170, ...): make it continuous
+            lo_grid = lo[0] + np.concatenate([[0.0], np.cumsum((np.diff(lo) + 180) % 360 - 180)])
+        dlat, dlon = _regular_step(la, "lat"), _regular_step(lo_grid, "lon")
+        if np.any(np.abs(la) > 90):
+            raise ValueError("lat must lie within [-90, 90] degrees")
+        span = abs(dlon) * cols
+        if span > 360 * (1 + 1e-9):
+            raise ValueError(f"lon spans {span:g} degrees; a chart covers at most 360 degrees of longitude")
+        grid.geographic = True
+        grid.lat0, grid.dlat, grid.lon0, grid.dlon = float(la[0]), dlat, float(lo[0]), dlon
+        grid.wrap = bool(abs(span - 360) < 1e-6 * 360)
+        if grid.wrap and cols < 16:
+            raise ValueError("a chart that wraps around the globe needs at least 16 columns")
+        chart.lat, chart.lon = la, lo
+    else:
+        if "y" in coords:
+            dy, dx = abs(_regular_step(coords["y"], "y")), abs(_regular_step(coords["x"], "x"))
+            chart.y, chart.x = coords["y"], coords["x"]
+        dx = number(dx, "dx", above=0, what="a positive cell size", example=1.0)
+        dy = number(dy, "dy", above=0, what="a positive cell size", example=1.0)
+        for name, v, n in (("dx", dx, cols), ("dy", dy, rows)):
+            if not v * n < 1e306:
+                raise ValueError(f"{name} = {v!r} is too large a cell size: the chart would span "
+                                 f"{v * n:g} units; rescale the cell sizes")
+        grid.dx, grid.dy = float(dx), float(dy)
+        if chart.y is None:
+            chart.y, chart.x = np.arange(rows) * float(dy), np.arange(cols) * float(dx)
+    return chart

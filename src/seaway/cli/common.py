@@ -1,0 +1,85 @@
+"""What the commands share: argument types, the exit-status epilog, progress on stderr."""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import sys
+import time
+
+import numpy as np
+
+from ..base.interrupt import SettledProgress, reporting
+
+#: The exact methods a command may be asked for.
+CLI_METHODS = ("auto", "bidirectional", "astar", "dijkstra")
+EPILOG = ("exit status: 0 done; 1 no route, or a chart or output file that cannot be used; "
+          "2 a bad command line. Progress goes to stderr, results to stdout.")
+
+
+def point(text: str) -> tuple[float, float]:
+    """argparse type for LAT,LON."""
+    try:
+        a, b = (float(v) for v in text.replace(" ", "").split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(
+            f"expected LAT,LON in decimal degrees (e.g. 70.3,58.5; write --from=-33.9,18.4 for a "
+            f"negative first number), got {text!r}") from None
+    if not (np.isfinite(a) and np.isfinite(b)):
+        raise argparse.ArgumentTypeError(f"LAT,LON must be finite numbers, got {text!r}")
+    return a, b
+
+
+def grid(text: str) -> tuple:
+    """argparse type for SOUTH,NORTH,WEST,EAST,RES (degrees)."""
+    try:
+        south, north, west, east, res = (float(v) for v in text.replace(" ", "").split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(
+            f"expected SOUTH,NORTH,WEST,EAST,RES in degrees (e.g. 58,64,-55,-37,0.02), got {text!r}") from None
+    if not (south < north and west < east and res > 0):
+        raise argparse.ArgumentTypeError(f"need SOUTH < NORTH, WEST < EAST and RES > 0, got {text!r}")
+    return south, north, west, east, res
+
+
+def size(text: str) -> tuple[int, int]:
+    try:
+        r, c = (int(v) for v in text.lower().split("x"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected ROWSxCOLS, e.g. 950x1150, got {text!r}") from None
+    if r < 20 or c < 20:
+        raise argparse.ArgumentTypeError(f"the chart must be at least 20x20, got {text!r}")
+    return r, c
+
+
+class Progress:
+    """Stage messages with their time on stderr (silent with --quiet)."""
+
+    def __init__(self, command: str, quiet: bool):
+        self.command, self.quiet, self.t0 = command, quiet, time.perf_counter()
+
+    def __call__(self, message: str) -> None:
+        if not self.quiet:
+            print(f"seaway {self.command}: [{time.perf_counter() - self.t0:6.1f} s] {message}",
+                  file=sys.stderr, flush=True)
+
+
+def searching(say, pixels: int):
+    """Within the block, a running search reports the pixels it has settled once a second."""
+    return contextlib.nullcontext() if say.quiet else reporting(SettledProgress(say, pixels))
+
+
+def tell(message: str) -> None:
+    """What changed the voyage (a snapped end): on stderr even with --quiet."""
+    print(f"seaway route: {message}", file=sys.stderr, flush=True)
+
+
+def neighbourhood(text: str) -> int:
+    """argparse type for the k of the k x k stencil."""
+    try:
+        k = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be an odd integer from 3 to 15, got {text!r}") from None
+    if k < 3 or k > 15 or k % 2 == 0:
+        raise argparse.ArgumentTypeError(f"must be an odd integer from 3 to 15, got {k}")
+    return k

@@ -1,0 +1,152 @@
+"""The `seaway route` command: a route across a chart file, printed, written and plotted."""
+
+from __future__ import annotations
+
+from ..engine.api import route
+from ..errors import NoRouteError
+from ..models import EDGE_COSTS
+from ..output import export
+from ..output.plot import plot_route
+from .chartfile import open_chart
+from .common import (
+    CLI_METHODS,
+    EPILOG,
+    Progress,
+    grid,
+    neighbourhood,
+    point,
+    searching,
+    tell,
+)
+from .constraints import add_constraint_options, constraint_options
+from .depth import for_route, why_no_route
+from .ends import check_ends
+
+
+def run_route(args) -> int:
+    say = Progress("route", args.quiet)
+    say(f"reading {args.chart}")
+    data = open_chart(args.chart, variable=args.variable, vessel=args.vessel,
+                      land_variable=args.land_variable, grid=args.grid,
+                      ends=(args.start, args.end))
+    for note in data.notes:
+        say(note)
+    cost = data.cost
+    start, end = args.start, args.end
+    if not ("lat" in cost.coords or "latitude" in cost.coords):
+        say("the chart has projected y/x coordinates: --from and --to are ROW,COL pixel indices")
+    chart_cost = cost
+    cost, depth, shallow = for_route(args.depth, cost, draft=args.draft, ukc=args.ukc,
+                                     variable=args.depth_variable, positive=args.depth_positive,
+                                     say=say, crs=getattr(data.layers, "attrs", {}).get("crs"))
+    start, end = check_ends(cost, data.land, data.layers, (start, end), vessel=args.vessel,
+                            snap=args.snap, say=tell, neighbourhood=args.neighbourhood,
+                            reasons=shallow, chart_cost=chart_cost)
+    rows, cols = cost.shape
+    say(f"routing on {rows} x {cols} pixels ({data.description}; {args.method}, "
+        f"{args.neighbourhood}x{args.neighbourhood} stencil, edge cost {args.edge_cost})")
+    constraints = constraint_options(args)  # seaway.cli.constraints
+    for name, value in constraints.items():
+        if value not in (None, []):
+            say(f"constraint {name}: {value if name != 'zones' else [z.name for z in value]}")
+    try:
+        # With a turn penalty the search settles (pixel, incoming step) states: scale the total.
+        states = args.neighbourhood ** 2 - 1 if constraints["turn_penalty"] is not None else 1
+        with searching(say, rows * cols * states):
+            r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
+                      edge_cost=args.edge_cost, method=args.method, **constraints)
+    except NoRouteError as exc:
+        if shallow is None:
+            raise
+        why = why_no_route(chart_cost, data.land, depth, start, end, args.draft, args.ukc)
+        raise NoRouteError(f"{exc}; {why}") from None
+    say(f"found: cost {r.cost:.6g}, {len(r.pixels)} pixels, {r.stats['settled']} settled")
+    if constraints["via"] or constraints["turn_penalty"] is not None:
+        say("not smoothed: smoothing would cut the via-points or ignore the turn penalty")
+    elif not args.no_smooth:
+        say(f"smoothing {r.course_changes} course changes")
+        r = r.smoothed()
+        say(f"smoothed: cost {r.stats['cost_before']:.6g} -> {r.cost:.6g}, course changes "
+            f"{r.stats['course_changes_before']} -> {r.stats['course_changes_after']}")
+    r.name = args.name
+    r.speed_kn = args.speed
+    if data.environment:
+        r = r.with_environment(data.environment)
+    if depth is not None:  # --depth, over a chart's own depth variable
+        r = r.with_environment({"depth": depth})
+    print(r)
+    for path in args.out or []:
+        fmt = export.write(r, path)
+        say(f"wrote {path} ({fmt})")
+    if args.plot:
+        plot_route(r, args.plot, title=f"{args.name}: {data.description}")
+        say(f"wrote {args.plot} (PNG)")
+    return 0
+
+
+def add_route_command(commands) -> None:
+    rp = commands.add_parser(
+        "route", help="route a ship across a chart file and print, write and plot the route",
+        description="Find the least-cost route across CHART from --from to --to, smooth it, print "
+                    "its legs (course, distance, time, cost, ice along each leg) and optionally "
+                    "write it (GeoJSON, GPX, RTZ, CSV) and plot it (PNG).", epilog=EPILOG)
+    rp.add_argument("chart", metavar="CHART",
+                    help="chart file: NetCDF (.nc), GeoTIFF (.tif, needs rasterio), SIGRID-3 "
+                         "(.shp/.gpkg, needs seaway.ice.sigrid), or 'kara' for the built-in "
+                         "synthetic Kara Sea chart")
+    rp.add_argument("--from", dest="start", type=point, required=True, metavar="LAT,LON",
+                    help="start in decimal degrees (ROW,COL on charts with projected y/x)")
+    rp.add_argument("--to", dest="end", type=point, required=True, metavar="LAT,LON",
+                    help="end in decimal degrees (ROW,COL on charts with projected y/x)")
+    rp.add_argument("--vessel", metavar="CLASS",
+                    help="ice class (e.g. Arc7, Arc5): turns the chart's stage of development "
+                         "into paper 000's impact (default Arc7 on stage charts)")
+    rp.add_argument("--variable", metavar="NAME",
+                    help="chart variable holding the cost per unit length (NaN/inf impassable); "
+                         "GeoTIFF: the band number (default 1)")
+    rp.add_argument("--land-variable", metavar="NAME",
+                    help="chart variable holding the land mask (default: 'land' if present)")
+    rp.add_argument("--grid", type=grid, metavar="S,N,W,E,RES",
+                    help="lat/lon grid (degrees) to rasterise a SIGRID-3 chart onto (default: the "
+                         "box around the great circle between the ends, widened by a quarter of "
+                         "its length (at least 300 km), at 0.05 deg of latitude and the same km "
+                         "east-west, clipped to the chart; see seaway.ice.routegrid)")
+    rp.add_argument("--depth", metavar="FILE",
+                    help="bathymetry raster (NetCDF or GeoTIFF on lat/lon; ETOPO/GEBCO elevation "
+                         "or depth positive down, told by the CF attributes): resampled onto the "
+                         "chart (the shallowest depth in each pixel); the route's least depth is "
+                         "reported")
+    rp.add_argument("--draft", type=float, metavar="M",
+                    help="the ship's draft in metres: pixels shallower than draft + UKC are "
+                         "impassable (needs --depth)")
+    rp.add_argument("--ukc", type=float, metavar="M",
+                    help="under-keel clearance in metres (default 10 %% of the draft)")
+    rp.add_argument("--depth-variable", metavar="NAME",
+                    help="the bathymetry file's variable (default: found by CF standard name)")
+    rp.add_argument("--depth-positive", choices=("up", "down"),
+                    help="override the bathymetry's sign: up = elevation (ETOPO/GEBCO), down = "
+                         "depth (default: from its CF attributes, else guessed and said so)")
+    rp.add_argument("--neighbourhood", type=neighbourhood, default=5, metavar="K",
+                    help="k of the k x k stencil: odd, 3 to 15 (default 5, as in paper 000)")
+    rp.add_argument("--edge-cost", default="max", choices=tuple(EDGE_COSTS),
+                    help="step cost: max (paper 000), mean (paper 003) or integral (exact line "
+                         "integral); default max")
+    rp.add_argument("--method", default="auto", choices=CLI_METHODS,
+                    help="search algorithm (all exact; default auto: the fastest for the query)")
+    rp.add_argument("--no-smooth", action="store_true",
+                    help="keep the raw pixel route (default: any-angle smoothing, never costlier)")
+    rp.add_argument("--snap", action="store_true",
+                    help="move a start or end on land, in ice the class may not enter or in too "
+                         "shallow water to the nearest pixel the ship can reach from the other end "
+                         "(default: stop with an error naming why, that point and its distance)")
+    add_constraint_options(rp, point)
+    rp.add_argument("--speed", type=float, metavar="KN",
+                    help="speed in knots: adds each leg's time and the voyage time")
+    rp.add_argument("--name", default="seaway route", help="route name in the outputs")
+    rp.add_argument("--out", action="append", metavar="FILE",
+                    help="write the route; the extension picks the format: .geojson/.json, .gpx, "
+                         ".rtz (IEC 61174, for ECDIS), .csv, .html (interactive map, offline; "
+                         "needs seaway[plot]); may be repeated")
+    rp.add_argument("--plot", metavar="PNG",
+                    help="draw the chart, land and route to a PNG (needs seaway[plot])")
+    rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")

@@ -1,0 +1,123 @@
+"""The `seaway season` command: the quickest route through a season of dated ice charts
+(seaway.ice.season, seaway.models.IceSeasonTime)."""
+
+from __future__ import annotations
+
+import argparse
+import os
+
+import numpy as np
+
+from ..ice.grids import latlon_grid
+from ..ice.season import SeasonGrid, read_season
+from ..models import IceSeasonTime
+from ..output import export
+from .common import EPILOG, Progress, grid, neighbourhood, point
+
+
+def dated_chart(text: str) -> tuple[str, str]:
+    """argparse type for DATE=FILE."""
+    date, sep, path = text.partition("=")
+    if not sep or not date or not path:
+        raise argparse.ArgumentTypeError(f"expected DATE=FILE (e.g. 2026-07-01=aari_0701.shp), got {text!r}")
+    try:
+        np.datetime64(date, "s")
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{date!r} is not a date (e.g. 2026-07-01 or "
+                                         "2026-07-01T12)") from None
+    return date, path
+
+
+def speed_table(text: str) -> dict:
+    """argparse type for STAGE:KN,... (WMO stage codes, knots)."""
+    try:
+        pairs = [item.split(":") for item in text.replace(" ", "").split(",")]
+        return {int(s): float(v) for s, v in pairs}
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected STAGE:KNOTS,... (e.g. 55:14,87:7,91:3,93:0), "
+                                         f"got {text!r}") from None
+
+
+def _season(args):
+
+    if len(args.charts) == 1 and "=" not in args.charts[0]:
+        path = args.charts[0]
+        if not os.path.exists(path):
+            raise ValueError(f"{path}: no such file")
+        return SeasonGrid(path)
+    charts = []
+    for text in args.charts:
+        try:
+            charts.append(dated_chart(text))
+        except argparse.ArgumentTypeError as exc:
+            raise ValueError(f"{exc}; or give one NetCDF file with a time dimension") from None
+    for _, path in charts:
+        if not os.path.exists(path):
+            raise ValueError(f"{path}: no such file")
+    if args.grid is None:
+        raise ValueError("give the lat/lon grid to rasterise the charts onto: --grid "
+                         "SOUTH,NORTH,WEST,EAST,RES (degrees)")
+
+    return SeasonGrid(read_season(charts, latlon_grid(*args.grid)))
+
+
+def run_season(args) -> int:
+
+    say = Progress("season", args.quiet)
+    say(f"reading {len(args.charts)} chart file(s)")
+    season = _season(args)
+    t = season.times
+    say(f"{t.size} charts from {t[0]} to {t[-1]} on {season.shape[0]} x {season.shape[1]} pixels")
+    speed = "andreeva" if args.speed_table is None else args.speed_table
+    model = IceSeasonTime(season, args.vessel, args.speed, departure=args.depart, speed=speed,
+                          concentration_limit=not args.no_concentration_limit)
+    say(f"routing {model.ice_class} at {args.speed:g} kn from {model.departure} "
+        f"({args.neighbourhood}x{args.neighbourhood} stencil, waiting allowed)")
+    r = season.prepare(args.neighbourhood).route(args.start, args.end, model=model, method=args.method)
+    r.name = args.name
+    st = r.stats
+    print(r)
+    print(f"departure {st['departure']}, arrival {str(st['arrival'])[:16]}: {r.cost:.2f} h "
+          f"({r.cost / 24:.2f} days), {st['hours_under_way']:.2f} h under way, "
+          f"{st['hours_waiting']:.2f} h waiting; charts used: "
+          + ", ".join(str(d)[:16] for d in st["charts_used"]))
+    for _, (a, b), since, hours in st["waits"]:
+        print(f"  wait {hours:.2f} h at {a:.4f}, {b:.4f} from {str(since)[:16]}")
+    for path in args.out or []:
+        say(f"wrote {path} ({export.write(r, path)})")
+    return 0
+
+
+def add_season_command(commands) -> None:
+    sp = commands.add_parser(
+        "season", help="the quickest route through a season of dated ice charts",
+        description="Find the earliest-arriving route through a time series of ice charts: each "
+                    "step crosses the chart valid when the ship is there, at the class's speed "
+                    "(paper 002's V = F x V0, or --speed-table); the ship may wait for the ice "
+                    "to clear (the route lists its waits).", epilog=EPILOG)
+    sp.add_argument("charts", nargs="+", metavar="DATE=CHART",
+                    help="SIGRID-3 charts with the date each is valid from (2026-07-01=a.shp "
+                         "2026-07-02=b.shp ...), or one NetCDF file with a time dimension of CT "
+                         "(or sea_ice_area_fraction) and SA or thickness")
+    sp.add_argument("--from", dest="start", type=point, required=True, metavar="LAT,LON",
+                    help="start in decimal degrees (ROW,COL on charts with projected y/x)")
+    sp.add_argument("--to", dest="end", type=point, required=True, metavar="LAT,LON",
+                    help="end in decimal degrees (ROW,COL on charts with projected y/x)")
+    sp.add_argument("--vessel", default="Arc7", metavar="CLASS", help="ice class (default Arc7)")
+    sp.add_argument("--speed", type=float, default=12.0, metavar="KN",
+                    help="open-water speed in knots (default 12)")
+    sp.add_argument("--depart", metavar="DATE", help="departure (default the first chart's date)")
+    sp.add_argument("--speed-table", type=speed_table, metavar="STAGE:KN,...",
+                    help="speeds per WMO stage instead of paper 002 (55 is open water)")
+    sp.add_argument("--no-concentration-limit", action="store_true",
+                    help="let the class enter ice above its independent-navigation concentration")
+    sp.add_argument("--grid", type=grid, metavar="S,N,W,E,RES",
+                    help="lat/lon grid (degrees) to rasterise SIGRID-3 charts onto (required for them)")
+    sp.add_argument("--neighbourhood", type=neighbourhood, default=5, metavar="K",
+                    help="k of the k x k stencil: odd, 3 to 15 (default 5)")
+    sp.add_argument("--method", default="astar", choices=("astar", "dijkstra"),
+                    help="search algorithm (both exact; default astar)")
+    sp.add_argument("--name", default="seaway season route", help="route name in the outputs")
+    sp.add_argument("--out", action="append", metavar="FILE",
+                    help="write the route (.geojson, .gpx, .rtz, .csv); may be repeated")
+    sp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")

@@ -1,0 +1,65 @@
+"""The one-call API: prepare(), route() and cost_field() build a PreparedChart and ask it."""
+
+from __future__ import annotations
+
+from ..result.route import Route
+from . import methods
+from .prepared import PreparedChart
+
+
+def prepare(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
+            directions="full", edge_cost="max", landmarks=0, keep_away=(), zones=()) -> PreparedChart:
+    """Validate and prepare a chart once for many routes; arguments as in route().
+    landmarks=N (optional) also tabulates N landmarks for edge_cost (4 N bytes per pixel), so
+    that later exact queries run A* with the landmark bound (PreparedChart.prepare_landmarks)."""
+    return PreparedChart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land,
+                         neighbourhood=neighbourhood, directions=directions, edge_cost=edge_cost,
+                         landmarks=landmarks, keep_away=keep_away, zones=zones)
+
+
+def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
+          directions="full", edge_cost="max", method="auto", weight=None, via=(),
+          turn_penalty=None, keep_away=(), zones=()) -> Route:
+    """The least-cost route from `start` to `end` over the raster `cost`.
+
+    cost: 2-D numpy array or xarray.DataArray of cost per unit length (>= 0; inf or NaN is
+        impassable). DataArray coordinates named lat/lon, latitude/longitude or y/x, or marked
+        by CF attributes, are used.
+    start, end: (lat, lon) in degrees on geographic charts, (row, col) on planar charts.
+    lat, lon: 1-D regularly spaced pixel-centre coordinates (makes the chart geographic:
+        steps are great-circle distances in km).
+    dx, dy: cell sizes of a planar chart (default 1).
+    land: boolean mask of impassable pixels, same shape as cost.
+    neighbourhood: k of the k x k stencil (odd, 3..15).
+    directions: "full" (every offset of the square) or "unique" (only offsets with
+        gcd(|di|, |dj|) = 1).
+    edge_cost: one of seaway.models.EDGE_COSTS: "max" (paper 000), "mean" (paper 003) or
+        "integral" (exact line integral).
+    method: "auto" (default: the fastest exact method for the query), "dijkstra", "astar",
+        "bidirectional" or "landmarks" (exact; see seaway.engine.methods); "astar" with weight=w > 1
+        is weighted A* (cost <= w x optimum).
+    via: points the route must pass, in order; each leg between consecutive points is optimal.
+    turn_penalty: cost (in the route's units) per degree of course change, or a table
+        {angle_deg: cost} linear between its points; searched exactly over (pixel, last step)
+        by Dijkstra (method "dijkstra") or A* (any other exact method).
+    keep_away: seaway.constraints.KeepAway buffers from land or severe ice (hard and soft).
+    zones: seaway.constraints.Zone exclusion or penalty areas (polygons).
+
+    For many routes on one chart, prepare it once with seaway.prepare().
+    """
+    methods.heuristic_weight(method, weight)  # reject a bad method before the chart is prepared
+    return prepare(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, neighbourhood=neighbourhood,
+                   directions=directions, edge_cost=edge_cost, keep_away=keep_away,
+                   zones=zones).route(start, end, method=method, weight=weight, via=via,
+                                      turn_penalty=turn_penalty)
+
+
+def cost_field(cost, start, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
+               directions="full", edge_cost="max", keep_away=(), zones=()):
+    """The accumulated least cost from `start` to every pixel (inf where unreachable).
+
+    Takes the same arguments as route() (no via points or turn penalty: a field has no single
+    path). A DataArray in gives a DataArray out, on the same coordinates."""
+    return prepare(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, neighbourhood=neighbourhood,
+                   directions=directions, edge_cost=edge_cost, keep_away=keep_away,
+                   zones=zones).cost_field(start)

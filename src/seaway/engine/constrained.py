@@ -1,0 +1,144 @@
+"""Query-time constraints: via-points (an ordered list of waypoints, each leg optimal) and the
+turn penalty (the expanded-state search of cpp/seaway/turns.hpp). Used by PreparedChart.route."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import _core
+from ..base.interrupt import interruptible
+from ..chart.locate import locate
+from ..models.base import TurnPenalised
+from ..result.route import Route
+from .methods import EDGE_COST_NAMES
+from .result import Search, SearchStats, no_route
+
+
+def turn_table(turn_penalty) -> tuple[list[float], list[float]] | None:
+    """(angles in degrees, costs) of a turn penalty given as a cost per degree of course change
+    (a number) or a table {angle_deg: cost} / [(angle_deg, cost), ...], linear between its
+    points and flat beyond them; None for no penalty."""
+    if turn_penalty is None:
+        return None
+    if isinstance(turn_penalty, bool):
+        raise TypeError("turn_penalty must be a cost per degree or a table {angle_deg: cost}, got a bool")
+    if isinstance(turn_penalty, (int, float, np.integer, np.floating)):
+        p = float(turn_penalty)
+        if not (math.isfinite(p) and p >= 0):
+            raise ValueError(f"turn_penalty per degree must be finite and >= 0, got {turn_penalty!r}")
+        return [0.0, 180.0], [0.0, 180.0 * p]
+    items = turn_penalty.items() if isinstance(turn_penalty, dict) else turn_penalty
+    try:
+        pairs = sorted((float(a), float(c)) for a, c in items)
+    except (TypeError, ValueError):
+        raise TypeError("turn_penalty must be a cost per degree or a table {angle_deg: cost} "
+                        f"(e.g. {{0: 0, 45: 2, 90: 10, 180: 40}}), got {turn_penalty!r}") from None
+    if not pairs:
+        raise ValueError("turn_penalty table is empty; give e.g. {0: 0, 90: 10, 180: 40}")
+    angles, costs = [a for a, _ in pairs], [c for _, c in pairs]
+    if len(set(angles)) != len(angles):
+        raise ValueError(f"turn_penalty table repeats an angle: {angles}")
+    if angles[0] < 0 or angles[-1] > 180:
+        raise ValueError(f"turn_penalty angles must lie in 0..180 degrees, got {angles}")
+    if not all(math.isfinite(c) and c >= 0 for c in costs):
+        raise ValueError(f"turn_penalty costs must be finite and >= 0, got {costs}")
+    if angles[0] > 0:
+        angles, costs = [0.0] + angles, [costs[0]] + costs
+    if angles[-1] < 180:
+        angles, costs = angles + [180.0], costs + [costs[-1]]
+    return angles, costs
+
+
+def incoming_offset(prepared, pixels: np.ndarray) -> int:
+    """The stencil index of a path's last step (for the next leg's first turn), or -1."""
+    if len(pixels) < 2:
+        return -1
+    di, dj = (int(v) for v in pixels[-1] - pixels[-2])
+    cols = prepared.chart.shape[1]
+    if prepared.chart.grid.wrap:
+        dj = (dj + cols // 2) % cols - cols // 2
+    return _core.offset_index(prepared.router, di, dj)
+
+
+def via_list(via) -> list:
+    """The via points as a list of points (a single point is refused: it is ambiguous)."""
+    if via is None:
+        return []
+    if isinstance(via, np.ndarray):
+        via = via.tolist()
+    if not isinstance(via, (list, tuple)):
+        raise TypeError(f"via must be a list of points ((lat, lon) or (row, col)), got {type(via).__name__}")
+    if len(via) == 2 and all(isinstance(v, (int, float, np.integer, np.floating)) for v in via):
+        raise TypeError(f"via must be a list of points, got one point {tuple(via)}; write via=[{tuple(via)}]")
+    return list(via)
+
+
+def _check_turn_model(model):
+    if not model.turn_penalty:
+        raise ValueError(
+            f"turn_penalty works with the static edge costs {EDGE_COST_NAMES}, not the {model.name!r} "
+            "model (a time, fuel or danger cost would need its own penalty units and, for time, a "
+            "clock that the penalty would shift); route without turn_penalty, or on a static cost")
+
+
+def search_leg(prepared, s, e, weight, model, turns, incoming, method="astar") -> Search:
+    """The search of one leg between located pixels; `method` as resolved by
+    seaway.engine.methods. The turn search is Dijkstra for "dijkstra" and A* (weighted if asked)
+    for every other method: it has no bidirectional or landmark form."""
+    if turns is None:
+        return prepared.search(s, e, weight, model, method)
+    weight = 0.0 if method == "dijkstra" else (weight if method == "astar" else 1.0)
+    engine = model.engine(prepared)
+    angles, costs = turns
+    return Search.from_core(interruptible(lambda cancel: _core.route_turns(
+        prepared.router, engine, prepared.flat(s), prepared.flat(e), weight, angles, costs,
+        incoming, cancel)))
+
+
+def route_constrained(prepared, start, end, model, method, weight, via, turn_penalty):
+    """PreparedChart.route with via points and/or a turn penalty: one search per leg, each
+    optimal between consecutive points; with a turn penalty, a leg starts with the previous
+    leg's last step, so the course change at a via point is charged. A time model's next leg
+    departs when the previous one arrives (model.later)."""
+    turns = turn_table(turn_penalty)
+    if turns is not None:
+        _check_turn_model(model)
+    chart = prepared.chart
+    points = [start, *via_list(via), end]
+    names = ["start"] + [f"via point {i + 1}" for i in range(len(points) - 2)] + ["end"]
+    located = [locate(chart, p, n) for p, n in zip(points, names)]
+    if len(located) > 2 and model.time_dependent and not model.chainable:
+        raise ValueError(f"via points on a {model.name!r} route need each leg to depart when the "
+                         "last one arrives, which this model cannot do yet; route the legs one by "
+                         "one with their departures")
+    pixels, steps, per_step = np.zeros((0, 2), np.int64), [], {}
+    figures = SearchStats()
+    leg_model, elapsed = model, 0.0
+    for i, (s, e) in enumerate(zip(located[:-1], located[1:])):
+        incoming = -1 if turns is None else incoming_offset(prepared, pixels)
+        if i and model.chainable:
+            leg_model = model.later(elapsed)
+        leg_model.check_ends(prepared, s, e)
+        found = search_leg(prepared, s, e, weight, leg_model, turns, incoming, method)
+        if not found.found:
+            raise no_route(prepared, model, ((names[i], s), (names[i + 1], e)))
+        elapsed += found.cost
+        leg = found.pixels(chart.shape[1])
+        pixels = leg if i == 0 else np.concatenate([pixels, leg[1:]])
+        steps.append(np.diff(found.cumulative))
+        for k, v in found.per_step.items():
+            per_step[k] = np.concatenate([per_step[k], v]) if k in per_step else np.asarray(v)
+        figures = found.stats if i == 0 else figures.plus(found.stats)
+    stats = figures.as_dict()
+    if len(located) > 2:
+        stats["via_pixels"] = [tuple(p) for p in located[1:-1]]
+    if turns is not None:
+        stats["turn_penalty"] = dict(zip(*turns))
+    step_costs = np.concatenate(steps)
+    route = Route(chart=chart, cost=float(step_costs.sum()), pixels=pixels, method=method,
+                  neighbourhood=prepared.neighbourhood,
+                  model=model if turns is None else TurnPenalised(model.name), stats=stats,
+                  step_costs=step_costs)
+    return model.finish(route, per_step)

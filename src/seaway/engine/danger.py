@@ -1,0 +1,62 @@
+"""Paper 004's fallback when every route crosses danger: the route that spends the least time in
+the forecast's danger zones (wind above Vessel.danger_wind_ms, waves above
+Vessel.danger_wave_m), then the least total time, flagged and with the stretches in danger
+listed. Called by seaway.weather.route_time (cpp/seaway/danger_time.hpp searches)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import _core
+from ..base.interrupt import interruptible
+from ..chart.locate import locate
+from ..constraints import timed_zone_engine
+from .methods import heuristic_weight
+from .result import Search, to_route
+
+
+def danger_stretches(route, danger_h, start_h) -> list[dict]:
+    """Consecutive steps in danger merged: where (from, to as lat/lon), when (hours after
+    departure) and for how long (hours)."""
+    coords = route.coords
+    elapsed = np.concatenate([[0.0], np.cumsum(route.step_costs)]) + start_h
+    out, i, n = [], 0, len(danger_h)
+    while i < n:
+        if danger_h[i] <= 0:
+            i += 1
+            continue
+        j = i
+        while j + 1 < n and danger_h[j + 1] > 0:
+            j += 1
+        out.append({"from": tuple(map(float, coords[i])), "to": tuple(map(float, coords[j + 1])),
+                    "start_h": float(elapsed[i]), "hours": float(np.sum(danger_h[i:j + 1])),
+                    "steps": (i, j + 1)})
+        i = j + 1
+    return out
+
+
+def least_danger_route(prepared, model, start, end, method):
+    """The lexicographic (hours in danger, hours) route under a TravelTime model (its zones
+    included), or None when even the hard limits leave no route."""
+    fc, vessel = model.forecast, model.vessel
+    chart = prepared.chart
+    s, e = locate(chart, start, "start"), locate(chart, end, "end")
+    hard = _core.TravelTimeModel(fc.engine(), vessel.to_core(danger=False), model.best_speed_kn)
+    if model.zones:
+        hard = timed_zone_engine(fc, hard, model.zones)
+    wind = np.inf if vessel.danger_wind_ms is None else float(vessel.danger_wind_ms)
+    wave = np.inf if vessel.danger_wave_m is None else float(vessel.danger_wave_m)
+    w = heuristic_weight(method, None)
+    result, danger_h = interruptible(
+        lambda cancel: _core.route_least_danger(prepared.router, hard, wind, wave,
+                                                prepared.flat(s), prepared.flat(e), w, cancel))
+    found = Search.from_core(result)
+    if not found.found:
+        return None
+    r = to_route(prepared, found, model, method)
+    r = model.finish(r, {})
+    danger_h = np.asarray(danger_h, dtype=float)
+    r.stats.update(through_danger=True, danger_h=float(danger_h.sum()), danger_step_h=danger_h,
+                   danger_legs=danger_stretches(r, danger_h, 0.0))
+    r.name = "seaway route (through danger: no route avoids the danger zones)"
+    return r

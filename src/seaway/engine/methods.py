@@ -1,0 +1,138 @@
+"""Which exact search answers a query, and running it; the engine's option checks.
+
+Methods (all exact except weighted A*):
+* "dijkstra": one search from the start.
+* "astar": A* with the straight-line bound (distance x the chart's smallest cost); with
+  weight=w > 1, weighted A* (cost <= w x optimum).
+* "bidirectional": Dijkstra from the start and from the end at once on two threads, stopped
+  by the exact rule top_f + top_b >= best meeting (cpp/seaway/bidirectional.hpp); on charts
+  whose costs span at most a factor ASTAR_CONTRAST, bidirectional A* (average potential). Static
+  raster models only (max, mean, integral, entered pixel): the backward search charges each
+  step the forward step's cost, which needs costs that do not depend on the arrival time.
+* "landmarks": bidirectional A* on two threads with the average potential of the landmark
+  (ALT) bounds (one-thread A* with the landmark bound if BIDIRECTIONAL_LANDMARKS is False),
+  after PreparedChart.prepare_landmarks() (or prepare(..., landmarks=N)) for this model; max,
+  mean and integral only: the bound |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
+  mean of the two ends x the step's length; the integral over the same segment).
+* "auto" (the default): "astar" if a weight is given; "landmarks" when the chart has landmarks
+  for the query's model; else "bidirectional" for a static raster model (with the A* potential
+  on a low-contrast chart: on the summer benchmark chart it takes 0.7 x one-thread A*'s time),
+  but on charts under SMALL_CHART pixels "astar" on a low-contrast chart and "dijkstra" on
+  others; else "astar" (time-dependent models). On the benchmark charts this is never slower than
+  Dijkstra (benchmarks/README.md)."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from ..base.validate import number
+from ..models.base import EDGE_COSTS
+from .result import Search
+
+EDGE_COST_NAMES = tuple(EDGE_COSTS)
+METHODS = ("auto", "dijkstra", "astar", "bidirectional", "landmarks")
+DIRECTIONS = ("full", "unique")
+#: Below this many pixels "auto" searches on one thread (A* on a low-contrast chart, else
+#: Dijkstra): the whole search takes about as long as starting the second thread.
+SMALL_CHART = 65536
+#: "bidirectional" adds the A* potential (the average of the distance bounds to the end and from
+#: the start, x the chart's smallest cost) when the chart's passable costs span at most this
+#: factor: on the summer chart (costs 1-2) it settles 45 % fewer pixels than without; on the
+#: winter chart (1-30) the bound is too weak to pay for itself (benchmarks/README.md).
+ASTAR_CONTRAST = 2.0
+#: "landmarks" runs on two threads (bidirectional A*); False: A* on one thread (both exact).
+BIDIRECTIONAL_LANDMARKS = True
+
+
+def check_options(neighbourhood, directions) -> None:
+    """Refuse a stencil size or direction set the engine does not take, naming the fix."""
+    if isinstance(neighbourhood, bool) or not isinstance(neighbourhood, (int, np.integer)):
+        raise TypeError(f"neighbourhood must be an odd integer from 3 to 15, got {neighbourhood!r}")
+    if neighbourhood < 3 or neighbourhood > 15 or neighbourhood % 2 == 0:
+        raise ValueError(
+            f"neighbourhood must be odd and between 3 and 15 (the k of the k x k stencil), got "
+            f"{neighbourhood}; e.g. neighbourhood=5"
+        )
+    if directions not in DIRECTIONS:
+        raise ValueError(f"directions must be one of {DIRECTIONS}, got {directions!r}")
+
+
+def heuristic_weight(method, weight) -> float:
+    """The A* weight of `method` (0 for the methods without one); validates both."""
+    if method not in METHODS:
+        raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+    if method == "auto" and weight is not None:
+        method = "astar"  # a weight asks for (weighted) A*
+    if method != "astar":
+        if weight not in (None, 1, 1.0):
+            raise ValueError("weight inflates the A* heuristic; use it with method='astar'")
+        return 0.0
+    return 1.0 if weight is None else number(
+        weight, "weight", minimum=1, what="a finite number >= 1 (cost <= weight x optimum)",
+        example=1.5)
+
+
+def resolve(prepared, model, method: str, weight=None) -> str:
+    """The method that answers the query; refuses a method the model does not allow."""
+    if method == "auto" and weight is not None:
+        return "astar"
+    if method == "auto":
+        if model.static and prepared.landmarks_for(model) is not None:
+            return "landmarks"
+        if not model.static:
+            return "astar"
+        if prepared.chart.values.size < SMALL_CHART:  # a thread costs more than the search
+            return "astar" if model.symmetric and low_contrast(prepared) else "dijkstra"
+        return "bidirectional"
+    if method == "bidirectional" and not model.static:
+        raise ValueError(
+            f"method='bidirectional' needs a static raster model (edge_cost in {EDGE_COST_NAMES}); "
+            f"the {model.name!r} model's step costs depend on the time of arrival, so the backward "
+            "search cannot price them: use method='astar' or 'dijkstra'")
+    if method == "landmarks":
+        if not (model.static and model.symmetric):
+            raise ValueError(
+                f"method='landmarks' needs a symmetric static model (edge_cost in "
+                f"{EDGE_COST_NAMES}), not {model.name!r}: use method='bidirectional' or 'astar'")
+        if prepared.landmarks_for(model) is None:
+            raise ValueError(
+                f"the chart has no landmarks for the {model.name!r} model: call "
+                f"prepared.prepare_landmarks(8, model={model.name!r}) first (or "
+                "seaway.prepare(..., landmarks=8)), or use method='auto'")
+    return method
+
+
+def search(prepared, engine, s: int, e: int, method: str, weight: float, model, cancel) -> Search:
+    """The search between flat pixels s and e by `method`."""
+    router = prepared.router
+    if method == "bidirectional":
+        return Search.from_core(router.route_bidirectional(engine, s, e, low_contrast(prepared),
+                                                           cancel))
+    if method == "landmarks":
+        return Search.from_core(router.route_landmarks(engine, prepared.landmarks_for(model), s, e,
+                                                       BIDIRECTIONAL_LANDMARKS, cancel))
+    return Search.from_core(router.route(engine, s, e, weight, cancel))
+
+
+def low_contrast(prepared) -> bool:
+    """The chart's passable costs span at most ASTAR_CONTRAST."""
+    lo, hi, _ = prepared.router.cost_range  # found while the chart was prepared
+    span = hi / lo if lo > 0 else np.inf
+    return span <= ASTAR_CONTRAST
+
+
+def build_landmarks(prepared, count, model, seed_rc, cancel):
+    """The landmark tables of `model` on `prepared`, and the seconds it took."""
+    if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
+        raise TypeError(f"landmarks must be an integer from 1 to 64, got {count!r}")
+    if not 1 <= count <= 64:
+        raise ValueError(f"landmarks must be from 1 to 64 (4 bytes per pixel each), got {count}")
+    if not (model.static and model.symmetric):
+        raise ValueError(f"landmarks need a symmetric static model (edge_cost in {EDGE_COST_NAMES}), "
+                         f"not {model.name!r}")
+    t0 = time.perf_counter()
+    seed = seed_rc[0] * prepared.chart.shape[1] + seed_rc[1]
+    lm = prepared.router.build_landmarks(model.engine(prepared), int(count), int(seed), cancel)
+    return lm, time.perf_counter() - t0

@@ -1,0 +1,139 @@
+"""PreparedChart: a chart validated and prepared once; its route() is the one query, for every
+cost model (seaway.models). Validate in Python, search in C++ (seaway._core).
+
+What the other searches of the package need from a prepared chart (compat, weather, seasons,
+constraints) is a method or property of it: `router` (the C++ prepared chart), `flat()`,
+`search()`, `landmarks_for()` and `from_chart()`."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import _core
+from ..base.interrupt import interruptible
+from ..chart.locate import check_overflow, check_tiny, locate, nearest_passable
+from ..chart.raster import Chart, as_chart
+from ..constraints import constrain
+from ..models.base import CostModel, EdgeCost, as_model
+from ..result.route import Route
+from . import methods
+from .constrained import route_constrained
+from .result import Search, no_route, to_route
+
+
+class PreparedChart:
+    """A chart validated and prepared once for many routes, under any cost model.
+
+    The land clearance and step lengths are built at construction; every query borrows a
+    search workspace that is kept for the next one, so repeated queries allocate nothing
+    large, and queries from several threads run at once (the GIL is released). The cost and
+    land arrays are read in place: do not modify them while the PreparedChart is in use.
+    `edge_cost` is the default model of route() and cost_field()."""
+
+    def __init__(self, cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
+                 directions="full", edge_cost="max", landmarks=0, keep_away=(), zones=()):
+        methods.check_options(neighbourhood, directions)
+        model = EdgeCost(edge_cost)
+        if keep_away or zones:  # rasterised once, with the chart (seaway.constraints)
+            cost = constrain(cost, keep_away=keep_away, zones=zones, lat=lat, lon=lon, dx=dx,
+                             dy=dy, land=land)
+        chart = as_chart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land)
+        self._setup(chart, neighbourhood, directions, model, "segment")
+        self._dims = getattr(cost, "dims", None)
+        if landmarks:
+            self.prepare_landmarks(landmarks)
+
+    @classmethod
+    def from_chart(cls, chart: Chart, neighbourhood, directions, model: CostModel,
+                   land_rule="segment") -> PreparedChart:
+        """A prepared chart from a validated Chart, with engine options the public API does not
+        offer ("axis" directions, the "pixel" land rule: seaway.compat)."""
+        self = cls.__new__(cls)
+        self._setup(chart, neighbourhood, directions, model, land_rule)
+        self._dims = None
+        return self
+
+    def _setup(self, chart, neighbourhood, directions, model, land_rule):
+        check_tiny(chart, neighbourhood)
+        self.chart, self.model = chart, model
+        self.neighbourhood, self.directions = neighbourhood, directions
+        self.router = _core.make_router(chart.values, chart.land, chart.grid, neighbourhood,
+                                        directions, land_rule)
+        self._landmarks, self.landmark_stats = {}, {}
+
+    def prepare_landmarks(self, count=8, *, model=None) -> dict:
+        """Tabulate the least costs from `count` landmark pixels (float32, 4 bytes per pixel
+        each) for `model` (default the chart's edge_cost), so that method="landmarks" (and
+        "auto") answers later queries by A* with the landmark bound. Returns the stats:
+        count, seconds, bytes, bytes_per_pixel, pixels."""
+        model = self.model if model is None else as_model(model)
+        seed = nearest_passable(self.chart, tuple(n // 2 for n in self.chart.shape))
+        if seed is None:
+            raise ValueError("no pixel of the chart is passable: landmarks need water")
+        lm, seconds = interruptible(lambda cancel: methods.build_landmarks(self, count, model, seed,
+                                                                           cancel))
+        self._landmarks[model.name] = lm
+        px = [divmod(int(p), self.chart.shape[1]) for p in lm.pixels]
+        self.landmark_stats[model.name] = stats = dict(
+            count=len(px), seconds=seconds, bytes=lm.bytes, bytes_per_pixel=lm.bytes / self.chart.values.size,
+            pixels=px)
+        return stats
+
+    def landmarks_for(self, model: CostModel):
+        """The landmark tables prepared for `model`, or None."""
+        return self._landmarks.get(model.name)
+
+    @property
+    def edge_cost(self) -> str:
+        """The name of the default model."""
+        return self.model.name
+
+    def flat(self, rc) -> int:
+        """The flat index of pixel (row, col)."""
+        return rc[0] * self.chart.shape[1] + rc[1]
+
+    def search(self, s, e, weight, model: CostModel, method="astar") -> Search:
+        """The search between two located pixels (cost inf if unreachable)."""
+        engine = model.engine(self)
+        return interruptible(lambda cancel: methods.search(self, engine, self.flat(s), self.flat(e),
+                                                           method, weight, model, cancel))
+
+    def route(self, start, end, *, model=None, method="auto", weight=None, via=(),
+              turn_penalty=None) -> Route:
+        """The least-cost route from `start` to `end` under `model` (a seaway.models.CostModel
+        or an edge-cost name; default the chart's edge_cost), through the `via` points in order
+        and with an optional turn penalty (seaway.engine.constrained). See seaway.route."""
+        methods.heuristic_weight(method, weight)
+        model = self.model if model is None else as_model(model)
+        method = methods.resolve(self, model, method, weight)
+        w = methods.heuristic_weight(method, weight)  # the resolved method's: auto -> astar is A*
+        if (via is not None and len(via)) or turn_penalty is not None:
+            return route_constrained(self, start, end, model, method, w, via, turn_penalty)
+        s, e = locate(self.chart, start, "start"), locate(self.chart, end, "end")
+        model.check_ends(self, s, e)
+        found = self.search(s, e, w, model, method)
+        if not found.found:
+            raise no_route(self, model, (("start", s), ("end", e)))
+        return model.finish(to_route(self, found, model, method), found.per_step)
+
+    def cost_field(self, start, *, model=None):
+        """The accumulated least cost from `start` to every pixel (inf where unreachable) under
+        `model` (default the chart's edge_cost); a DataArray chart gives a DataArray, in the
+        dimension order it came in."""
+        model = self.model if model is None else as_model(model)
+        engine = model.engine(self)
+        chart = self.chart
+        s = locate(chart, start, "start")
+        model.check_ends(self, s, None)
+        field, _ = interruptible(lambda cancel: self.router.field(engine, self.flat(s), cancel))
+        if model.static and not np.isfinite(field).all():
+            check_overflow(chart, self.neighbourhood)
+        if chart.template is None:
+            return field
+        out = chart.template.copy(data=field)
+        if self._dims is not None and out.dims != tuple(self._dims):
+            out = out.transpose(*self._dims)  # the chart was turned to (lat, lon): give it back
+        out.name = "accumulated_cost"
+        out.attrs = {"long_name": "least accumulated cost from the start", "start": str(tuple(start)),
+                     "units": model.unit(chart.geographic)}
+        return out

@@ -1,0 +1,82 @@
+"""What a search gives back, typed, and the one function that turns it into a Route (or into
+NoRouteError, naming the ends and, for static costs, whether the cost overflowed instead)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..chart.locate import check_overflow, describe
+from ..errors import NoRouteError
+from ..result.route import Route
+
+
+@dataclass(frozen=True)
+class SearchStats:
+    """The search's own figures (cpp/seaway/search.hpp SearchStats)."""
+
+    settled: int = 0  #: pixels (or states) taken off the queue
+    heap_peak: int = 0  #: the largest frontier
+    state_bytes: int = 0  #: the search's own memory at its peak
+    min_cost: float = float("inf")  #: the smallest passable cost (the A* bound's factor)
+
+    @classmethod
+    def from_core(cls, d: dict) -> SearchStats:
+        return cls(settled=int(d["settled"]), heap_peak=int(d["heap_peak"]),
+                   state_bytes=int(d["state_bytes"]), min_cost=float(d["min_cost"]))
+
+    def as_dict(self) -> dict:
+        return {"settled": self.settled, "heap_peak": self.heap_peak,
+                "state_bytes": self.state_bytes, "min_cost": self.min_cost}
+
+    def plus(self, other: SearchStats) -> SearchStats:
+        """Two legs' figures: settled adds up, the peaks take the larger."""
+        return SearchStats(self.settled + other.settled, max(self.heap_peak, other.heap_peak),
+                           max(self.state_bytes, other.state_bytes), min(self.min_cost, other.min_cost))
+
+
+@dataclass(frozen=True)
+class Search:
+    """One search between two pixels: cost (inf when unreachable), the flat pixel path, the
+    figures, the cost to each path pixel and the model's values per step ({name: array})."""
+
+    cost: float
+    path: np.ndarray
+    stats: SearchStats
+    cumulative: np.ndarray
+    per_step: dict = field(default_factory=dict)
+
+    @classmethod
+    def from_core(cls, result) -> Search:
+        """From the C++ result tuple (cpp/results.hpp route_tuple)."""
+        cost, path, stats, cumulative, per_step = result
+        return cls(float(cost), np.asarray(path), SearchStats.from_core(stats),
+                   np.asarray(cumulative, float), dict(per_step))
+
+    @property
+    def found(self) -> bool:
+        return bool(np.isfinite(self.cost))
+
+    def pixels(self, cols: int) -> np.ndarray:
+        """(n, 2) (row, col) of the path on a chart of `cols` columns."""
+        return np.column_stack(np.divmod(self.path, cols)).astype(np.int64)
+
+
+def no_route(prepared, model, ends) -> NoRouteError:
+    """The error for a search that found nothing between `ends` ((name, pixel) pairs); raises
+    ValueError instead when a static cost overflowed (a route exists but its cost is inf)."""
+    if model.static:
+        check_overflow(prepared.chart, prepared.neighbourhood)
+    (a, s), (b, e) = ends
+    where = f"from {a} {describe(prepared.chart, s)} to {b} {describe(prepared.chart, e)}"
+    return NoRouteError(model.no_route(where, prepared))
+
+
+def to_route(prepared, found: Search, model, method: str, stats: dict | None = None) -> Route:
+    """The Route of a found search, before the model adds its own results (model.finish)."""
+    chart = prepared.chart
+    return Route(chart=chart, cost=float(found.cost), pixels=found.pixels(chart.shape[1]),
+                 method=method, neighbourhood=prepared.neighbourhood, model=model,
+                 stats=found.stats.as_dict() if stats is None else stats,
+                 step_costs=np.diff(found.cumulative))

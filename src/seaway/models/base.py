@@ -1,0 +1,161 @@
+"""Cost models: what a route minimises. Each is one Python class over one C++ functor.
+
+A model knows its name and unit, builds its engine object for a prepared chart (the typed
+classes of seaway._core, cpp/models.hpp), adds what the search reports per step to the Route,
+and says whether arbitrary straight legs can be priced (smoothing, leg tables of smoothed
+routes). PreparedChart.route(start, end, model=...) is the one query; seaway.route,
+route_time, route_fuel and route_safest build a model and call it.
+
+Adding a model: a functor in cpp/seaway/ (operator() and bounds()), a struct in cpp/models.hpp
+with its entry in `Models`, its class in cpp/register_models.cpp, and a CostModel subclass here
+(docs: "Adding a cost model")."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import _core
+from ..chart.legs import Segments
+
+#: The static edge costs over a raster of cost per unit length: name -> engine class. The
+#: public list: the API, the CLI choices and the error texts come from it.
+EDGE_COSTS = {
+    "max": _core.MaxCost,  # paper 000: max(u_i, u_j) x length
+    "mean": _core.MeanCost,  # paper 003: (u_i + u_j) / 2 x length
+    "integral": _core.IntegralCost,  # the exact line integral along the step
+}
+_PAIR_COSTS = {"max": _core.max_pair_costs, "mean": _core.mean_pair_costs}
+
+
+class CostModel:
+    """Base class. Subclasses set `name` and their capabilities and implement `engine()`.
+
+    The capabilities are declared here, once; the engine reads them instead of guessing from
+    the class or the name: the method choice (bidirectional and landmark searches), turn
+    penalties, via points and smoothing."""
+
+    name = "?"
+    #: Step costs do not depend on the time of arrival: the backward half of the bidirectional
+    #: search can price them, and a cost that overflowed is told from no route.
+    static = False
+    #: A step costs the same both ways: the landmark bound holds.
+    symmetric = False
+    #: Takes a turn penalty: route cost per unit length, in the penalty's units.
+    turn_penalty = False
+    #: The cost is hours along a clock that starts at a departure.
+    time_dependent = False
+    #: later(hours) gives the model of a ship leaving that much later (the next via leg).
+    chainable = False
+    #: Arbitrary straight legs can be priced (seaway.smooth), not only the engine's steps.
+    smoothable = False
+
+    def later(self, hours: float) -> CostModel:
+        """The model for a ship leaving `hours` after this model's departure (chainable only)."""
+        raise NotImplementedError(f"the {self.name!r} model cannot depart later")
+
+    def unit(self, geographic: bool) -> str:
+        """The unit of a route's cost under this model."""
+        raise NotImplementedError
+
+    def engine(self, prepared):
+        """The seaway._core model object for `prepared` (a PreparedChart); validates the pair."""
+        raise NotImplementedError
+
+    def check_ends(self, prepared, start, end):
+        """Refuse a start or end pixel (row, col; end None for a cost field) this model can
+        never use, naming why and the fix; the chart has checked land already."""
+
+    def finish(self, route, per_step: dict):
+        """The Route with what this model adds (stats from the per-step values, speed)."""
+        return route
+
+    def no_route(self, where: str, prepared) -> str:
+        """The NoRouteError message; `where` names the start and end pixels."""
+        return f"no route {where} under the {self.name} model"
+
+    def segments(self, chart, neighbourhood: int):
+        """Pricing and land test of arbitrary legs on `chart` (seaway._segments)."""
+        raise ValueError(
+            f"the {self.name!r} model prices only the engine's steps, not arbitrary straight legs "
+            f"(its cost is in {self.unit(chart.geographic)}), so its routes cannot be smoothed or "
+            f"re-priced along new legs; smooth a route found with edge_cost in {tuple(EDGE_COSTS)}, "
+            "or use the route as found")
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self.name!r})"
+
+
+class EdgeCost(CostModel):
+    """A static cost per unit length read from the chart's raster, priced per step by `rule`."""
+
+    static = symmetric = turn_penalty = smoothable = True
+
+    def __init__(self, rule: str = "max"):
+        if rule not in EDGE_COSTS:
+            raise ValueError(f"edge_cost must be one of {tuple(EDGE_COSTS)}, got {rule!r}")
+        self.name = rule
+
+    def unit(self, geographic):
+        return "cost x km" if geographic else "cost x grid unit"
+
+    def engine(self, prepared):
+        return EDGE_COSTS[self.name](prepared.chart.values)
+
+    def no_route(self, where, prepared):
+        k = prepared.neighbourhood
+        return (f"no route {where}: no chain of passable steps joins them with neighbourhood={k} "
+                "(separate water bodies, or a passage narrower than the land rule allows); try a "
+                "larger neighbourhood, check the land mask, or choose another end point")
+
+    def segments(self, chart, neighbourhood):
+        return Segments(chart, self.name, neighbourhood)
+
+    def pair_costs(self, a, b, length) -> np.ndarray:
+        """Cost of steps of `length` between pixels of costs a and b, from the engine's rule
+        ("integral" between two pixel centres: the mean rule, its value on axis steps)."""
+        return _PAIR_COSTS.get(self.name, _core.mean_pair_costs)(a, b, length)
+
+    def __eq__(self, other):
+        return isinstance(other, EdgeCost) and other.name == self.name
+
+    def __hash__(self):
+        return hash(("EdgeCost", self.name))
+
+
+class EnteredPixel(EdgeCost):
+    """scikit-image's non-geometric MCP: each step costs the pixel entered (seaway.compat)."""
+
+    symmetric = turn_penalty = smoothable = False
+
+    def __init__(self):
+        self.name = "entered"
+
+    def engine(self, prepared):
+        return _core.EnteredPixelCost(prepared.chart.values)
+
+    def segments(self, chart, neighbourhood):
+        return CostModel.segments(self, chart, neighbourhood)
+
+
+class TurnPenalised(EdgeCost):
+    """The model of a turn-penalty route: a static edge cost whose route cost also holds the
+    turn penalties, so arbitrary legs cannot be priced (no smoothing, which would drop them)."""
+
+    smoothable = False
+    turn_penalty = False  # it holds its penalties already
+
+    def segments(self, chart, neighbourhood):
+        raise ValueError(
+            "a turn-penalty route's cost includes its turn penalties, which smoothing cannot "
+            "price along new legs; use the route as found, or smooth a route found without "
+            "turn_penalty")
+
+
+def as_model(model) -> CostModel:
+    """A CostModel from a model or an edge-cost name."""
+    if isinstance(model, CostModel):
+        return model
+    if isinstance(model, str):
+        return EdgeCost(model)
+    raise TypeError(f"model must be a seaway.models.CostModel or one of {tuple(EDGE_COSTS)}, "
+                    f"got {model!r}")

@@ -1,0 +1,144 @@
+"""The cost models over a weather forecast (seaway.models re-exports them): travel time, fuel
+and wave danger (papers 001, 003, 004)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import _core
+from ..base.validate import number
+from ..chart.cf import STANDARD_NAMES
+from ..constraints import timed_zone_engine
+from ..vessel import Vessel
+from .base import CostModel
+
+
+class _OnForecast(CostModel):
+    """A model whose fields come from a forecast (seaway.weather.ForecastGrid) on the chart's grid."""
+
+    def _check_chart(self, prepared):
+        if not prepared.chart.geographic:
+            raise ValueError(f"the {self.name!r} model needs a lat/lon chart")
+        if prepared.chart.shape != self.forecast.shape:
+            raise ValueError(f"the forecast has {self.forecast.shape} pixels but the chart "
+                             f"{prepared.chart.shape}: route on the forecast's grid "
+                             "(seaway.weather.ForecastGrid.prepare)")
+
+
+class TravelTime(_OnForecast):
+    """Hours through a forecast of currents, wind and waves (papers 001, 004); `forecast` is a
+    seaway.weather.ForecastGrid (its departure fixes the time axis)."""
+
+    name = "time"
+    time_dependent = chainable = True
+
+    def __init__(self, forecast, vessel: Vessel | None = None, zones=()):
+        vessel = Vessel() if vessel is None else vessel
+        vessel.check()
+        if "wave_height" in forecast.arrays:
+            vessel.check_waves(float(forecast.arrays["wave_height"].max()))
+        self.forecast, self.vessel = forecast, vessel
+        self.best_speed_kn = vessel.speed_kn + forecast.best_extra_kn(vessel)
+        self._engine = _core.TravelTimeModel(forecast.engine(), vessel.to_core(), self.best_speed_kn)
+        self.zones = (zones,) if hasattr(zones, "geometry") else tuple(zones)
+        if self.zones:  # exclusions, open or closed in time windows (seaway.constraints)
+            self._engine = timed_zone_engine(forecast, self._engine, self.zones)
+
+    def later(self, hours: float) -> TravelTime:
+        """The model for a ship leaving `hours` after this model's departure (the next leg of a
+        route through via points)."""
+        return TravelTime(self.forecast.later(hours), self.vessel, self.zones)
+
+    def unit(self, geographic):
+        return "h"
+
+    def engine(self, prepared):
+        self._check_chart(prepared)
+        return self._engine
+
+    def finish(self, route, per_step):
+        hours = route.cost
+        route.stats["hours"] = hours
+        if self.forecast.departure is not None:
+            dep = self.forecast.departure
+            route.stats["departure"] = dep
+            route.stats["arrival"] = dep + np.timedelta64(int(round(hours * 3600)), "s")
+        route.speed_kn = self.vessel.speed_kn
+        if "wait_h" in per_step:  # hours waited for zones to open, per step
+            route.stats["wait_h"] = per_step["wait_h"]
+        return route
+
+    def no_route(self, where, prepared):
+        return (f"no route {where} within the vessel's wind and wave limits (and danger zones) "
+                "of this forecast; try a later departure, other limits or another end point")
+
+
+class Fuel(_OnForecast):
+    """Fuel + time_value x hours with an engine setting per step (paper 004), on the forecast
+    frame valid nearest `at_hours`; `fuel` a seaway.fuel.FuelCurve. Cost in tonnes."""
+
+    name = "fuel"
+
+    def __init__(self, forecast, vessel: Vessel, fuel, time_value_t_per_h=0.0, at_hours=0.0):
+        vessel.check()
+        number(time_value_t_per_h, "time_value_t_per_h", minimum=0, what="a number >= 0")
+        number(at_hours, "at_hours")
+        self.forecast, self.vessel, self.fuel = forecast, vessel, fuel
+        self.time_value_t_per_h = float(time_value_t_per_h)
+        frame = forecast.frame_at(at_hours, ("current_east", "current_north", "wave_height",
+                                             "wave_from", "wind_speed"))
+        self._engine = _core.FuelModel(frame.engine(), vessel.to_core(), list(fuel.speeds_kn),
+                                       list(fuel.rates_t_per_h), self.time_value_t_per_h,
+                                       frame.best_extra_kn(vessel))
+
+    def unit(self, geographic):
+        return "t (fuel + time value x h)"
+
+    def engine(self, prepared):
+        self._check_chart(prepared)
+        return self._engine
+
+    def finish(self, route, per_step):
+        setting = per_step["setting"].astype(np.int64)
+        route.stats.update(fuel_t=float(np.sum(per_step["fuel_t"])),
+                           hours=float(np.sum(per_step["hours"])),
+                           speeds_kn=np.asarray(self.fuel.speeds_kn)[setting],
+                           time_value_t_per_h=self.time_value_t_per_h)
+        return route
+
+    def no_route(self, where, prepared):
+        return f"no route {where} at any engine setting within the vessel's limits"
+
+
+class WaveDanger(_OnForecast):
+    """Wave danger by heading (paper 003 with MSC.1/Circ.1228): sum (u_i + u_j) / 2 x km with u in
+    [1, 10], on the forecast frame valid nearest `at_hours`. Cost in danger x km."""
+
+    name = "wave danger"
+
+    def __init__(self, forecast, ship_length_m, speed_kn, at_hours=0.0):
+        number(ship_length_m, "ship_length_m", above=0, example=150.0)
+        number(speed_kn, "speed_kn", above=0, example=12.0)
+        number(at_hours, "at_hours")
+        roles = ("wave_height", "wave_from", "wave_period")
+        missing = sorted(set(roles) - set(forecast.arrays))
+        if missing:
+            raise ValueError(f"wave danger needs {missing}: fields with standard names "
+                             + ", ".join(STANDARD_NAMES[m][0] for m in missing))
+        self.forecast, self.speed_kn = forecast, float(speed_kn)
+        frame = forecast.frame_at(at_hours, roles)
+        self._engine = _core.WaveDangerModel(frame.engine(), float(ship_length_m), self.speed_kn)
+
+    def unit(self, geographic):
+        return "danger x km"
+
+    def engine(self, prepared):
+        self._check_chart(prepared)
+        return self._engine
+
+    def finish(self, route, per_step):
+        route.speed_kn = self.speed_kn
+        return route
+
+    def no_route(self, where, prepared):
+        return f"no route at sea {where}"

@@ -1,0 +1,96 @@
+"""Time through a season of ice charts (seaway.models re-exports it)."""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+
+from .. import _core
+from ..base.validate import number
+from ..chart.locate import describe
+from ..ice.classes import get_class
+from .base import CostModel
+
+
+class IceSeasonTime(CostModel):
+    """Hours through a season of ice charts (issue 10): each step crosses the chart valid when
+    the ship starts it, at the class's speed there (paper 002's V = F * V0 via seaway.ice.andreeva,
+    or a table per stage and concentration); time-optimal and exact (FIFO). Waiting is allowed
+    everywhere (without it the graph is not FIFO and no label-setting search is exact); routes
+    list their waits. `season` is a seaway.ice.season.SeasonGrid (or what it takes); departure
+    a date within the season (default its first chart); see seaway.ice.season for the speeds.
+
+    Route stats: hours, departure, arrival, hours_under_way, hours_waiting, waits (pixel,
+    (lat, lon) or (y, x), arrival there, hours waited), charts_used (dates), ice_class."""
+
+    name = "ice season time"
+    time_dependent = True
+
+    def __init__(self, season, ice_class="Arc7", v0_kn=12.0, *, departure=None, speed="andreeva",
+                 **speed_options):
+        from ..ice.season import (
+            SeasonGrid,  # the season's own grid type (a convenience)
+        )
+
+        self.v0_kn = number(v0_kn, "v0_kn", above=0, example=12.0)
+        self.season = season if isinstance(season, SeasonGrid) else SeasonGrid(season)
+        self.ice_class = get_class(ice_class).name
+        self.hours_per_km, self.valid_from_h, self.departure = self.season.hours_per_km(
+            ice_class, v0_kn, departure, speed, **speed_options)
+        self._open = np.isfinite(self.hours_per_km).any(axis=0)
+        if not self._open.any():
+            raise ValueError(f"class {self.ice_class} may go nowhere in any chart of the season from "
+                             f"{self.departure} on; try a stronger class or other speeds")
+        fastest = float(np.min(self.hours_per_km, where=self._open[None], initial=np.inf))
+        self._engine = _core.IceSeasonModel(self.hours_per_km, list(self.valid_from_h), fastest)
+
+    def unit(self, geographic):
+        return "h"
+
+    def engine(self, prepared):
+        if prepared.chart.shape != self.season.shape:
+            raise ValueError(f"the season's charts have {self.season.shape} pixels but the chart "
+                             f"{prepared.chart.shape}: route on the season's grid "
+                             "(seaway.ice.season.SeasonGrid.prepare)")
+        return self._engine
+
+    def check_ends(self, prepared, start, end):
+        for name, rc in (("start", start), ("end", end)):
+            if rc is None or self._open[rc]:
+                continue
+            open_ = np.argwhere(self._open & ~self.season.dry)
+            near = (f"the nearest pixel it may use is "
+                    f"{describe(prepared.chart, tuple(open_[np.argmin(((open_ - rc) ** 2).sum(1))]))}"
+                    if open_.size else "it may use no pixel of the chart")
+            last = self.season.ds.isel(time=-1)
+            ice = ", ".join(f"{k} {float(last[k].values[rc]):g}" for k in ("CT", "SA", "thickness")
+                            if k in last)
+            raise ValueError(f"{name} {describe(prepared.chart, rc)} is in ice class {self.ice_class} "
+                             f"may not enter in any chart from {self.departure} on (last chart: {ice}); "
+                             f"{near}")
+
+    def finish(self, route, per_step):
+        hours, cum = route.cost, np.concatenate([[0.0], np.cumsum(route.step_costs)])
+        depart = per_step["depart_h"]
+        wait = depart - cum[:-1]
+        at = lambda h: self.departure + np.timedelta64(int(round(h * 3.6e6)), "ms")  # noqa: E731
+        coords = route.coords
+        waits = [(tuple(int(x) for x in route.pixels[i]), tuple(float(x) for x in coords[i]),
+                  at(cum[i]), float(wait[i])) for i in np.flatnonzero(wait > 1e-9)]
+        used = np.unique(np.searchsorted(self.valid_from_h, depart, side="right") - 1)
+        times = self.season.times[self.season.times.size - self.valid_from_h.size:]
+        route.stats.update(hours=hours, departure=self.departure, arrival=at(hours),
+                           hours_waiting=float(wait.sum()), hours_under_way=float(hours - wait.sum()),
+                           waits=waits, charts_used=[times[k] for k in used], ice_class=self.ice_class)
+        # No route.speed_kn: legs at one speed would contradict the per-step times and waits.
+        if hours > self.valid_from_h[-1] + self.season.last_valid_h:
+            warnings.warn(f"the voyage arrives at {route.stats['arrival']}, beyond the last chart "
+                          f"({times[-1]}) and its usual validity; the last chart was assumed to hold",
+                          stacklevel=3)
+        return route
+
+    def no_route(self, where, prepared):
+        return (f"no route for class {self.ice_class} {where} in any chart of the season from "
+                f"{self.departure} on, even waiting for the ice to clear; try a stronger class, "
+                "a larger neighbourhood or another end")

@@ -1,0 +1,180 @@
+"""Write a route as GeoJSON, GPX 1.1, CSV or RTZ (IEC 61174 route exchange, the format ECDIS
+equipment imports). Every file is written atomically: to a temporary file beside the target,
+then renamed over it, so a reader never sees a half-written file.
+
+GPX and RTZ carry the waypoints (ends and course changes) with longitudes in [-180, 180);
+ECDIS joins RTZ waypoints by great-circle legs ("Orthodrome"), as the route was costed.
+GeoJSON carries every vertex; a geographic route that crosses the antimeridian is split into a
+MultiLineString at +-180 (RFC 7946, section 3.1.9), or, with antimeridian="continuous", kept
+as one LineString whose longitudes run past 180 (what Route.to_geojson() gives)."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import xml.etree.ElementTree as ET
+
+import numpy as np
+
+from ..base import sphere as geo
+from ..base.files import replace_atomically, write_atomically  # noqa: F401 - part of this API
+from ..result.environment import extreme_name
+from .webmap import html_text
+
+GPX_NS = "http://www.topografix.com/GPX/1/1"
+RTZ_NS = "http://www.cirm.org/RTZ/1/0"
+FORMATS = {".geojson": "geojson", ".json": "geojson", ".gpx": "gpx", ".csv": "csv", ".rtz": "rtz",
+           ".html": "html", ".htm": "html"}
+
+
+def _split_antimeridian(lat, lon):
+    """Parts of a polyline with continuous longitudes, cut where it crosses +-180 (the crossing
+    latitude interpolated linearly in lon/lat), each part in [-180, 180]."""
+    parts, part = [], [[_wrap180(lon[0]), lat[0]]]
+    for k in range(1, len(lon)):
+        a, b = lon[k - 1], lon[k]
+        turn_a, turn_b = np.floor((a + 180) / 360), np.floor((b + 180) / 360)
+        if turn_a != turn_b:
+            edge = 360 * max(turn_a, turn_b) - 180  # the meridian +-180 crossed, continuous
+            t = (edge - a) / (b - a)
+            cross_lat = float(lat[k - 1] + t * (lat[k] - lat[k - 1]))
+            side = 180.0 if b > a else -180.0
+            part.append([side, cross_lat])
+            parts.append(part)
+            part = [[-side, cross_lat]]
+        part.append([_wrap180(b), lat[k]])
+    parts.append(part)
+    return [p for p in parts if len(p) >= 2]
+
+
+def _wrap180(v):
+    w = float(geo.wrap_lon(v))
+    return 180.0 if w == -180.0 and v > 0 else w
+
+
+def geojson(route, antimeridian: str = "split", speed_kn=None) -> dict:
+    """A GeoJSON Feature of the route with its summary as properties."""
+    if antimeridian not in ("split", "continuous"):
+        raise ValueError(f"antimeridian must be 'split' or 'continuous', got {antimeridian!r}")
+    feature = route.to_geojson()
+    props = feature["properties"]
+    for k, v in route.summary(speed_kn).items():
+        if isinstance(v, str) or (isinstance(v, (int, float)) and np.isfinite(v)):
+            props[k] = v
+        elif k == "least_depth_at" and v is not None:  # (lat, lon) of the shallowest pixel
+            props[k] = [float(x) for x in v]
+    props["name"] = route.name
+    if route.geographic and antimeridian == "split":
+        c = route.coords
+        lon = geo.unwrap_lon(c[:, 1])
+        parts = _split_antimeridian(c[:, 0].tolist(), lon.tolist())
+        if len(parts) > 1:
+            feature["geometry"] = {"type": "MultiLineString", "coordinates": parts}
+        else:
+            feature["geometry"]["coordinates"] = [[_wrap180(x), y] for y, x in zip(c[:, 0], lon)]
+    return feature
+
+
+def gpx(route, speed_kn=None) -> str:
+    """GPX 1.1 <rte> with one <rtept> per waypoint."""
+    _need_latlon(route, "GPX")
+    ET.register_namespace("", GPX_NS)
+    root = ET.Element(f"{{{GPX_NS}}}gpx", {"version": "1.1", "creator": "seaway"})
+    rte = ET.SubElement(root, f"{{{GPX_NS}}}rte")
+    ET.SubElement(rte, f"{{{GPX_NS}}}name").text = route.name
+    ET.SubElement(rte, f"{{{GPX_NS}}}desc").text = _describe(route, speed_kn)
+    for k, (lat, lon) in enumerate(route.waypoints, start=1):
+        pt = ET.SubElement(rte, f"{{{GPX_NS}}}rtept", {"lat": f"{lat:.7f}", "lon": f"{_wrap180(lon):.7f}"})
+        ET.SubElement(pt, f"{{{GPX_NS}}}name").text = f"WP{k:03d}"
+    return _xml(root)
+
+
+def rtz(route, speed_kn=None) -> str:
+    """RTZ 1.0 (IEC 61174:2015 annex S): routeInfo, then one waypoint per course change, each with
+    its position and the leg that ends at it (great circle; planned speed when known)."""
+    _need_latlon(route, "RTZ")
+    ET.register_namespace("", RTZ_NS)
+    speed = route.speed_kn if speed_kn is None else speed_kn
+    root = ET.Element(f"{{{RTZ_NS}}}route", {"version": "1.0"})
+    ET.SubElement(root, f"{{{RTZ_NS}}}routeInfo", {"routeName": route.name,
+                                                    "routeAuthor": "seaway",
+                                                    "routeStatus": "computed, not validated"})
+    wps = ET.SubElement(root, f"{{{RTZ_NS}}}waypoints")
+    default = ET.SubElement(wps, f"{{{RTZ_NS}}}defaultWaypoint", {"radius": "0.1"})
+    ET.SubElement(default, f"{{{RTZ_NS}}}leg", {"geometryType": "Orthodrome"})
+    for k, (lat, lon) in enumerate(route.waypoints, start=1):
+        wp = ET.SubElement(wps, f"{{{RTZ_NS}}}waypoint", {"id": str(k), "name": f"WP{k:03d}"})
+        ET.SubElement(wp, f"{{{RTZ_NS}}}position", {"lat": f"{lat:.7f}", "lon": f"{_wrap180(lon):.7f}"})
+        if k > 1:
+            attrs = {"geometryType": "Orthodrome"}
+            if speed:
+                attrs["speedMax"] = f"{float(speed):.2f}"
+            ET.SubElement(wp, f"{{{RTZ_NS}}}leg", attrs)
+    return _xml(root)
+
+
+CSV_FIELDS = ["waypoint", "lat", "lon", "leg", "course_deg", "distance_km", "distance_nm",
+              "speed_kn", "time_h", "cost", "cumulative_km", "cumulative_cost"]
+
+
+def csv_text(route, speed_kn=None) -> str:
+    """One row per waypoint; leg columns describe the leg that ends at the waypoint (empty on the
+    first row). Planar routes give y/x in the lat/lon columns and chart units for km."""
+    legs = route.legs(speed_kn)
+    env = list(route.environment)
+    out = io.StringIO()
+    w = csv.writer(out, lineterminator="\n")
+    w.writerow(CSV_FIELDS + [f"{n}_{s}" for n in env for s in ("mean", extreme_name(n))])
+    first = route.waypoints[0]
+    w.writerow([1, f"{first[0]:.7f}", f"{first[1]:.7f}"] + [""] * (len(CSV_FIELDS) - 3 + 2 * len(env)))
+    km = cost = 0.0
+    for leg in legs:
+        km, cost = km + leg.distance, cost + leg.cost
+        row = [leg.number + 1, f"{leg.end[0]:.7f}", f"{leg.end[1]:.7f}", leg.number,
+               f"{leg.course:.2f}", f"{leg.distance:.4f}", _opt(leg.distance_nm, 4),
+               _opt(leg.speed_kn, 2), _opt(leg.time_h, 3), f"{leg.cost:.6g}", f"{km:.4f}",
+               f"{cost:.6g}"]
+        row += [f"{v:.4g}" for n in env for v in leg.environment[n]]
+        w.writerow(row)
+    return out.getvalue()
+
+
+def write(route, path, fmt=None, speed_kn=None) -> str:
+    """Write `route` to `path` in the format given or named by its extension; returns the format."""
+    fmt = fmt or FORMATS.get(os.path.splitext(os.fspath(path))[1].lower())
+    makers = {"geojson": lambda: json.dumps(geojson(route, speed_kn=speed_kn), indent=1),
+              "gpx": lambda: gpx(route, speed_kn), "rtz": lambda: rtz(route, speed_kn),
+              "csv": lambda: csv_text(route, speed_kn),
+              "html": lambda: _html(route, speed_kn)}
+    if fmt not in makers:
+        raise ValueError(f"cannot tell the format of {os.fspath(path)!r}: use one of the extensions "
+                         f"{', '.join(sorted(FORMATS))} or fmt= one of {sorted(makers)}")
+    write_atomically(path, makers[fmt]())
+    return fmt
+
+
+def _html(route, speed_kn):
+    return html_text(route, speed_kn=speed_kn)
+
+
+def _opt(v, digits):
+    return "" if v is None else f"{v:.{digits}f}"
+
+
+def _need_latlon(route, what):
+    if not route.geographic:
+        raise ValueError(f"{what} needs latitudes and longitudes; this route is on a planar chart "
+                         "(give the chart lat/lon coordinates, or export GeoJSON or CSV)")
+
+
+def _describe(route, speed_kn):
+    s = route.summary(speed_kn)
+    text = f"{s['length_nm']:.1f} nm, cost {route.cost:.6g}, {s['legs']} legs"
+    return text + (f", {s['time_h']:.1f} h at {s['speed_kn']:g} kn" if "time_h" in s else "")
+
+
+def _xml(root) -> str:
+    ET.indent(root)
+    return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(root, encoding="unicode") + "\n"

@@ -1,0 +1,58 @@
+"""What the PNG and HTML maps share: the colours, pixel edges and axes, the route on them and
+the ice layer to colour by."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..base.sphere import unwrap_lon
+from ..ice.colours import guess_code
+
+ROUTE_COLOUR = "#ff00ff"  # magenta, outlined in black: absent from the WMO colours and the greys
+LAND_COLOUR = "#8c8c8c"
+COAST_COLOUR = "#303030"
+NO_DATA_COLOUR = "#ffffff"
+
+
+def edges(centres) -> np.ndarray:
+    """Cell edges from (regular or not) pixel centres."""
+    c = np.asarray(centres, float)
+    if c.size == 1:
+        return np.array([c[0] - 0.5, c[0] + 0.5])
+    mid = (c[:-1] + c[1:]) / 2
+    return np.concatenate([[2 * c[0] - mid[0]], mid, [2 * c[-1] - mid[-1]]])
+
+
+def axes_coords(chart):
+    """Pixel-centre (y, x): lat and continuous lon on geographic charts, y/x otherwise."""
+    if chart.geographic:
+        return np.asarray(chart.lat, float), unwrap_lon(chart.lon)
+    return np.asarray(chart.y, float), np.asarray(chart.x, float)
+
+
+def route_xy(route, chart):
+    """(x, y) of the route's vertices on the axes of axes_coords()."""
+    c = route.coords
+    if chart.geographic:
+        lon0 = unwrap_lon(chart.lon)[0]
+        return lon0 + ((c[:, 1] - lon0) % 360.0), c[:, 0]
+    return c[:, 1], c[:, 0]
+
+
+def ice_layer(route, ice, code):
+    """(values, code) of the ice to colour by: `ice` if given, else the route's environment
+    (stage_of_development / SA, else sea_ice_concentration / CT); (None, None) if none."""
+    if ice is None:
+        env = route.environment
+        for name, kind in (("stage_of_development", "stage"), ("SA", "stage"),
+                           ("sea_ice_concentration", "concentration"), ("CT", "concentration")):
+            if name in env and (code is None or code == kind):
+                return np.asarray(env[name], float), kind
+        return None, None
+    if hasattr(ice, "dims") and route.chart.template is not None:
+        ice = ice.transpose(*route.chart.template.dims)
+    ice = np.asarray(getattr(ice, "values", ice), float)
+    if ice.shape != route.chart.shape:
+        raise ValueError(f"ice has shape {ice.shape} but the chart has {route.chart.shape}; give "
+                         "the ice raster on the chart's grid")
+    return ice, code or guess_code(ice)

@@ -1,0 +1,261 @@
+"""Interactive HTML maps of a route (folium / Leaflet, an optional extra: pip install
+"seaway[plot]") that open offline: no tile server, and Leaflet's JavaScript and CSS inlined from
+the copy the django-js-lib-leaflet package ships instead of linked from a CDN.
+
+Layers: the chart as an image (ice in the WMO colour code, seaway.ice.colours, else the cost
+raster; land grey), the land around it (global-land-mask, shipped with that package), and the
+route with a popup at every waypoint: position, the course, distance and time of the leg that
+starts there, its cost, and the ice along it. Leaflet's map is Web Mercator, so the image stops
+at 85.05 degrees of latitude."""
+
+from __future__ import annotations
+
+import base64
+import html
+import re
+from importlib import resources
+
+import numpy as np
+
+from ..base import sphere as geo
+from ..base.files import write_atomically
+from ..ice.codes import STAGE_CODES
+from ..ice.colours import classes, guess_code
+from .style import LAND_COLOUR, ROUTE_COLOUR, edges, ice_layer, route_xy
+
+MERCATOR_LIMIT = 85.051128779806589  # Web Mercator's latitude limit
+MAX_IMAGE = 2000  # pixels along a side of the embedded chart image (larger charts subsampled)
+
+
+def _folium():
+    try:
+        import folium
+    except ImportError:
+        raise ImportError('interactive maps need folium: pip install "seaway[plot]"') from None
+    return folium
+
+
+def _leaflet_files():
+    """(leaflet.js, leaflet.css with its images as data URLs) from django-js-lib-leaflet."""
+    try:
+        root = resources.files("js_lib_leaflet") / "static" / "js_lib_leaflet"
+        js, css = (root / "leaflet.js").read_text("utf-8"), (root / "leaflet.css").read_text("utf-8")
+    except (ModuleNotFoundError, FileNotFoundError):
+        raise ImportError('offline HTML maps need Leaflet\'s files: pip install "seaway[plot]" '
+                          "(django-js-lib-leaflet)") from None
+
+    def inline(match):
+        data = (root / match.group(1)).read_bytes()
+        return f"url(data:image/png;base64,{base64.b64encode(data).decode('ascii')})"
+    return js, re.sub(r"url\((images/[\w.-]+\.png)\)", inline, css)
+
+
+def _inline_leaflet(folium):
+    """An element that puts Leaflet itself into the page's <head> (under the names folium uses
+    for its CDN links, which the map no longer adds)."""
+    from branca.element import Element, MacroElement
+
+    class InlineLeaflet(MacroElement):
+        def render(self, **kwargs):
+            js, css = _leaflet_files()
+            head = self.get_root().header
+            head.add_child(Element(f"<style>{css}</style>"), name="leaflet_css")
+            head.add_child(Element(f"<script>{js}</script>"), name="leaflet")
+            super().render(**kwargs)
+    return InlineLeaflet()
+
+
+def _popup_element(text: str, max_width: int = 320):
+    """A Leaflet popup bound to its parent marker, its HTML given as a string: folium.Popup
+    builds its content with jQuery, which an offline page does not load."""
+    from branca.element import MacroElement
+    from jinja2 import Template
+
+    class Popup(MacroElement):
+        _template = Template(
+            "{% macro script(this, kwargs) %}"
+            "{{ this._parent.get_name() }}.bindPopup({{ this.text|tojson }}, "
+            "{maxWidth: {{ this.max_width }}});"
+            "{% endmacro %}")
+
+        def __init__(self):
+            super().__init__()
+            self._name = "Popup"
+            self.text, self.max_width = text, int(max_width)
+    return Popup()
+
+
+def _mercator_rows(rgba, lat_edges):
+    """Resample image rows (north first, regular in latitude between `lat_edges`) to rows regular
+    in Web Mercator y, nearest row (class colours are not blended)."""
+    def merc(lat):
+        return np.degrees(np.arcsinh(np.tan(np.radians(lat))))
+    north = min(float(lat_edges[0]), MERCATOR_LIMIT)
+    south = max(float(lat_edges[-1]), -MERCATOR_LIMIT)
+    rows = rgba.shape[0]
+    y = merc(north) + (np.arange(rows) + 0.5) / rows * (merc(south) - merc(north))
+    lat = np.degrees(np.arctan(np.sinh(np.radians(y))))
+    index = np.clip(np.searchsorted(-np.asarray(lat_edges), -lat) - 1, 0, rows - 1)
+    return rgba[index], (south, north)
+
+
+def _chart_image(route, ice, code):
+    """(RGBA uint8 image north-up, lat edges north first, lon edges, layer name, legend rows)."""
+    chart = route.chart
+    k = max(1, int(np.ceil(max(chart.shape) / MAX_IMAGE)))
+    land = np.zeros(chart.shape, bool) if chart.land is None else chart.land.astype(bool)
+    layer, kind = ice_layer(route, ice, code)
+    rgba = np.zeros(chart.shape + (4,), np.uint8)
+    legend = []
+    if layer is not None:
+        index, table = classes(layer, kind)
+        colours = np.array([rgb for _, rgb in table], np.uint8).reshape(-1, 3)
+        ok = index >= 0
+        rgba[ok, :3], rgba[ok, 3] = colours[index[ok]], 255
+        legend = [table[i] for i in np.unique(index[ok & ~land])]
+        name = f"ice: WMO colour code by {'stage of development' if kind == 'stage' else 'total concentration'}"
+    else:
+        from matplotlib import colormaps
+        v = np.asarray(chart.values, float)
+        ok = np.isfinite(v) & (v >= 0)
+        lo, hi = (float(v[ok].min()), float(v[ok].max())) if ok.any() else (0.0, 1.0)
+        rgba[ok] = (colormaps["viridis"]((v[ok] - lo) / (hi - lo or 1.0)) * 255).astype(np.uint8)
+        name = f"cost per unit length ({lo:.3g} dark to {hi:.3g} light)"
+    rgba[land] = [int(LAND_COLOUR[i:i + 2], 16) for i in (1, 3, 5)] + [255]
+    lat = np.asarray(chart.lat, float)[::k]
+    lon = geo.unwrap_lon(chart.lon)[::k]
+    rgba = rgba[::k, ::k]
+    if lat[0] < lat[-1]:  # the image goes north-up ...
+        lat, rgba = lat[::-1], rgba[::-1]
+    if lon[0] > lon[-1]:  # ... and west to east
+        lon, rgba = lon[::-1], rgba[:, ::-1]
+    return rgba, edges(lat), edges(lon), name, legend
+
+
+def _land_around(bounds):
+    """RGBA image of the land (global-land-mask) over (south, north, west, east), north-up."""
+    from global_land_mask import globe
+    south, north, west, east = bounds
+    lat = np.linspace(north, south, 400)
+    lon = np.linspace(west, east, 800)
+    land = globe.is_land(lat[:, None], (lon[None, :] + 180.0) % 360.0 - 180.0)
+    rgba = np.zeros(land.shape + (4,), np.uint8)
+    rgba[land] = [int(LAND_COLOUR[i:i + 2], 16) for i in (1, 3, 5)] + [255]
+    return rgba, edges(lat), edges(lon)
+
+
+def _dms(value, pos, neg, width):
+    hemi = pos if value >= 0 else neg
+    deg, minutes = divmod(abs(value) * 60.0, 60.0)
+    return f"{int(deg):0{width}d}&deg;{minutes:04.1f}'{hemi}"
+
+
+def _ice_text(name, mean, high):
+    if name in ("stage_of_development", "SA") and np.isfinite(high) and int(high) in STAGE_CODES:
+        return f"{name}: up to {STAGE_CODES[int(high)][0]} (code {int(high)})"
+    return f"{name}: mean {mean:.3g}, max {high:.3g}"
+
+
+def _popup(route, number, point, leg, speed_kn):
+    """The HTML of a waypoint's popup: its position and the leg that starts there."""
+    if route.geographic:
+        where = f"{_dms(point[0], 'N', 'S', 2)} {_dms(point[1] % 360 if point[1] > 180 else point[1], 'E', 'W', 3)}"
+    else:
+        where = f"y {point[0]:.6g}, x {point[1]:.6g}"
+    lines = [f"<b>waypoint {number}</b>", where]
+    if leg is None:
+        lines.append(f"end: {route.length:.1f} {'km' if route.geographic else 'units'}, "
+                     f"cost {route.cost:.6g} {html.escape(route.unit)}")
+    else:
+        dist = (f"{leg.distance_nm:.2f} nm ({leg.distance:.2f} km)" if leg.distance_nm is not None
+                else f"{leg.distance:.4g} units")
+        lines += [f"leg {leg.number}: course {leg.course:05.1f}&deg;, {dist}"]
+        if leg.time_h is not None:
+            lines.append(f"time {leg.time_h:.2f} h at {speed_kn:g} kn")
+        lines.append(f"cost {leg.cost:.6g} {html.escape(route.unit)}")
+        lines += [html.escape(_ice_text(n, *mv)) for n, mv in leg.environment.items()]
+    return "<br>".join(lines)
+
+
+def _legend(name, rows):
+    """A fixed legend box (plain HTML/CSS, no JavaScript library)."""
+    items = "".join(f'<div><span style="display:inline-block;width:14px;height:10px;'
+                    f'background:rgb{tuple(rgb)};border:1px solid #444;margin-right:4px"></span>'
+                    f"{html.escape(label)}</div>" for label, rgb in rows)
+    return ('<div style="position:fixed;bottom:20px;left:10px;z-index:1000;background:white;'
+            'padding:6px 8px;border:1px solid #888;font:12px sans-serif">'
+            f"<b>{html.escape(name)}</b>{items}</div>")
+
+
+def explore(route, *, ice=None, code=None, speed_kn=None, zoom_start=None):
+    """A folium.Map of the route over its chart (geopandas' explore() style): the chart image
+    (ice in the WMO colour code when the route carries ice or `ice` is given, else the cost),
+    the land around it, and the route with a popup per waypoint. Works offline (see the module).
+
+    ice, code: as in seaway.plot.plot_route. speed_kn: for the legs' times (default the
+    route's)."""
+    folium = _folium()
+    from branca.element import Element
+    if not route.geographic or route.latlon is not None:
+        raise ValueError("an interactive map needs a route on a lat/lon chart (not a planar or "
+                         "corridor chart); use seaway.plot.plot_route for a PNG")
+    if ice is not None:
+        name = "stage_of_development" if (code or _guess(ice)) == "stage" else "sea_ice_concentration"
+        route = route.with_environment({name: ice})
+    rgba, lat_e, lon_e, layer_name, legend = _chart_image(route, None, code)
+    x, y = route_xy(route, route.chart)
+    centre = [float(np.mean(y)), float(np.mean(x))]
+    m = folium.Map(location=centre, zoom_start=zoom_start or 4, tiles=None,
+                   control_scale=True)
+    m.default_js, m.default_css = [], []  # no CDN: _inline_leaflet puts Leaflet in the page
+    m.add_child(_inline_leaflet(folium))
+    south, north = float(lat_e.min()), float(lat_e.max())
+    pad = 0.15 * max(north - south, 1.0)
+    around = (max(south - pad, -MERCATOR_LIMIT), min(north + pad, MERCATOR_LIMIT),
+              float(lon_e.min()) - 2 * pad, float(lon_e.max()) + 2 * pad)
+    land, l_lat, l_lon = _land_around(around)
+    for image, lats, lons, label, opacity in ((land, l_lat, l_lon, "land (global-land-mask)", 1.0),
+                                             (rgba, lat_e, lon_e, layer_name, 0.85)):
+        image, (s, n) = _mercator_rows(image, lats)
+        folium.raster_layers.ImageOverlay(
+            image, bounds=[[s, float(lons[0])], [n, float(lons[-1])]], opacity=opacity,
+            name=label, pixelated=True).add_to(m)
+    speed = route.speed_kn if speed_kn is None else speed_kn
+    legs = route.legs(speed)
+    line = folium.FeatureGroup(name="route").add_to(m)
+    positions = np.column_stack([y, x])
+    folium.PolyLine(positions.tolist(), color=ROUTE_COLOUR, weight=4,
+                    tooltip=f"{html.escape(route.name)}: {route.length:.1f} km "
+                            f"({route.length / geo.KM_PER_NM:.1f} nm), cost {route.cost:.6g}"
+                    ).add_to(line)
+    for n, i in enumerate(route.waypoint_index):
+        leg = legs[n] if n < len(legs) else None
+        end = n in (0, len(route.waypoint_index) - 1)
+        marker = folium.CircleMarker(positions[i].tolist(), radius=7 if end else 4, weight=1,
+                                     color="black", fill=True, fill_opacity=1.0,
+                                     fill_color=ROUTE_COLOUR if end else "white").add_to(line)
+        marker.add_child(_popup_element(_popup(route, n + 1, route.coords[i], leg, speed)))
+    folium.LayerControl(collapsed=False).add_to(m)
+    if legend:
+        m.get_root().html.add_child(Element(_legend(layer_name, legend)))
+    m.fit_bounds([[float(np.min(y)), float(np.min(x))], [float(np.max(y)), float(np.max(x))]])
+    return m
+
+
+def _guess(ice):
+    return guess_code(np.asarray(getattr(ice, "values", ice), float))
+
+
+def html_text(route, **options) -> str:
+    """The page of explore(route, **options) as one self-contained HTML string."""
+    page = explore(route, **options).get_root().render()
+    remote = re.findall(r"<(?:script|link)\b[^>]*\b(?:src|href)\s*=\s*[\"']?(?:https?:)?//[^>]*>",
+                        page, flags=re.I)
+    if remote:  # a folium element brought its own CDN link: the page would not work offline
+        raise RuntimeError(f"the HTML map would load {remote[0]!r} from the network")
+    return page
+
+
+def to_html(route, path, **options) -> None:
+    """Write explore(route, **options) to `path` as one self-contained HTML file (atomically)."""
+    write_atomically(path, html_text(route, **options))

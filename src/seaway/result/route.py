@@ -1,0 +1,257 @@
+"""The Route a search returns: its pixels, coordinates, cost and length, and the readable form a
+navigator uses: waypoints at the course changes, legs with course, distance, time and cost."""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .._core import haversine_km
+from ..base import sphere as geo
+from ..base.validate import number
+from ..chart.legs import index_coords, leg_path
+from ..chart.raster import Chart
+from ..models.base import CostModel, EdgeCost
+from .environment import LEAST, along, extreme_name, least_depth  # noqa: F401 - extreme_name: part of this API
+from .table import route_table
+
+
+@dataclass
+class Leg:
+    """One leg between consecutive waypoints. Course: initial great-circle course, degrees true
+    (planar charts: grid bearing from +y towards +x). distance: km (geographic) or chart units."""
+
+    number: int
+    start: tuple
+    end: tuple
+    course: float
+    distance: float
+    distance_nm: float | None
+    speed_kn: float | None
+    time_h: float | None
+    cost: float
+    environment: dict  # name -> (mean, max) of the chart variable along the leg ((mean, min) for LEAST)
+
+
+@dataclass
+class Route:
+    chart: Chart = field(repr=False)
+    cost: float
+    pixels: np.ndarray  # (n, 2) row, col; both ends included
+    method: str = "astar"
+    neighbourhood: int = 5
+    #: What the route minimises (seaway.models); its unit is .unit.
+    model: CostModel = field(default_factory=EdgeCost)
+    stats: dict = field(default_factory=dict, repr=False)
+    #: (n, 2) fractional (row, col) of the vertices when they are not pixel centres (smoothed).
+    points: np.ndarray | None = field(default=None, repr=False)
+    #: (n, 2) lat/lon of the vertices when the chart is not a lat/lon grid (corridor routes).
+    latlon: np.ndarray | None = field(default=None, repr=False)
+    #: Cost of each step between vertices (computed from the chart when None).
+    step_costs: np.ndarray | None = field(default=None, repr=False)
+    speed_kn: float | None = None
+    #: name -> (rows, cols) array on the chart's grid: ice or weather reported along each leg.
+    environment: dict = field(default_factory=dict, repr=False)
+    name: str = "seaway route"
+
+    @property
+    def vertices(self) -> np.ndarray:
+        """(n, 2) fractional (row, col) of the route's vertices."""
+        return self.pixels.astype(float) if self.points is None else np.asarray(self.points, float)
+
+    @property
+    def coords(self) -> np.ndarray:
+        """(n, 2) lat/lon (geographic charts) or y/x (planar charts) of the route's vertices."""
+        if self.latlon is not None:
+            return np.asarray(self.latlon, float)
+        if self.points is not None:
+            return index_coords(self.chart, self.points)
+        return self.chart.pixel_coords(self.pixels)
+
+    @property
+    def edge_cost(self) -> str:
+        """The name of the route's cost model ("max", "mean", "integral", "time", ...)."""
+        return self.model.name
+
+    @property
+    def unit(self) -> str:
+        """The unit of .cost and of each leg's cost."""
+        return self.model.unit(self.geographic)
+
+    @property
+    def geographic(self) -> bool:
+        return self.latlon is not None or self.chart.geographic
+
+    @property
+    def leg_lengths(self) -> np.ndarray:
+        """Length of each step: km on geographic charts, grid units on planar charts."""
+        if len(self.pixels if self.points is None else self.points) < 2:
+            return np.zeros(0)
+        c = self.coords
+        if self.geographic:
+            return np.array([haversine_km(a[0], a[1], b[0], b[1]) for a, b in zip(c[:-1], c[1:])])
+        g = self.chart.grid  # planar charts never wrap
+        d = np.diff(self.vertices, axis=0)
+        return np.hypot(d[:, 0] * g.dy, d[:, 1] * g.dx)
+
+    @property
+    def length(self) -> float:
+        """Total length: km on geographic charts, grid units on planar charts."""
+        return float(self.leg_lengths.sum())
+
+    # -- readable form -----------------------------------------------------------------------
+    def segments(self):
+        """The cost and land test of arbitrary legs under the route's model (ValueError for a
+        model that prices only the engine's steps)."""
+        seg = self.__dict__.get("_segments")
+        if seg is None:
+            seg = self.__dict__["_segments"] = self.model.segments(self.chart, self.neighbourhood)
+        return seg
+
+    def costs(self) -> np.ndarray:
+        """Cost of each step between consecutive vertices (they sum to .cost)."""
+        if self.step_costs is None:
+            seg, v = self.segments(), self.vertices
+            self.step_costs = np.array([seg.leg(a, b)[0] for a, b in zip(v[:-1], v[1:])])
+        return np.asarray(self.step_costs, float)
+
+    @property
+    def waypoint_index(self) -> np.ndarray:
+        """Indices of the vertices that are waypoints: both ends and every course change (on a
+        corridor route, every node: each leg is a great circle between nodes)."""
+        v = self.vertices
+        if len(v) < 3 or self.latlon is not None:
+            return np.arange(len(v))
+        d = np.diff(v, axis=0)
+        cross = d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0]
+        dot = (d[:-1] * d[1:]).sum(axis=1)
+        scale = np.hypot(*d[:-1].T) * np.hypot(*d[1:].T)
+        turn = (np.abs(cross) > 1e-9 * scale) | (dot <= 0)
+        return np.concatenate([[0], np.flatnonzero(turn) + 1, [len(v) - 1]])
+
+    @property
+    def waypoints(self) -> np.ndarray:
+        """(m, 2) lat/lon or y/x of the waypoints (ends and course changes)."""
+        return self.coords[self.waypoint_index]
+
+    @property
+    def course_changes(self) -> int:
+        return max(len(self.waypoint_index) - 2, 0)
+
+    def legs(self, speed_kn: float | None = None) -> list[Leg]:
+        """The legs between consecutive waypoints, with course, distance, time, cost and the mean
+        and maximum of each environment variable along the leg. speed_kn defaults to .speed_kn."""
+        speed = self.speed_kn if speed_kn is None else number(speed_kn, "speed_kn", above=0)
+        wi, c = self.waypoint_index, self.coords
+        steps, costs = self.leg_lengths, self.costs()
+        out = []
+        for n, (i, j) in enumerate(zip(wi[:-1], wi[1:]), start=1):
+            a, b = c[i], c[j]
+            dist = float(steps[i:j].sum())
+            if self.geographic:
+                course = float(geo.course_deg(a[0], a[1], b[0], b[1]))
+                nm = dist / geo.KM_PER_NM
+            else:
+                course = float(np.degrees(np.arctan2(b[1] - a[1], b[0] - a[0])) % 360.0)
+                nm = None
+            hours = nm / speed if (speed and nm is not None) else None
+            out.append(Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm, speed,
+                           hours, float(costs[i:j].sum()), self._along(i, j)))
+        return out
+
+    def sample_pixels(self, i: int = 0, j: int | None = None) -> np.ndarray:
+        """(n, 2) (row, col) of the pixels crossed between vertices i and j (default the whole
+        route), sampled every half pixel along each step; columns may pass the chart's last
+        on charts that wrap (take them modulo the width)."""
+        v = self.vertices[i:(len(self.vertices) if j is None else j + 1)]
+        half = (self.neighbourhood - 1) // 2
+        pts = [v[:1]]
+        for p, q in zip(v[:-1], v[1:]):  # the leg's own path: a great circle on lat/lon charts
+            step = bool(np.all(p == np.round(p)) and np.all(q == np.round(q))
+                        and np.abs(q - p).max() <= half)
+            path = leg_path(self.chart, p, q, step)
+            for a, b in zip(path[:-1], path[1:]):
+                m = max(int(np.ceil(2 * np.abs(b - a).max())), 1)
+                pts.append(a + np.linspace(0, 1, m + 1)[1:, None] * (b - a))
+        return np.rint(np.concatenate(pts)).astype(np.int64)
+
+    def _along(self, i: int, j: int) -> dict:
+        return along(self, i, j)
+
+    def with_environment(self, data, names=None) -> Route:
+        """A copy that reports `data` along each leg: an xarray.Dataset or a dict of DataArrays or
+        arrays on the chart's grid (variables of another shape are skipped)."""
+        env = dict(self.environment)
+        for name in (names or list(data.keys())):
+            arr = data[name]
+            if hasattr(arr, "dims") and self.chart.template is not None:
+                if set(arr.dims) != set(self.chart.template.dims):
+                    continue
+                arr = arr.transpose(*self.chart.template.dims)
+            arr = np.asarray(getattr(arr, "values", arr))
+            if arr.shape == self.chart.shape and np.issubdtype(arr.dtype, np.number):
+                env[str(name)] = arr
+        return dataclasses.replace(self, environment=env)
+
+    def summary(self, speed_kn: float | None = None) -> dict:
+        legs = self.legs(speed_kn)
+        speed = self.speed_kn if speed_kn is None else speed_kn
+        out = {"name": self.name, "start": tuple(map(float, self.coords[0])),
+               "end": tuple(map(float, self.coords[-1])), "cost": self.cost,
+               "length": self.length, "length_units": "km" if self.geographic else "grid units",
+               "legs": len(legs), "course_changes": self.course_changes,
+               "edge_cost": self.edge_cost, "cost_unit": self.unit,
+               "neighbourhood": self.neighbourhood}
+        if self.geographic:
+            out["length_nm"] = self.length / geo.KM_PER_NM
+            if speed:
+                out.update(speed_kn=float(speed), time_h=out["length_nm"] / speed)
+        for name in self.environment:
+            vals = [leg.environment[name][1] for leg in legs]
+            if name not in LEAST:
+                out[f"max_{name}"] = float(np.nanmax(vals)) if vals else np.nan
+        if "depth" in self.environment:  # for depth the least matters (seaway.depth)
+            out["least_depth_m"], out["least_depth_at"] = least_depth(self, self.environment["depth"])
+        return out
+
+    def __str__(self) -> str:
+        return route_table(self)
+
+    def smoothed(self, **options) -> Route:
+        """Any-angle smoothing (see seaway.smooth.smooth)."""
+        from ..smoothing import smooth
+        return smooth(self, **options)
+
+    def explore(self, **options):
+        """An interactive folium.Map of the route over its chart, working offline (see
+        seaway.webmap.explore for the options)."""
+        from ..output.webmap import explore
+        return explore(self, **options)
+
+    def to_html(self, path, **options) -> None:
+        """Write the interactive map (explore()) to one self-contained HTML file, atomically."""
+        from ..output.webmap import to_html
+        to_html(self, path, **options)
+
+    def to_geojson(self) -> dict:
+        """A GeoJSON Feature (LineString) with the route's cost and length as properties.
+
+        Geographic charts give [lon, lat] positions with longitudes made continuous along the
+        route (a route across the antimeridian runs past 180 rather than jumping back)."""
+        c = self.coords
+        if self.geographic:
+            lon = geo.unwrap_lon(c[:, 1])
+            positions = np.column_stack([lon, c[:, 0]])
+        else:
+            positions = c[:, ::-1]
+        props = {"cost": self.cost, "length": self.length,
+                 "length_units": "km" if self.geographic else "grid units",
+                 "method": self.method, "neighbourhood": self.neighbourhood,
+                 "edge_cost": self.edge_cost, "cost_unit": self.unit}
+        coords = positions.tolist()
+        if len(coords) == 1:
+            coords = coords * 2  # a LineString needs two positions; start == end
+        return {"type": "Feature", "geometry": {"type": "LineString", "coordinates": coords},
+                "properties": props}

@@ -1,0 +1,70 @@
+"""str(route): a summary line and a table of the legs, as a navigator reads a passage plan."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .environment import extreme_name
+
+
+def fmt_lat(v: float) -> str:
+    """Degrees and decimal minutes, e.g. 70-18.00N."""
+    d, m = divmod(round(abs(v) * 60, 2), 60)
+    return f"{int(d):02d}-{m:05.2f}{'N' if v >= 0 else 'S'}"
+
+
+def fmt_lon(v: float) -> str:
+    v = (v + 180.0) % 360.0 - 180.0
+    d, m = divmod(round(abs(v) * 60, 2), 60)
+    return f"{int(d):03d}-{m:05.2f}{'E' if v >= 0 else 'W'}"
+
+
+def fmt_point(p, geographic: bool) -> str:
+    if geographic:
+        return f"{fmt_lat(p[0])} {fmt_lon(p[1])}"
+    return f"y {p[0]:.6g} x {p[1]:.6g}"
+
+
+def fmt_hours(h: float) -> str:
+    d, rest = divmod(h, 24.0)
+    return f"{int(d)} d {rest:.1f} h" if d else f"{rest:.1f} h"
+
+
+def route_table(route) -> str:
+    legs = route.legs()
+    geo = route.geographic
+    s = route.summary()
+    units = "km" if geo else "units"
+    head = (f"{route.name}: {fmt_point(s['start'], geo)} -> {fmt_point(s['end'], geo)}; "
+            f"{len(legs)} legs, {route.course_changes} course changes")
+    dist = f"{s['length']:.1f} {units}" + (f" ({s['length_nm']:.1f} nm)" if geo else "")
+    lines = [head, f"distance {dist}; cost {route.cost:.6g} {route.unit} (edge cost {route.edge_cost!r}, "
+                   f"{route.neighbourhood}x{route.neighbourhood} stencil)"]
+    if "time_h" in s:
+        lines[-1] += f"; {fmt_hours(s['time_h'])} at {s['speed_kn']:g} kn"
+    if np.isfinite(s.get("least_depth_m", np.nan)):
+        lines.append(f"least depth {s['least_depth_m']:.1f} m at {fmt_point(s['least_depth_at'], geo)}")
+    env = list(route.environment)
+    cols = ["leg", "from", "to", "course", "nm" if geo else "", units, "kn", "hours", "cost"]
+    cols += [f"{n} mean/{extreme_name(n)}" for n in env]
+    rows = []
+    for leg in legs:
+        row = [str(leg.number), fmt_point(leg.start, geo), fmt_point(leg.end, geo),
+               f"{leg.course:05.1f}", f"{leg.distance_nm:.1f}" if geo else "",
+               f"{leg.distance:.1f}" if geo else f"{leg.distance:.4g}",
+               f"{leg.speed_kn:g}" if leg.speed_kn else "-",
+               f"{leg.time_h:.1f}" if leg.time_h is not None else "-", f"{leg.cost:.5g}"]
+        for n in env:
+            mean, top = leg.environment[n]
+            row.append("-" if np.isnan(top) else f"{mean:.3g}/{top:.3g}")
+        rows.append(row)
+    keep = [k for k, c in enumerate(cols) if c or any(r[k] for r in rows)]
+    cols = [cols[k] for k in keep]
+    rows = [[r[k] for k in keep] for r in rows]
+    width = [max(len(c), *(len(r[k]) for r in rows)) if rows else len(c) for k, c in enumerate(cols)]
+    left = {"from", "to"}
+    def line(cells):
+        return "  ".join(c.ljust(w) if cols[k] in left else c.rjust(w)
+                         for k, (c, w) in enumerate(zip(cells, width))).rstrip()
+    lines += [line(cols)] + [line(r) for r in rows]
+    return "\n".join(lines)

@@ -1,0 +1,269 @@
+"""Built-in charts: a synthetic winter Kara Sea on the real coastline and a planar cost raster
+for benchmarks; paper 000's ice impact tables are re-exported from seaway.ice.impact.
+
+The Kara Sea chart is synthetic ice (made up, but shaped like a late-winter chart: fast ice along
+the coasts, a flaw polynya seaward of it, thicker first-year ice towards the north-east) laid on
+the real GLOBE coastline of the `global-land-mask` package. It is a demonstration chart, not an
+observation: never navigate by it."""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+
+from .base.fields import distance_km, gaussian, resample, smooth_noise
+from .base.units import EARTH_RADIUS_KM, KM_PER_DEG  # noqa: F401 - EARTH_RADIUS_KM: part of this API
+from .base.validate import number
+from .ice import classes as ice_classes
+from .ice.codes import STAGE_CODES
+
+# Paper 000's impact tables and ice_impact() live in seaway.ice.impact (with tables for every
+# class); re-exported here so seaway.charts.ice_impact keeps working.
+from .ice.impact import ICE_IMPACT, ice_impact  # noqa: F401
+
+#: Extent of kara_sea() in degrees: pixel edges, not centres.
+KARA_EXTENT = {"lat_north": 82.0, "lat_south": 68.0, "lon_west": 50.0, "lon_east": 110.0}
+
+#: The WMO stages of development the synthetic chart uses: code -> (name, typical thickness
+#: range in m), from seaway.ice.codes. New ice and nilas are both "< 10 cm"; the chart puts new
+#: ice below 5 cm.
+STAGES = {c: STAGE_CODES[c] for c in (55, 81, 82, 83, 84, 85, 86, 87, 88, 89, 91, 93)}
+
+#: Classes without a table of their own in ICE_IMPACT -> the RS class whose table they use.
+ICE_CLASS_ALIASES = {n: c.rs_class for n, c in ice_classes.CLASSES.items() if n not in ICE_IMPACT}
+
+
+def _grid(shape):
+    rows, cols = (int(n) for n in shape)
+    if rows < 2 or cols < 2:
+        raise ValueError(f"shape must be (rows, cols) with at least 2 of each, got {shape!r}")
+    e = KARA_EXTENT
+    dlat = (e["lat_north"] - e["lat_south"]) / rows
+    dlon = (e["lon_east"] - e["lon_west"]) / cols
+    lat = e["lat_north"] - (np.arange(rows) + 0.5) * dlat
+    lon = e["lon_west"] + (np.arange(cols) + 0.5) * dlon
+    return lat, lon
+
+
+def _coarse_land_distance(shape=(380, 460), sub=4, max_km=200.0):
+    """Distance (km) to the nearest land, and the land fraction within ~60 km, on a coarse grid
+    (~4 km cells) whose land is 'any GLOBE land among sub x sub samples of the cell'."""
+    from global_land_mask import globe
+
+    lat, lon = _grid((shape[0] * sub, shape[1] * sub))
+    land = globe.is_land(lat[:, None], lon[None, :])
+    land = land.reshape(shape[0], sub, shape[1], sub).any(axis=(1, 3))
+    clat, _ = _grid(shape)
+    e = KARA_EXTENT
+    dy = (e["lat_north"] - e["lat_south"]) / shape[0] * KM_PER_DEG
+    dx = (e["lon_east"] - e["lon_west"]) / shape[1] * KM_PER_DEG * np.cos(np.radians(clat))
+    return distance_km(land, dy, dx, max_km), gaussian(land.astype(float), 60.0 / dy)
+
+
+def _stage_from_thickness(h, fy_lumped):
+    stage = np.select(
+        [h <= 0, h < 0.05, h < 0.10, h < 0.15, h < 0.30, h < 0.70, h < 1.20],
+        [55, 81, 82, 84, 85, 87, 91], default=93).astype(np.float32)
+    lump = fy_lumped & (h >= 0.30) & (h < 2.0)  # an analyst's undivided first-year ice
+    stage[lump] = 86
+    return stage
+
+
+@lru_cache(maxsize=4)
+def _kara_sea(shape):
+    import xarray as xr
+    from global_land_mask import globe
+
+    lat, lon = _grid(shape)
+    rows, cols = shape
+    land = globe.is_land(lat[:, None], lon[None, :])
+
+    # Smooth fields on fixed coarse grids, so every resolution shows the same ice.
+    dist_c, enclosed_c = _coarse_land_distance()
+    d = np.where(land, np.float32(0), resample(dist_c, rows, cols))
+    enclosed = resample(enclosed_c, rows, cols)
+    rng = np.random.default_rng(20210401)
+    n = [resample(smooth_noise(rng, (190, 230), sigma), rows, cols) for sigma in (6, 6, 6, 6, 4, 6)]
+    la, lo = lat.astype(np.float32)[:, None], lon.astype(np.float32)[None, :]
+    ne = np.clip(0.55 * (la - 68) / 14 + 0.45 * (lo - 50) / 60, 0, 1)
+    # Atlantic water keeps the south-east Barents Sea, west of Novaya Zemlya, thin and open.
+    km2 = ((la - 70.5) * KM_PER_DEG) ** 2 + ((lo - 47) * KM_PER_DEG * np.cos(np.radians(la))) ** 2
+    warm = np.exp(-km2 * (0.6 + 0.8 * n[3]) / (2 * 250.0**2))  # a ragged edge
+    # Signed km east of the line along Novaya Zemlya (70.5 N 57 E to 77 N 68.5 E); < 0 on the
+    # Barents side, which gets no flaw polynyas.
+    coslat = np.cos(np.radians(73.7))
+    ax, ay = 11.5 * coslat, 6.5  # the line's direction, in degrees of latitude
+    east_km = ((lo - 57) * coslat * ay - (la - 70.5) * ax) * KM_PER_DEG / np.hypot(ax, ay)
+
+    # Fast ice: wide along long coasts (not round small islands), wider to the north-east, and
+    # filling gulfs and straits (enclosed water).
+    w_fast = 5 + (25 * ne + 20 * n[0]) * (1 - warm) * np.clip(enclosed / 0.2, 0, 1)
+    w_fast += 150 * np.clip((enclosed - 0.4) / 0.25, 0, 1)
+    fast = ~land & (d < w_fast)
+    h_fast = (1.35 + 0.5 * ne + 0.2 * (n[1] - 0.5)) * (1 - 0.4 * np.clip(d / w_fast, 0, 1))
+
+    # Drifting ice, thicker to the north-east, with refrozen leads; a flaw polynya (open water,
+    # then new ice, nilas and grey ice) where offshore winds push it off the fast ice edge.
+    h_pack = (0.45 + 1.25 * ne + 0.35 * (n[2] - 0.5)) * np.clip(1 - 1.2 * warm, 0, 1)
+    h_pack *= 1 - 0.75 * np.clip((n[3] - 0.8) / 0.15, 0, 1)
+    active = np.clip(3 * n[4] - 1.3, 0, 1) * np.clip(0.5 + east_km / 100, 0, 1)
+    e = np.maximum(d - w_fast, 0)
+    open_km, ramp_km = 12 * active, 45 * active
+    ramp = np.ones_like(e)
+    np.divide(e - open_km, ramp_km, out=ramp, where=ramp_km > 0)
+    h = np.where(fast, h_fast, h_pack * np.clip(ramp, 0, 1) ** 1.5)
+    h[(h < 0.01) | land] = 0
+
+    conc = np.where(fast, 10, (8 + 3 * n[5]) * np.clip(h / 0.15, 0, 1))
+    conc = np.clip(np.rint(conc), 0, 10).astype(np.float32)
+    h[conc == 0] = 0
+    stage = _stage_from_thickness(h, n[5] > 0.8)
+    conc[land], stage[land], h[land] = np.nan, np.nan, np.nan  # so ice_impact() gives inf
+    return _dataset(xr, lat, lon, land, conc, stage, h)
+
+
+def _dataset(xr, lat, lon, land, conc, stage, h):
+    codes = sorted(STAGES)
+    coords = {
+        "lat": ("lat", lat, {"standard_name": "latitude", "units": "degrees_north",
+                             "long_name": "latitude of pixel centre", "axis": "Y"}),
+        "lon": ("lon", lon, {"standard_name": "longitude", "units": "degrees_east",
+                             "long_name": "longitude of pixel centre", "axis": "X"}),
+    }
+    dims = ("lat", "lon")
+    data = {
+        "land": (dims, land, {"standard_name": "land_binary_mask", "units": "1",
+                              "long_name": "land (GLOBE 1 km land mask at the pixel centre)"}),
+        "sea_ice_concentration": (dims, conc, {
+            "standard_name": "sea_ice_area_fraction", "units": "0.1",
+            "long_name": "total ice concentration CT in tenths (0 ice free ... 10 = 10/10; "
+                         "NaN on land)"}),
+        "stage_of_development": (dims, stage, {
+            "long_name": "stage of development of the ice (WMO SIGRID-3 code, SA; NaN on land)",
+            "units": "1",
+            "flag_values": np.array(codes, dtype=np.float32),
+            "flag_meanings": " ".join(STAGES[c][0].replace(" ", "_").replace(",", "")
+                                      for c in codes),
+            "references": "JCOMM Technical Report 23 (SIGRID-3, v3.0)"}),
+        "ice_thickness": (dims, h, {"standard_name": "sea_ice_thickness", "units": "m",
+                                    "long_name": "sea ice thickness (NaN on land)"}),
+    }
+    attrs = {
+        "title": "Kara Sea in late winter: synthetic ice chart on the real coastline",
+        "source": "synthetic ice (deterministic smooth random fields, seaway.charts.kara_sea) on "
+                  "the real GLOBE coastline from the global-land-mask package",
+        "comment": "A demonstration chart, not an observation; do not navigate by it. Rows run "
+                   "north to south (lat descending).",
+        "Conventions": "CF-1.8",
+    }
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def kara_sea(shape=(1900, 2300)):
+    """A synthetic late-winter ice chart of the Kara Sea on the real coastline (xarray.Dataset).
+
+    The grid is regular in lat/lon, 82-68 N by 50-110 E (KARA_EXTENT, pixel edges); `lat` holds
+    pixel centres descending north to south (row 0 is the northern edge), `lon` ascending. At the
+    default (1900, 2300) a pixel is 0.82 km north-south and 0.4-1.1 km east-west (0.75 km at
+    75 N), like the ~2300 x 1900-pixel chart of paper 000. Variables: land (bool, GLOBE),
+    sea_ice_concentration (CT, tenths), stage_of_development (WMO SIGRID-3 codes), ice_thickness
+    (m); the last three are float32 and NaN on land, so `ice_impact(ds.stage_of_development)` is
+    inf there. Deterministic; cached, and each call returns its own copy.
+
+    Example: ``ds = kara_sea(); u = ice_impact(ds.stage_of_development, "Arc7");
+    seaway.route(u, (70.3, 58.5), (77.7, 103.99))``"""
+    if isinstance(shape, (int, np.integer)) or len(shape) != 2:
+        raise ValueError(f"shape must be (rows, cols), got {shape!r}")
+    _grid(shape)
+    return _kara_sea(tuple(int(n) for n in shape)).copy(deep=True)
+
+
+def synthetic_endpoints(shape=(1900, 2300)):
+    """(row, col) start near the south-west corner and end near the north-east corner of
+    synthetic_sea(shape); both are water and joined by water (rows run north to south)."""
+    rows, cols = (int(n) for n in shape)
+    return (rows - 1 - rows // 20, cols // 20), (rows // 20, cols - 1 - cols // 20)
+
+
+SYNTHETIC_START, SYNTHETIC_END = synthetic_endpoints()
+
+
+def synthetic_sea(shape=(1900, 2300), land_fraction=0.3, seed=0):
+    """A deterministic planar cost raster for benchmarks: land (np.inf) in a few large blobs and
+    islands covering `land_fraction` of the pixels, smooth ice-like costs 1-30 over the water
+    (open water 1-2). A winding channel keeps synthetic_endpoints(shape) connected by water."""
+    rows, cols = (int(n) for n in shape)
+    if rows < 20 or cols < 20:
+        raise ValueError(f"shape must be at least (20, 20), got {shape!r}")
+    number(land_fraction, "land_fraction", minimum=0, maximum=0.9, what="a number in [0, 0.9)")
+    if land_fraction == 0.9:
+        raise ValueError("land_fraction must be a number in [0, 0.9), got 0.9")
+    rng = np.random.default_rng(seed)
+    coarse = (max(rows // 8, 20), max(cols // 8, 20))
+    cy, cx = np.mgrid[0:coarse[0], 0:coarse[1]] / np.array(coarse).reshape(2, 1, 1)
+    blobs = np.zeros(coarse)
+    for y, x, r in zip(rng.uniform(0.1, 0.9, 6), rng.uniform(0.1, 0.9, 6), rng.uniform(0.06, 0.12, 6)):
+        blobs += np.exp(-((cy - y) ** 2 + (cx - x) ** 2) / (2 * r**2))
+    relief = resample(blobs + 0.7 * smooth_noise(rng, coarse, 2.0), rows, cols)
+    ice = resample(smooth_noise(rng, coarse, 4.0), rows, cols).astype(np.float64)
+
+    (r0, c0), (r1, c1) = synthetic_endpoints(shape)
+    knots = np.array([[r0, c0], [0.65 * rows, 0.45 * cols], [0.35 * rows, 0.55 * cols], [r1, c1]])
+    channel = _near_polyline(rows, cols, knots, max(3.0, 0.005 * min(rows, cols)))
+    free = relief[~channel]
+    k = int(round(land_fraction * rows * cols))
+    land = np.zeros((rows, cols), bool)
+    if k > 0:
+        threshold = np.partition(free, free.size - k)[free.size - k]
+        land = (relief >= threshold) & ~channel
+    cost = 1.0 + 29.0 * ice**2
+    cost[land] = np.inf
+    return cost
+
+
+def _near_polyline(rows, cols, knots, width):
+    """Pixels within `width` of the polyline through `knots` ((row, col) points)."""
+    r, c = np.mgrid[0:rows, 0:cols]
+    best = np.full((rows, cols), np.inf)
+    for a, b in zip(knots[:-1], knots[1:]):
+        ab = b - a
+        t = np.clip(((r - a[0]) * ab[0] + (c - a[1]) * ab[1]) / (ab @ ab), 0, 1)
+        np.minimum(best, np.hypot(r - a[0] - t * ab[0], c - a[1] - t * ab[1]), out=best)
+    return best <= width
+
+
+def kara_season(days=7, start="2026-07-01", melt_m_per_day=0.1, melted_m=0.5, shape=(380, 460)):
+    """A synthetic week (or `days`) of daily ice charts of the Kara Sea breaking up: kara_sea's
+    late-winter ice thinned by `melted_m` on the first chart and `melt_m_per_day` more each
+    day; ice thinner than 0.8 m opens in proportion (CT = round(CT x h / 0.8)), the stage
+    follows the thickness. A season Dataset for
+    seaway.ice.season (time, lat, lon): CT (tenths), SA (WMO code, NaN where ice free),
+    thickness (m), land; one chart a day at 00 UTC from `start`. Synthetic: never navigate by it."""
+    import xarray as xr
+
+    if not (isinstance(days, (int, np.integer)) and days >= 1):
+        raise ValueError(f"days must be a whole number of days >= 1, got {days!r}")
+    if not (np.isfinite(melt_m_per_day) and melt_m_per_day >= 0):
+        raise ValueError(f"melt_m_per_day must be >= 0 (m of ice a day), got {melt_m_per_day!r}")
+    ds = kara_sea(shape)
+    h0, ct0 = ds.ice_thickness.values, ds.sea_ice_concentration.values
+    ct, sa, h = [], [], []
+    for d in range(days):
+        hd = np.maximum(h0 - melted_m - melt_m_per_day * d, 0).astype(np.float32)
+        c = np.rint(ct0 * np.clip(hd / 0.8, 0, 1)).astype(np.float32)
+        hd[c == 0] = 0
+        s = _stage_from_thickness(hd, np.zeros(hd.shape, bool))
+        s[c == 0] = np.nan
+        land = ds.land.values
+        c[land], s[land], hd[land] = np.nan, np.nan, np.nan
+        ct.append(c), sa.append(s), h.append(hd)
+    dims = ("time", "lat", "lon")
+    time = np.datetime64(start, "D") + np.arange(days).astype("timedelta64[D]")
+    return xr.Dataset({"CT": (dims, np.array(ct), {"units": "0.1", "long_name": "total concentration"}),
+                       "SA": (dims, np.array(sa), {"long_name": "stage of development (WMO code)"}),
+                       "thickness": (dims, np.array(h), {"units": "m", "standard_name": "sea_ice_thickness"}),
+                       "land": (("lat", "lon"), ds.land.values)},
+                      coords={"time": time.astype("datetime64[ns]"), "lat": ds.lat, "lon": ds.lon},
+                      attrs={"title": f"Kara Sea breaking up: {days} synthetic daily charts from {start}",
+                             "comment": "synthetic (seaway.charts.kara_season); do not navigate by it"})

@@ -1,0 +1,15 @@
+"""Weather routing: forecasts of currents, wind and waves in (CF NetCDF, projected model grids),
+the quickest route (Khokhlov's wave speed loss and currents, exact for FIFO forecasts), the route
+of least wave danger by heading, the least time in danger when no safe route exists, fuel-optimal
+engine settings, and re-planning during the voyage."""
+
+from ..base.units import KNOTS_PER_MS
+from ..vessel import Vessel
+from .forecast import STANDARD_NAMES, find_fields, open_forecast, to_latlon
+from .fuel import FuelCurve, route_fuel, route_min_fuel, tradeoff
+from .grid import ForecastGrid
+from .routes import position_at, replan, rhumb_line_km, route_safest, route_time
+
+__all__ = ["ForecastGrid", "Vessel", "route_time", "route_safest", "rhumb_line_km", "position_at",
+           "replan", "KNOTS_PER_MS", "STANDARD_NAMES", "find_fields", "open_forecast", "to_latlon",
+           "FuelCurve", "route_fuel", "route_min_fuel", "tradeoff"]

@@ -1,0 +1,91 @@
+"""Forecasts in: finding fields by CF standard name, opening files, and moving a forecast from
+a projected model grid (e.g. polar stereographic ROMS) onto the regular lat/lon grid that
+time routing works on, with vector components turned to east/north."""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from ..base.files import open_netcdf
+from ..chart.cf import GRID_VECTORS, STANDARD_NAMES  # noqa: F401 - part of this API
+
+
+def find_fields(ds, variables: dict | None = None) -> dict:
+    """The forecast's fields by role ('current_east', 'wave_height', ...), found by CF standard
+    name, or named explicitly in `variables` (role -> variable name)."""
+    out = {}
+    for role, names in STANDARD_NAMES.items():
+        if variables and role in variables:
+            if variables[role] not in ds:
+                raise ValueError(f"the forecast has no variable {variables[role]!r} for {role}; "
+                                 f"it has {sorted(ds.data_vars)}")
+            out[role] = ds[variables[role]]
+            continue
+        for var in ds.data_vars.values():
+            if var.attrs.get("standard_name") in names:
+                out[role] = var
+                break
+    if ("current_east" in out) != ("current_north" in out):
+        raise ValueError("the forecast has only one current component; give both "
+                         "eastward_sea_water_velocity and northward_sea_water_velocity")
+    return out
+
+
+def open_forecast(path, **kwargs) -> xr.Dataset:
+    """Open a NetCDF forecast, or a GRIB one through cfgrib (pip install cfgrib)."""
+    path = str(path)
+    if path.endswith((".grib", ".grib2", ".grb", ".grb2")):
+        try:
+            import cfgrib  # noqa: F401
+        except ImportError:
+            raise ImportError(f"{path}: reading GRIB needs cfgrib: pip install cfgrib") from None
+        return xr.open_dataset(path, engine="cfgrib", **kwargs)
+    return open_netcdf(path, "a forecast is CF NetCDF (or GRIB through cfgrib)", **kwargs)
+
+
+def _axis(ds, name):
+    for c in ds.coords.values():
+        if c.ndim == 1 and c.attrs.get("standard_name") == name:
+            return c
+    raise ValueError(f"the forecast has no 1-D coordinate with standard_name {name!r}")
+
+
+def to_latlon(ds: xr.Dataset, lat, lon, *, crs=None) -> xr.Dataset:
+    """Resample a forecast on a projected grid onto the regular lat/lon grid `lat`, `lon`
+    (bilinear in the projected coordinates; NaN outside the model grid), turning grid-relative
+    vectors (GRID_VECTORS) into eastward/northward ones. The projection comes from `crs` or the
+    grid-mapping variable's proj4_string / crs_wkt. Needs pyproj (the [ice] extra)."""
+    try:
+        import pyproj
+    except ImportError:
+        raise ImportError('to_latlon needs pyproj: pip install "seaway[ice]"') from None
+    x_ax, y_ax = _axis(ds, "projection_x_coordinate"), _axis(ds, "projection_y_coordinate")
+    if crs is None:
+        mapping = next((ds[v.attrs["grid_mapping"]] for v in ds.data_vars.values()
+                        if "grid_mapping" in v.attrs), None)
+        if mapping is None:
+            raise ValueError("the forecast names no grid mapping; pass crs=")
+        crs = mapping.attrs.get("crs_wkt") or mapping.attrs.get("proj4_string")
+    scale = 1000.0 if x_ax.attrs.get("units") == "km" else 1.0
+    to_grid = pyproj.Transformer.from_crs("EPSG:4326", pyproj.CRS.from_user_input(crs), always_xy=True)
+    la, lo = np.meshgrid(np.asarray(lat, float), np.asarray(lon, float), indexing="ij")
+    x, y = to_grid.transform(lo, la)
+    xn, yn = to_grid.transform(lo, la + 1e-4)  # a step north, to find north on the grid
+    north = np.arctan2(xn - x, yn - y)  # angle of north from the grid's +y, clockwise
+    pts = {x_ax.name: xr.DataArray(x / scale, dims=("lat", "lon")),
+           y_ax.name: xr.DataArray(y / scale, dims=("lat", "lon"))}
+    keep = [v for v in ds.data_vars if set(ds[v].dims) >= {x_ax.name, y_ax.name}]
+    out = ds[keep].interp(pts, method="linear")
+    out = out.drop_vars([c for c in out.coords if c not in ("time", "lat", "lon") and
+                         c not in out.dims], errors="ignore")
+    out = out.assign_coords(lat=("lat", np.asarray(lat, float), {"standard_name": "latitude", "units": "degrees_north"}),
+                            lon=("lon", np.asarray(lon, float), {"standard_name": "longitude", "units": "degrees_east"}))
+    by_name = {out[v].attrs.get("standard_name"): v for v in out.data_vars}
+    for (gx, gy), (east, north_name) in GRID_VECTORS.items():
+        if gx in by_name and gy in by_name:
+            u, v = out[by_name[gx]], out[by_name[gy]]
+            c, s = np.cos(north), np.sin(north)
+            out[by_name[gx]] = (u * c - v * s).assign_attrs(u.attrs, standard_name=east)
+            out[by_name[gy]] = (u * s + v * c).assign_attrs(v.attrs, standard_name=north_name)
+    return out

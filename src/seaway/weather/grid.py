@@ -1,0 +1,118 @@
+"""ForecastGrid: a forecast on a regular lat/lon grid as the weather models read it: its fields
+by role, its time axis from the departure, and its grid as a chart to route on."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import _core
+from ..base.units import KNOTS_PER_MS
+from ..chart.raster import as_chart
+from ..constraints import hard_only
+from ..engine.methods import check_options
+from ..engine.prepared import PreparedChart
+from ..models.base import EdgeCost
+from ..vessel import Vessel
+from .forecast import STANDARD_NAMES, find_fields
+
+
+def _time_axis(ds, departure):
+    """(frames, first_h, step_h): frame k is valid first_h + k * step_h hours after departure."""
+    if "time" not in ds.dims:
+        return 1, 0.0, 1.0
+    t = ds["time"].values
+    if t.size == 1:
+        return 1, 0.0, 1.0
+    hours = (t - t[0]) / np.timedelta64(1, "h")
+    step = float(hours[1] - hours[0])
+    if step <= 0 or np.max(np.abs(np.diff(hours) - step)) > 1e-6:
+        raise ValueError("forecast times must be regularly spaced and increasing; "
+                         "resample it, e.g. ds.resample(time='6h').interpolate()")
+    dep = t[0] if departure is None else np.datetime64(departure)
+    return t.size, float((t[0] - dep) / np.timedelta64(1, "h")), step
+
+
+def _frames(field, chart_dims, frames) -> np.ndarray:
+    dims = (("time",) if "time" in field.dims else ()) + chart_dims
+    if set(field.dims) != set(dims):
+        raise ValueError(f"forecast field {field.name!r} has dims {field.dims}; expected {dims}")
+    a = np.asarray(field.transpose(*dims).values, dtype=np.float32)
+    if a.ndim == 2:
+        a = np.broadcast_to(a, (frames,) + a.shape)
+    return np.ascontiguousarray(a)
+
+
+class ForecastGrid:
+    """A forecast as the engine reads it: float32 (frames, rows, cols) fields by role (NaN set
+    to 0), the time axis relative to `departure` (default the first time), and where the sea is
+    (not NaN in every field). The models of seaway.models read it; prepare() gives the chart
+    to route on (its static cost: 1 per km)."""
+
+    def __init__(self, forecast, variables=None, departure=None):
+        fields = find_fields(forecast, variables)
+        if not fields:
+            raise ValueError("the forecast has no field seaway knows; mark them with CF standard "
+                             f"names ({', '.join(n[0] for n in STANDARD_NAMES.values())}) or pass "
+                             "variables=")
+        some = next(iter(fields.values()))
+        dims = tuple(d for d in some.dims if d != "time")
+        self.frames, self.first_h, self.step_h = _time_axis(forecast, departure)
+        arrays = {role: _frames(f, dims, self.frames) for role, f in fields.items()}
+        self.dry = np.all([np.isnan(a).all(axis=0) for a in arrays.values()], axis=0)
+        if "wind_speed" not in arrays and "wind_east" in arrays:
+            arrays["wind_speed"] = np.hypot(arrays.pop("wind_east"), arrays.pop("wind_north"))
+        arrays.pop("wind_east", None), arrays.pop("wind_north", None)
+        self.arrays = {k: np.ascontiguousarray(np.nan_to_num(a, nan=0.0)) for k, a in arrays.items()}
+        self.template = some.isel(time=0, drop=True) if "time" in some.dims else some
+        self.shape = self.dry.shape
+        self.departure = None
+        if "time" in forecast.dims:
+            self.departure = (forecast["time"].values[0] if departure is None
+                              else np.datetime64(departure))
+
+    def prepare(self, land=None, neighbourhood=5, keep_away=()) -> PreparedChart:
+        """The forecast's lat/lon grid as a chart: land where every field is NaN or `land` is
+        True, or within a hard keep-away buffer (seaway.constraints.KeepAway); its static cost
+        is 1 per km (distance), the weather models bring their own."""
+        check_options(neighbourhood, "full")
+        km = self.template.copy(data=np.ones(self.shape, np.float32))
+        if keep_away:
+            land = hard_only(km, keep_away, self.dry if land is None else (np.asarray(land, bool) | self.dry))
+        chart = as_chart(km, land=self.dry if land is None else (np.asarray(land, bool) | self.dry))
+        if not chart.geographic:
+            raise ValueError("weather routing needs a forecast on a lat/lon grid (coordinates lat/lon)")
+        return PreparedChart.from_chart(chart, neighbourhood, "full", EdgeCost("max"))
+
+    def engine(self) -> _core.Forecast:
+        return _core.Forecast(self.first_h, self.step_h, **self.arrays)
+
+    def frame_at(self, hours, roles) -> ForecastGrid:
+        """A one-frame copy with the fields of `roles` it has: the frame valid nearest `hours`
+        after departure."""
+        k = int(np.clip(round((hours - self.first_h) / self.step_h), 0, self.frames - 1))
+        out = object.__new__(ForecastGrid)
+        out.__dict__.update(self.__dict__, frames=1, first_h=0.0, step_h=1.0)
+        out.arrays = {r: np.ascontiguousarray(self.arrays[r][k:k + 1]) for r in roles
+                      if r in self.arrays}
+        return out
+
+    def later(self, hours: float) -> ForecastGrid:
+        """The same forecast for a ship leaving `hours` after this departure (frame times and
+        departure shifted; `shift_h` adds up, for zone windows given in hours)."""
+        out = object.__new__(ForecastGrid)
+        out.__dict__.update(self.__dict__, first_h=self.first_h - hours,
+                            shift_h=getattr(self, "shift_h", 0.0) + hours)
+        if self.departure is not None:
+            out.departure = self.departure + np.timedelta64(int(round(hours * 3.6e12)), "ns")
+        return out
+
+    def best_extra_kn(self, vessel: Vessel) -> float:
+        """The most the weather can add to a calm-water speed: following seas under Khokhlov's
+        formula, plus the strongest current (for A*'s admissible bound)."""
+        extra, a = 0.0, self.arrays
+        if vessel.speed_loss == "khokhlov" and "wave_height" in a:
+            gain = (0.275 * np.pi - 0.745) * 1.32 * float(a["wave_height"].max())
+            extra += max(gain, 0.0) * (1 - 1.35e-6 * vessel.displacement_t * vessel.speed_kn)
+        if "current_east" in a:
+            extra += float(np.hypot(a["current_east"], a["current_north"]).max()) * KNOTS_PER_MS
+        return extra

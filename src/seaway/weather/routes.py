@@ -1,0 +1,107 @@
+"""Time-optimal and least-danger routes through forecasts of currents, wind and waves (papers
+001, 003 and 004), and re-planning during the voyage.
+
+A step's cost is its duration in hours. The weather is read at both ends of the step, at the
+time the ship starts it, linearly interpolated between forecast frames (held constant before
+the first frame and after the last). The search labels every pixel with its earliest arrival
+time, which is exact when the weather is FIFO: leaving later never means arriving earlier
+(true unless a forecast speeds the ship up faster than time passes).
+
+Physics (paper 001), computed in the C++ core for every step and course:
+* speed through water in wind waves, Khokhlov (eq. 8):
+  V = V0 - (0.745 h - 0.275 q h)(1 - 1.35e-6 D V0), h = 1.32 x significant height (3 % waves,
+  Rayleigh), q the waves' bearing from the bow in radians (0 head seas, pi following seas),
+  D displacement in t, V in knots; valid for 5000-25000 t and 9-20 kn;
+* speed over ground holding the track through a current Vt at angle q to the course:
+  V = Vt cos q + sqrt(V0^2 - (Vt sin q)^2). The paper prints a plus under the root; holding
+  the track means cancelling the cross current, which gives the minus (DOMAIN.md), and
+  Vt |sin q| >= V0 (the track cannot be held) is impassable;
+* impassable where the wind exceeds max_wind_ms (25 m/s) or the waves max_wave_m (5 m), and,
+  for paper 004's moving danger zones, where the wind exceeds danger_wind_ms (11 m/s) at the
+  time the ship would be there.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..base.sphere import rhumb_line_km  # noqa: F401 - part of this API
+from ..engine.danger import least_danger_route
+from ..engine.methods import heuristic_weight
+from ..errors import NoRouteError
+from ..models import TravelTime, WaveDanger
+from ..result.route import Route
+from ..vessel import Vessel
+from .grid import ForecastGrid
+
+
+def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=None, land=None,
+               neighbourhood=5, method="astar", variables=None, zones=(), keep_away=(), via=(),
+               if_no_safe_route="least_danger") -> Route:
+    """The quickest route from `start` to `end` (lat, lon) through a forecast.
+
+    forecast: xarray.Dataset on a regular lat/lon grid, optionally with a `time` dimension
+        (regular steps, e.g. 6-hourly); fields found by CF standard name (STANDARD_NAMES) or
+        `variables`. NaN in every field at a pixel marks land, as do True pixels of `land`.
+    departure: a datetime (numpy/pandas/str) within or before the forecast; default its first time.
+    zones: seaway.constraints.Zone exclusions, each optionally closed only in a time window
+        (`active=(t0, t1)`): the ship waits or detours only while a zone is closed.
+    keep_away: hard seaway.constraints.KeepAway buffers (from land or a boolean ice mask).
+    via: points to pass in order; each leg departs when the previous one arrives.
+    if_no_safe_route: when no route avoids the vessel's danger zones (danger_wind_ms,
+        danger_wave_m), "least_danger" returns the route with the least hours in danger, then
+        the least hours (paper 004), flagged stats["through_danger"] = True with
+        stats["danger_h"] and stats["danger_legs"] (where, when and how long); "raise" raises
+        NoRouteError. The hard limits (max_wind_ms, max_wave_m) are never crossed.
+    Returns a Route whose cost is the passage time in hours (stats hold departure and arrival).
+    The same as ForecastGrid(forecast).prepare().route(start, end, model=TravelTime(...)).
+    """
+    if if_no_safe_route not in ("least_danger", "raise"):
+        raise ValueError(f"if_no_safe_route must be 'least_danger' or 'raise', got {if_no_safe_route!r}")
+    vessel.check()
+    heuristic_weight(method, None)
+    fc = ForecastGrid(forecast, variables, departure)
+    model = TravelTime(fc, vessel, zones=zones)
+    prepared = fc.prepare(land, neighbourhood, keep_away)
+    try:
+        return prepared.route(start, end, model=model, method=method, via=via)
+    except NoRouteError:
+        danger = vessel.danger_wind_ms is not None or vessel.danger_wave_m is not None
+        if not danger or if_no_safe_route != "least_danger" or (via is not None and len(via)):
+            raise
+        r = least_danger_route(prepared, model, start, end, method)
+        if r is None:
+            raise
+        return r
+
+
+def route_safest(forecast, start, end, *, ship_length_m, speed_kn, at_hours=0.0, land=None,
+                 neighbourhood=5, method="astar", variables=None) -> Route:
+    """The route of least wave danger (paper 003): minimises sum (u_i + u_j) / 2 * r with the
+    danger u in [1, 10] from MSC.1/Circ.1228's criteria for the step's heading (see
+    seaway._core.wave_danger and cpp/seaway/waves.hpp), on the forecast frame valid nearest
+    `at_hours` after its first time. Needs wave height, direction and period fields; cost in
+    danger x km."""
+    heuristic_weight(method, None)
+    fc = ForecastGrid(forecast, variables)
+    model = WaveDanger(fc, ship_length_m, speed_kn, at_hours)
+    return fc.prepare(land, neighbourhood).route(start, end, model=model, method=method)
+
+
+def position_at(route: Route, hours: float) -> tuple[int, tuple[float, float]]:
+    """(index, (lat, lon)) of the last pixel of a time route the ship has reached `hours` after
+    departure."""
+    elapsed = np.concatenate([[0.0], np.cumsum(route.costs())])
+    i = int(np.searchsorted(elapsed, hours, side="right") - 1)
+    return i, tuple(map(float, route.coords[i]))
+
+
+def replan(route: Route, hours: float, forecast, end, **kwargs) -> Route:
+    """Paper 003's re-planning: route again from where the ship is `hours` after departure,
+    with a newer `forecast`, leaving at that time. kwargs go to route_time()."""
+    if "departure" not in route.stats:
+        raise ValueError("re-planning needs a route found through a forecast with a time axis")
+    i, here = position_at(route, hours)
+    reached = float(np.sum(route.costs()[:i]))
+    departure = route.stats["departure"] + np.timedelta64(int(round(reached * 3.6e12)), "ns")
+    return route_time(forecast, here, end, departure=departure, **kwargs)
