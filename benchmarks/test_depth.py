@@ -3,7 +3,6 @@ against the peer xarray's coarsen().max() where the ratio of resolutions is a wh
 (0.25 deg pixels = 3 x 3 nodes; the answers must be equal), and onto the 0.05 deg Kara Sea
 grid (270 x 1100, interpolation) and a 20 km EPSG:3413 grid of the whole Arctic (binned)."""
 
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -12,15 +11,16 @@ import xarray as xr
 from seaway.depth import depth_on_grid, open_bathymetry
 from seaway.ice.grids import latlon_grid, projected_grid
 
+from support.data import SHARED_DATA
+
 from .conftest import record
 
 
 def _etopo():
-    for parent in Path(__file__).resolve().parents:
-        path = parent / "shared" / "data" / "bathymetry" / "etopo5_arctic_60N.nc"
-        if path.exists():
-            return path
-    pytest.skip("../shared/data is absent")
+    path = SHARED_DATA / "bathymetry" / "etopo5_arctic_60N.nc"
+    if not path.exists():
+        pytest.skip(f"{path} is absent")
+    return path
 
 
 S, W = 66 - 1 / 24, 50 - 1 / 24  # pixel edges half a node off the nodes: 3 whole nodes each

@@ -1,0 +1,30 @@
+"""A week of daily ice charts with a retreating edge (moved from ice/test_ice_season.py)."""
+
+import numpy as np
+import xarray as xr
+
+
+DAY0 = np.datetime64("2026-07-01T00")
+
+
+def retreating_edge(days=7, edge0=72.0, per_day=0.6):
+    """Synthetic daily charts on a lat/lon grid (70-78 N, 60-80 E, 0.2 deg): the ice edge at
+    latitude edge0 + per_day x day retreats north; north of it 3 deg of thin first-year ice
+    (4/10 near the edge, 7/10 beyond), then medium first-year 8/10. Land: a Novaya-Zemlya-like
+    bar at 60-62 E north of 73 N."""
+    lat = np.round(np.arange(78.0, 69.99, -0.2), 6)
+    lon = np.round(np.arange(60.0, 80.01, 0.2), 6)
+    la, lo = np.meshgrid(lat, lon, indexing="ij")
+    ct, sa = [], []
+    for d in range(days):
+        beyond = la - (edge0 + per_day * d)
+        c = np.where(beyond < 0, 0.0, np.where(beyond < 1, 4.0, np.where(beyond < 3, 7.0, 8.0)))
+        s = np.where(beyond < 0, np.nan, np.where(beyond < 3, 87.0, 91.0))
+        ct.append(c)
+        sa.append(s)
+    land = (lo <= 62.0) & (la >= 73.0)
+    time = DAY0 + np.arange(days) * np.timedelta64(1, "D")
+    return xr.Dataset({"CT": (("time", "lat", "lon"), np.array(ct)),
+                       "SA": (("time", "lat", "lon"), np.array(sa)),
+                       "land": (("time", "lat", "lon"), np.broadcast_to(land, (days,) + land.shape))},
+                      coords={"time": time, "lat": lat, "lon": lon})
