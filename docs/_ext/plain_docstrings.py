@@ -24,6 +24,14 @@ _SECTION = re.compile(r"^-{3,}$")
 _LONE_STARS = re.compile(r"(?<![*\w`])\*\*(?=\w+\b(?!\*))(?![^\n]*?\w\*\*)")
 
 
+def _escape(text):
+    """Escape "|" (a substitution reference in RST, e.g. in |di|) outside ``literals``."""
+    parts = text.split("``")
+    for k in range(0, len(parts), 2):
+        parts[k] = re.sub(r"(?<!\\)\|", r"\\|", parts[k])
+    return "``".join(parts)
+
+
 def _indent(line):
     return len(line) - len(line.lstrip(" "))
 
@@ -42,13 +50,17 @@ def rewrite(lines):
             i += 1
             continue
         ind = _indent(line)
-        # A simple table: copy it whole (three border lines), then a blank line.
+        # A simple table (three border lines): shown as it is written, as a literal block, since
+        # a cell wider than its column (which plain text allows) is a malformed table in RST.
         if _BORDER.match(text):
+            if out and out[-1].strip():
+                out.append("")
+            out += ["::", ""]
             borders = 0
             while i < n and borders < 3:
                 if _BORDER.match(lines[i].strip()):
                     borders += 1
-                out.append(lines[i])
+                out.append("    " + lines[i])
                 i += 1
             out.append("")
             continue
@@ -91,7 +103,7 @@ def rewrite(lines):
             out.append("")                      # a list starts after a blank line
         if not bullet and prev_bullet:
             out.append("")                      # and ends with one
-        out.append(" " * ind + _LONE_STARS.sub(r"\\*\\*", joined))
+        out.append(" " * ind + _escape(_LONE_STARS.sub(r"\\*\\*", joined)))
         i = j
     return out
 
