@@ -9,7 +9,7 @@ import pytest
 
 import seaway
 
-from tests.reference import refraction_optimum
+from support.reference import refraction_optimum
 from .conftest import record
 
 

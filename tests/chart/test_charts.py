@@ -218,6 +218,7 @@ def _run_demo(*args):
                           text=True, timeout=120)
 
 
+@pytest.mark.cli
 def test_demo_arc7(kara, tmp_path):
     out = tmp_path / "route.geojson"
     done = _run_demo("--out", str(out))
@@ -247,6 +248,7 @@ def test_demo_arc7(kara, tmp_path):
     assert feature["properties"]["ice_class"] == "Arc7"
 
 
+@pytest.mark.cli
 def test_demo_arc5_has_no_route():
     """Arc5 may not enter first-year ice (paper 000, Table 3); the Kara Gate is fast ice."""
     done = _run_demo("--ice-class", "Arc5")
@@ -257,12 +259,14 @@ def test_demo_arc5_has_no_route():
     assert "thick first-year ice" in message
 
 
+@pytest.mark.cli
 def test_demo_in_process(capsys):
     assert main(["demo", "--ice-class", "Arc9", "--neighbourhood", "3", "--method", "dijkstra"]) == 0
     text = capsys.readouterr().out
     assert "vessel class: Arc9" in text and "dijkstra, 3x3 neighbourhood" in text
 
 
+@pytest.mark.cli
 @pytest.mark.parametrize("args", [["demo", "--neighbourhood", "4"], ["demo", "--ice-class", "Arc10"],
                                   ["demo", "--method", "bfs"], []])
 def test_demo_bad_arguments_exit_2(args, capsys):

@@ -20,6 +20,8 @@ from seaway.samples import ice_impact
 from support.data import SHARED_DATA
 from support.netcdf import small_dataset as _dataset, truncated_netcdf as _truncated
 
+pytestmark = pytest.mark.cli
+
 
 def run(*args, timeout=120):
     return subprocess.run([sys.executable, "-m", "seaway", *args], capture_output=True, text=True,
@@ -45,6 +47,7 @@ def chart_nc(tmp_path_factory):
     return path, ds
 
 
+@pytest.mark.slow
 def test_route_netcdf_all_outputs(chart_nc, tmp_path):
     path, ds = chart_nc
     outs = [tmp_path / f"r.{ext}" for ext in ("geojson", "gpx", "rtz", "csv", "html")]

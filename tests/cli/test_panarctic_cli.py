@@ -62,6 +62,7 @@ def table_value(stdout, label):
     return float(m.group(1))
 
 
+@pytest.mark.cli
 @pytest.mark.parametrize("which", ["lonlat", "polar"])
 def test_route_kara_gate_to_vilkitsky_on_the_default_grid(charts, which, tmp_path):
     path = charts[0] if which == "lonlat" else charts[1]
@@ -112,6 +113,8 @@ def nearest_usable(ds, usable, p):
 GRID = ["--grid", "66,88,40,130,0.1"]
 
 
+@pytest.mark.slow
+@pytest.mark.cli
 @pytest.mark.parametrize("end, words", [
     ((69.0, 60.0), ["end 69,60 is on an impassable pixel (land)"]),
     ((84.5, 60.0), ["ice an Arc7 ship may not enter", "old ice (WMO stage 95, 9/10)",
@@ -155,6 +158,7 @@ def _fmt_lon(v):
     return f"{int(d):03d}-{m:05.2f}E"
 
 
+@pytest.mark.cli
 def test_a_start_off_the_chart_polygons_is_named(charts, kara):
     ds, usable = kara
     # 87 N 100 E is the uncharted hole of tests/panarctic.py: unknown ice, never open water.
@@ -166,6 +170,7 @@ def test_a_start_off_the_chart_polygons_is_named(charts, kara):
     assert f"is {lat:.4f},{lon:.4f}, {dist:.1f} km away" in done.stderr
 
 
+@pytest.mark.cli
 def test_route_across_the_antimeridian_on_the_default_grid(charts, tmp_path):
     import json
 

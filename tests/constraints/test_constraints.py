@@ -205,6 +205,7 @@ def test_route_many_with_constraints():
     assert [25, 5] in table.route[1].pixels.tolist()
 
 
+@pytest.mark.cli
 def test_cli_constraints(tmp_path):
     """`seaway route` with --via, --turn-penalty, --land-buffer, --land-soft, --ice-buffer and
     --penalty-zone gives the API's route with the same constraints."""

@@ -134,6 +134,8 @@ def ob_file(tmp_path_factory, ob_chart):
     return path
 
 
+@pytest.mark.slow
+@pytest.mark.cli
 @needs_etopo
 def test_cli_depth_draft_least_depth_and_refusals(ob_file, ob_chart):
     cost, z = ob_chart

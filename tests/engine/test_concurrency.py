@@ -56,6 +56,7 @@ def _threaded(fn, items):
         return list(pool.map(fn, items))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("edge_cost, k, dtype", [("max", 3, np.float64), ("integral", 7, np.float32),
                                                  ("mean", 15, np.float64)])
 def test_threads_on_one_prepared_chart_give_the_serial_answers(edge_cost, k, dtype):

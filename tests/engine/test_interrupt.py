@@ -25,6 +25,7 @@ def _interrupt_after(seconds):
     return timer
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(threading.current_thread() is not threading.main_thread(),
                     reason="signals reach the main thread only")
 def test_ctrl_c_stops_a_long_search_and_the_chart_still_answers(big, monkeypatch):

@@ -148,6 +148,7 @@ def season(cost, days=3):
     return ds.chunk({"time": 1}), lat, lon
 
 
+@pytest.mark.dask
 def test_dask_season_equals_serial(sea, client):
     cost, start, end = sea
     ds, lat, lon = season(cost)
@@ -174,6 +175,7 @@ def test_dask_season_equals_serial(sea, client):
     assert row.cost == r.cost and row.length == r.length and row.length > 300  # km
 
 
+@pytest.mark.dask
 def test_dask_by_scheduler_address(sea, client, capsys):
     cost, start, end = sea
     voyages = water_pairs(cost, 4, seed=5) + [(start, end)]
@@ -185,6 +187,7 @@ def test_dask_by_scheduler_address(sea, client, capsys):
     assert "routes 10/10" in capsys.readouterr().err  # the progress bar is on with a cluster
 
 
+@pytest.mark.dask
 def test_dask_default_local_cluster(sea):
     """cluster=True starts LocalCluster(n_workers=2, threads_per_worker=1) and closes it."""
     cost, start, end = sea

@@ -137,6 +137,7 @@ def test_inputs_refused_with_the_fix(week, tmp_path):
         route_season(closed, (72.15, 62.75), (72.15, 63.95), ice_class="Arc4", v0_kn=14)
 
 
+@pytest.mark.cli
 def test_command_line_routes_through_dated_sigrid3_files(week, tmp_path, capsys):
     from seaway.cli import main
 

@@ -162,6 +162,7 @@ def test_a_cost_map_without_ice_shows_the_cost():
     assert chart[10, 0, :3].sum() < chart[10, -1, :3].sum()  # viridis: dark to light
 
 
+@pytest.mark.cli
 @pytest.mark.skipif(shutil.which("node") is None, reason="node is not installed")
 def test_the_page_scripts_are_valid_javascript(ice_route, tmp_path):
     page = webmap.html_text(ice_route)
@@ -183,6 +184,7 @@ def _jsdom():
     return None
 
 
+@pytest.mark.cli
 @pytest.mark.skipif(_jsdom() is None, reason="node with jsdom is not installed")
 def test_leaflet_builds_the_map_in_a_headless_dom(ice_route, tmp_path):
     """The page run in jsdom (which fetches nothing): Leaflet from the page itself, the two image

@@ -108,6 +108,7 @@ def _simulate(fc, pixels, ship):
     return t
 
 
+@pytest.mark.slow
 def test_time_dependent_search_equals_brute_force_over_all_paths():
     rng = np.random.default_rng(7)
     shape, frames = (3, 4), 4
