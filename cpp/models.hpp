@@ -86,7 +86,7 @@ struct ForecastFields {
 };
 using ForecastPtr = std::shared_ptr<const ForecastFields>;
 
-// Hours through a forecast (papers 001, 004).
+// Hours through a forecast (Olovyannikov 2025 and Sotnikova 2009).
 struct TravelTimeModel : NoStepValues {
   ForecastPtr forecast;
   Vessel vessel;
@@ -99,7 +99,7 @@ struct TravelTimeModel : NoStepValues {
   }
 };
 
-// Fuel + lambda x time with an engine setting per step (paper 004), on the forecast's first frame.
+// Fuel + lambda x time with an engine setting per step (Sotnikova 2009), on the forecast's first frame.
 struct FuelModel {
   ForecastPtr forecast;
   Vessel vessel;
@@ -127,7 +127,7 @@ struct FuelModel {
   }
 };
 
-// Wave danger by heading (paper 003, MSC.1/Circ.1228) on the forecast's first frame.
+// Wave danger by heading (Grinyak et al. 2018, MSC.1/Circ.1228) on the forecast's first frame.
 struct WaveDangerModel : NoStepValues {
   ForecastPtr forecast;
   double ship_length_m, speed_kn;

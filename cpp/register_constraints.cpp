@@ -1,4 +1,4 @@
-// Bindings for the time-window zones (seaway/timed_zones.hpp) and paper 004's least-danger
+// Bindings for the time-window zones (seaway/timed_zones.hpp) and Sotnikova 2009's least-danger
 // search (seaway/danger_time.hpp). seaway/constraints.py and seaway/_danger.py validate first.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -57,7 +57,7 @@ void def_least_danger(py::module_& m) {
       },
       py::arg("router"), py::arg("model"), py::arg("danger_wind_ms"), py::arg("danger_wave_m"),
       py::arg("start"), py::arg("target"), py::arg("heuristic_weight"), py::arg("cancel") = nullptr,
-      "Least hours in danger, then least hours (paper 004, when no route avoids the danger "
+      "Least hours in danger, then least hours (Sotnikova 2009, when no route avoids the danger "
       "zones): (Router.route's tuple, danger hours per step). The model's vessel carries the "
       "hard limits only.");
 }

@@ -118,8 +118,8 @@ IceSeasonModel ice_season(const Field& hours_per_km, std::vector<double> valid_f
 }  // namespace
 
 void register_models(py::module_& m) {
-  bind_raster_model<MaxCost>(m, "MaxCost", "Paper 000: a step costs max(u_i, u_j) x length");
-  bind_raster_model<MeanCost>(m, "MeanCost", "Paper 003: a step costs (u_i + u_j) / 2 x length");
+  bind_raster_model<MaxCost>(m, "MaxCost", "Grinyak et al. 2022: a step costs max(u_i, u_j) x length");
+  bind_raster_model<MeanCost>(m, "MeanCost", "Grinyak et al. 2018: a step costs (u_i + u_j) / 2 x length");
   bind_raster_model<IntegralCost>(m, "IntegralCost", "A step costs the line integral of u");
   bind_raster_model<EnteredPixelCost>(m, "EnteredPixelCost", "skimage's MCP: the pixel entered");
   m.def("max_pair_costs", &pair_costs<MaxCost>, py::arg("a"), py::arg("b"), py::arg("length"));

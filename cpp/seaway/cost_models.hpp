@@ -26,7 +26,7 @@ inline StepBounds raster_bounds(const Passability& p, bool per_length = true) {
   return {p.passable ? p.min_cost : 0.0, p.max_cost, per_length};
 }
 
-// Paper 000: d = max(u_i, u_j) * r.
+// Grinyak et al. 2022: d = max(u_i, u_j) * r.
 template <class T>
 struct MaxCost {
   const T* u;
@@ -37,7 +37,7 @@ struct MaxCost {
   }
 };
 
-// Paper 003: d = (u_i + u_j) / 2 * r.
+// Grinyak et al. 2018: d = (u_i + u_j) / 2 * r.
 template <class T>
 struct MeanCost {
   const T* u;

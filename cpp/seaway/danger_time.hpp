@@ -1,4 +1,4 @@
-// When every route crosses danger (paper 004): the route that spends the least time in the
+// When every route crosses danger (Sotnikova 2009): the route that spends the least time in the
 // forecast's danger zones, then the least total time. Labels are pairs (hours in danger, hours)
 // compared lexicographically; a step's weather is read at the time the ship starts it, as in
 // WeatherTime. Label-setting, so exact when leaving a pixel with a lexicographically smaller

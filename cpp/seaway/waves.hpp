@@ -1,4 +1,4 @@
-// Wave danger by heading (paper 003), built from IMO MSC.1/Circ.1228's criteria because the
+// Wave danger by heading (Grinyak et al. 2018), built from IMO MSC.1/Circ.1228's criteria because the
 // paper's storm diagram is only a figure. For a ship of length L (m) at speed V (kn), the
 // danger u of meeting waves of significant height Hs, mean length lambda (deep water,
 // g T^2 / 2 pi) from an encounter angle alpha (0 head seas, 180 following seas) is
@@ -8,7 +8,7 @@
 // sector = 1 within 135-225 degrees, falling linearly to 0 ten degrees outside, and
 // ramp(x) = 0 below 0.8, 1 above 1, linear between: u = 10 inside the Circular's dangerous
 // zones, 1 well outside, linear in between (the paper's inner and outer polygons).
-// A step costs (u_i + u_j) / 2 * r (paper 003), u evaluated at each end for the step's course.
+// A step costs (u_i + u_j) / 2 * r (Grinyak et al. 2018), u evaluated at each end for the step's course.
 #pragma once
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Time-optimal steps through currents, wind and waves that change in time (papers 001, 004).
+// Time-optimal steps through currents, wind and waves that change in time (Olovyannikov 2025 and Sotnikova 2009).
 // A step's cost is its duration in hours; the weather is read at both ends of the step at
 // the time the ship starts it (the search's label), linearly interpolated between forecast
 // frames. The search is label-setting, which is exact when the weather is FIFO: leaving a
@@ -39,10 +39,10 @@ struct Vessel {
   SpeedLoss speed_loss = SpeedLoss::khokhlov;
   // For STAWAVE-1: waterline breadth and length (m), calm-water resistance (kN) at speed_kn.
   double beam_m = 0, length_m = 0, calm_resistance_kn = 0;
-  double max_wind_ms = 25, max_wave_m = 5;  // limits (paper 001); also danger-zone winds (004)
+  double max_wind_ms = 25, max_wave_m = 5;  // limits (Olovyannikov 2025); also danger-zone winds (004)
 };
 
-// Speed through water in wind waves, Khokhlov (paper 001, eq. 8): h3 the 3 % wave height (m),
+// Speed through water in wind waves, Khokhlov (Olovyannikov 2025, eq. 8): h3 the 3 % wave height (m),
 // q the waves' bearing from the bow in radians (0: head seas, pi: following seas).
 inline double khokhlov_speed_kn(double v0, double h3, double q, double displacement_t) {
   return v0 - (0.745 * h3 - 0.275 * q * h3) * (1 - 1.35e-6 * displacement_t * v0);
@@ -62,7 +62,7 @@ inline double stawave1_speed_kn(double v0, double hs_m, double beam_m, double le
 }
 
 // Speed over ground holding the track through a current of speed vt at angle q to the
-// course (paper 001, eq. 6 with the crabbing sign); <= 0 or NaN when the track cannot be held.
+// course (Olovyannikov 2025, eq. 6 with the crabbing sign); <= 0 or NaN when the track cannot be held.
 inline double speed_over_ground_kn(double v, double vt, double q) {
   const double along = vt * std::cos(q), cross = vt * std::sin(q);
   if (std::fabs(cross) >= v) return 0;
@@ -138,7 +138,7 @@ class WeatherTime {
   std::vector<double> course_;
 };
 
-// Paper 004's fuel: each step's engine setting is chosen from `settings_kn` (calm-water speeds)
+// Sotnikova 2009's fuel: each step's engine setting is chosen from `settings_kn` (calm-water speeds)
 // to minimise fuel + lambda x time, fuel burnt at rate_t_per_h per hour at each setting. Sweeping
 // lambda (tonnes per hour of passage) traces the time-fuel trade-off; lambda = 0 is the least
 // fuel. The weather is the forecast at departure (the label is fuel + lambda x time, not time,

@@ -1,13 +1,13 @@
-"""Great-circle corridors: the graph of papers 001 and 003 as a grid on the same engine.
+"""Great-circle corridors: the graph of Olovyannikov 2025 and Grinyak et al. 2018 as a grid on the same engine.
 
 Layers are spaced evenly along the great circle start -> end (spacing in nautical miles, or in
-hours of steaming at a speed: paper 001 uses 12 h = 120 nm); each layer holds 2m + 1 nodes on
-the great circle through its centre perpendicular to the track, `row_nm` apart (paper 001:
+hours of steaming at a speed: Olovyannikov 2025 uses 12 h = 120 nm); each layer holds 2m + 1 nodes on
+the great circle through its centre perpendicular to the track, `row_nm` apart (Olovyannikov 2025:
 20 nm). Node (j, i) is row j (j = m on the track) of layer i. The environment is sampled at the
 nodes (and, to forbid an edge that crosses land, at `checks` points along each edge).
 
 Two graphs:
-* steps="forward" (papers 001/003): edges only from layer i to layer i + 1, to any row within
+* steps="forward" (Olovyannikov 2025 and Grinyak et al. 2018): edges only from layer i to layer i + 1, to any row within
   `max_shift` rows; solved exactly by dynamic programming in Python with the true great-circle
   length of every edge.
 * steps="stencil": the k x k stencil of the C++ engine on the (row, layer) grid taken as a planar
@@ -17,7 +17,7 @@ Two graphs:
   stats["planar_length_error"] gives the largest relative error of the engine's step lengths on
   that route (~(row offset / R)^2 and the track's curvature: below 1 % for corridors a few hundred
   nm wide).
-Edge cost: edge_cost="max": max(u_a, u_b) x km; "mean": (u_a + u_b)/2 x km (papers 000/003),
+Edge cost: edge_cost="max": max(u_a, u_b) x km; "mean": (u_a + u_b)/2 x km (Grinyak et al. 2022 and Grinyak et al. 2018),
 priced by the engine's models (seaway.models.EdgeCost.pair_costs)."""
 
 from __future__ import annotations
@@ -149,7 +149,7 @@ class Corridor:
 def corridor(start, end, *, spacing_nm=None, hours=None, speed_kn=None, row_nm=20.0, m=10):
     """The corridor around the great circle start -> end ((lat, lon) in degrees).
 
-    Layer spacing: spacing_nm, or hours x speed_kn (paper 001: 12 h at 10 kn = 120 nm); the
+    Layer spacing: spacing_nm, or hours x speed_kn (Olovyannikov 2025: 12 h at 10 kn = 120 nm); the
     number of legs is round(distance / spacing) (at least 1), so the legs are equal and within
     half a spacing of the one asked for. row_nm apart across the track, m rows on each side."""
     if spacing_nm is None:

@@ -1,5 +1,5 @@
 """Built-in charts: a synthetic winter Kara Sea on the real coastline and a planar cost raster
-for benchmarks; paper 000's ice impact tables are re-exported from seaway.ice.impact.
+for benchmarks; Grinyak et al. 2022's ice impact tables are re-exported from seaway.ice.impact.
 
 The Kara Sea chart is synthetic ice (made up, but shaped like a late-winter chart: fast ice along
 the coasts, a flaw polynya seaward of it, thicker first-year ice towards the north-east) laid on
@@ -18,8 +18,8 @@ from .base.validate import number
 from .ice import classes as ice_classes
 from .ice.codes import STAGE_CODES
 
-# Paper 000's impact tables and ice_impact() live in seaway.ice.impact (with tables for every
-# class); re-exported here so seaway.charts.ice_impact keeps working.
+# Grinyak et al. 2022's impact tables and ice_impact() live in seaway.ice.impact (with tables for every
+# class); re-exported here so seaway.samples.ice_impact keeps working.
 from .ice.impact import ICE_IMPACT, ice_impact  # noqa: F401
 
 #: Extent of kara_sea() in degrees: pixel edges, not centres.
@@ -151,7 +151,7 @@ def _dataset(xr, lat, lon, land, conc, stage, h):
     }
     attrs = {
         "title": "Kara Sea in late winter: synthetic ice chart on the real coastline",
-        "source": "synthetic ice (deterministic smooth random fields, seaway.charts.kara_sea) on "
+        "source": "synthetic ice (deterministic smooth random fields, seaway.samples.kara_sea) on "
                   "the real GLOBE coastline from the global-land-mask package",
         "comment": "A demonstration chart, not an observation; do not navigate by it. Rows run "
                    "north to south (lat descending).",
@@ -166,7 +166,7 @@ def kara_sea(shape=(1900, 2300)):
     The grid is regular in lat/lon, 82-68 N by 50-110 E (KARA_EXTENT, pixel edges); `lat` holds
     pixel centres descending north to south (row 0 is the northern edge), `lon` ascending. At the
     default (1900, 2300) a pixel is 0.82 km north-south and 0.4-1.1 km east-west (0.75 km at
-    75 N), like the ~2300 x 1900-pixel chart of paper 000. Variables: land (bool, GLOBE),
+    75 N), like the ~2300 x 1900-pixel chart of Grinyak et al. 2022. Variables: land (bool, GLOBE),
     sea_ice_concentration (CT, tenths), stage_of_development (WMO SIGRID-3 codes), ice_thickness
     (m); the last three are float32 and NaN on land, so `ice_impact(ds.stage_of_development)` is
     inf there. Deterministic; cached, and each call returns its own copy.
@@ -266,4 +266,4 @@ def kara_season(days=7, start="2026-07-01", melt_m_per_day=0.1, melted_m=0.5, sh
                        "land": (("lat", "lon"), ds.land.values)},
                       coords={"time": time.astype("datetime64[ns]"), "lat": ds.lat, "lon": ds.lon},
                       attrs={"title": f"Kara Sea breaking up: {days} synthetic daily charts from {start}",
-                             "comment": "synthetic (seaway.charts.kara_season); do not navigate by it"})
+                             "comment": "synthetic (seaway.samples.kara_season); do not navigate by it"})

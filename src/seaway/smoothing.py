@@ -1,4 +1,4 @@
-"""Any-angle smoothing of a raster route (paper 000: "the route can be smoothed afterwards").
+"""Any-angle smoothing of a raster route (Grinyak et al. 2022: "the route can be smoothed afterwards").
 
 1. Line-of-sight shortcuts (string pulling): from each anchor vertex, the route is replaced by
    one straight leg (a great circle on geographic charts) to the farthest vertex ahead such that
@@ -7,7 +7,7 @@
    compass search (steps of 1 pixel halved down to 1/32) to lower the cost of its two legs,
    then shortcuts are taken again; sweeps repeat until the cost stops falling.
 
-Both passes run in C++ (cpp/seaway/smooth.hpp). Legs are priced by seaway._segments (the
+Both passes run in C++ (cpp/seaway/smooth.hpp). Legs are priced by seaway.chart.legs (the
 engine's model extended to arbitrary legs: exact line integral for "integral"; the max/mean
 rule applied to the chain of pixels a leg crosses). Every
 accepted change lowers the cost or keeps it (to a relative 1e-12 for rounding), so the smoothed

@@ -19,13 +19,13 @@ class Vessel:
 
     speed_kn: float = 15.0
     displacement_t: float = 15000.0
-    #: "khokhlov" (paper 001; 5000-25000 t, 9-20 kn), "stawave1" (any size: STAWAVE-1's added
+    #: "khokhlov" (Olovyannikov 2025; 5000-25000 t, 9-20 kn), "stawave1" (any size: STAWAVE-1's added
     #: resistance in bow waves at constant power; needs beam_m, length_m, calm_resistance_kn),
     #: or "none" (waves only limit where the ship may go).
     speed_loss: str = "khokhlov"
     max_wind_ms: float = 25.0
     max_wave_m: float = 5.0
-    danger_wind_ms: float | None = None  # paper 004: 11 m/s zones avoided while forecast
+    danger_wind_ms: float | None = None  # Sotnikova 2009: 11 m/s zones avoided while forecast
     danger_wave_m: float | None = None  # danger zones by significant wave height, avoided too
     outside_validity: str = "refuse"  # a speed-loss model outside its range: or "warn"
     beam_m: float | None = None  # waterline breadth

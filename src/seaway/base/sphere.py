@@ -1,4 +1,4 @@
-"""Spherical geometry in numpy (paper 001, eqs. 1-4, in numerically stable form): great-circle
+"""Spherical geometry in numpy (Olovyannikov 2025, eqs. 1-4, in numerically stable form): great-circle
 distance, initial course, points along a great circle and at a distance and bearing.
 
 A sphere of R = EARTH_RADIUS_KM (the engine's); angles in degrees; 1 nm = KM_PER_NM km

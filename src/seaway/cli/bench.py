@@ -43,7 +43,7 @@ def add_bench_command(commands) -> None:
                     "south-west to north-east, and print the median time, pixels settled and "
                     "search memory per pixel.", epilog=EPILOG)
     bp.add_argument("--size", type=size, default=(1900, 2300), metavar="ROWSxCOLS",
-                    help="chart size (default 1900x2300, paper 000's Kara Sea chart)")
+                    help="chart size (default 1900x2300, Grinyak et al. 2022's Kara Sea chart)")
     bp.add_argument("--neighbourhood", type=neighbourhood, nargs="+", default=[5],
                     metavar="K", help="stencil sizes to time (default 5)")
     bp.add_argument("--method", nargs="+", default=["auto", "dijkstra"],

@@ -3,7 +3,7 @@ SIGRID-3 (seaway.ice.sigrid, when installed) or the built-in chart "kara".
 
 The cost raster is chosen as follows: `variable` names it (cost per unit length, NaN or inf
 impassable); otherwise a stage-of-development chart (variable `stage_of_development`, or SIGRID
-`SA`) is turned into paper 000's impact for the vessel's ice class; otherwise the file's only
+`SA`) is turned into Grinyak et al. 2022's impact for the vessel's ice class; otherwise the file's only
 2-D variable is the cost. A variable `land` (or `land_variable`) is the land mask."""
 
 from __future__ import annotations
@@ -82,7 +82,7 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
         out.description += f", cost = {variable}"
     elif "stage_of_development" in ds or "SA" in ds:
         out.cost = _impact(ds, vessel or "Arc7", out.notes)
-        out.description += f", ice impact for {vessel or 'Arc7'} (paper 000)"
+        out.description += f", ice impact for {vessel or 'Arc7'} (Grinyak et al. 2022)"
     else:
         two_d = [n for n in ds.data_vars if n != land_name and ds[n].ndim >= 2]
         if len(two_d) != 1:

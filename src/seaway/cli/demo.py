@@ -74,7 +74,7 @@ def demo(args) -> int:
           f"{e['lon_west']:g}-{e['lon_east']:g} E, {_pixel_km(ds):.2f} km north-south; "
           f"built in {t_chart:.2f} s")
     print(f"source:       {ds.attrs['source']}")
-    print(f"vessel class: {args.ice_class} (impact u from paper 000, "
+    print(f"vessel class: {args.ice_class} (impact u from Grinyak et al. 2022, "
           f"{'Table 3' if args.ice_class == 'Arc5' else 'Table 2'})")
     print(f"start:        {start_text}")
     print(f"end:          {end_text}")
@@ -103,12 +103,12 @@ def add_demo_command(commands) -> None:
         "demo", help="route Kara Gate -> Vilkitsky Strait on the built-in winter chart",
         description="Route a ship of an ice class from the Kara Gate to the Vilkitsky Strait "
                     "through synthetic winter ice on the real coastline (seaway.samples.kara_sea), "
-                    "with paper 000's impact tables, and print a summary.")
+                    "with Grinyak et al. 2022's impact tables, and print a summary.")
     classes = charts.ice_classes.class_names()
     demo.add_argument("--ice-class", default="Arc7", choices=classes,
                       help="Russian Register ice class of the vessel (default Arc7)")
     demo.add_argument("--neighbourhood", type=neighbourhood, default=5, metavar="K",
-                      help="k of the k x k stencil: odd, 3 to 15 (default 5, as in paper 000)")
+                      help="k of the k x k stencil: odd, 3 to 15 (default 5, as in Grinyak et al. 2022)")
     demo.add_argument("--method", default="auto", choices=CLI_METHODS,
                       help="search algorithm (all exact; default auto: the fastest for the query)")
     demo.add_argument("--out", metavar="FILE", help="also write the route as GeoJSON to FILE")

@@ -100,7 +100,7 @@ def add_route_command(commands) -> None:
                     help="end in decimal degrees (ROW,COL on charts with projected y/x)")
     rp.add_argument("--vessel", metavar="CLASS",
                     help="ice class (e.g. Arc7, Arc5): turns the chart's stage of development "
-                         "into paper 000's impact (default Arc7 on stage charts)")
+                         "into Grinyak et al. 2022's impact (default Arc7 on stage charts)")
     rp.add_argument("--variable", metavar="NAME",
                     help="chart variable holding the cost per unit length (NaN/inf impassable); "
                          "GeoTIFF: the band number (default 1)")
@@ -127,9 +127,9 @@ def add_route_command(commands) -> None:
                     help="override the bathymetry's sign: up = elevation (ETOPO/GEBCO), down = "
                          "depth (default: from its CF attributes, else guessed and said so)")
     rp.add_argument("--neighbourhood", type=neighbourhood, default=5, metavar="K",
-                    help="k of the k x k stencil: odd, 3 to 15 (default 5, as in paper 000)")
+                    help="k of the k x k stencil: odd, 3 to 15 (default 5, as in Grinyak et al. 2022)")
     rp.add_argument("--edge-cost", default="max", choices=tuple(EDGE_COSTS),
-                    help="step cost: max (paper 000), mean (paper 003) or integral (exact line "
+                    help="step cost: max (Grinyak et al. 2022), mean (Grinyak et al. 2018) or integral (exact line "
                          "integral); default max")
     rp.add_argument("--method", default="auto", choices=CLI_METHODS,
                     help="search algorithm (all exact; default auto: the fastest for the query)")

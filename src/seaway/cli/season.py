@@ -93,7 +93,7 @@ def add_season_command(commands) -> None:
         "season", help="the quickest route through a season of dated ice charts",
         description="Find the earliest-arriving route through a time series of ice charts: each "
                     "step crosses the chart valid when the ship is there, at the class's speed "
-                    "(paper 002's V = F x V0, or --speed-table); the ship may wait for the ice "
+                    "(Andreeva 2021's V = F x V0, or --speed-table); the ship may wait for the ice "
                     "to clear (the route lists its waits).", epilog=EPILOG)
     sp.add_argument("charts", nargs="+", metavar="DATE=CHART",
                     help="SIGRID-3 charts with the date each is valid from (2026-07-01=a.shp "
@@ -108,7 +108,7 @@ def add_season_command(commands) -> None:
                     help="open-water speed in knots (default 12)")
     sp.add_argument("--depart", metavar="DATE", help="departure (default the first chart's date)")
     sp.add_argument("--speed-table", type=speed_table, metavar="STAGE:KN,...",
-                    help="speeds per WMO stage instead of paper 002 (55 is open water)")
+                    help="speeds per WMO stage instead of Andreeva 2021 (55 is open water)")
     sp.add_argument("--no-concentration-limit", action="store_true",
                     help="let the class enter ice above its independent-navigation concentration")
     sp.add_argument("--grid", type=grid, metavar="S,N,W,E,RES",

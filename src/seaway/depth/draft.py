@@ -13,11 +13,11 @@ averaged away; where the pixels are smaller, the depth is linearly interpolated 
 centres (`DataArray.interp`). A pixel with any unknown node, or beyond the data, is NaN
 (unknown), and with a draft NaN is impassable: nothing unknown becomes deep water. Depth <= 0
 (land in the bathymetry) is impassable for every draft. Projected charts (y/x, e.g. EPSG:3413
-grids of seaway.ice.grids): every node is projected and binned exactly (seaway._depth_projected).
+grids of seaway.ice.grids): every node is projected and binned exactly (seaway.depth.projected).
 
 Draft (`apply_draft`): a pixel is passable when depth >= draft + UKC. The default UKC is 10 %
 of the draft (an allowance for squat and the bottom's uncertainty in sheltered water; give
-your own, more in swell or over poorly surveyed ground). Paper 002's depth factor f1 from this
+your own, more in swell or over poorly surveyed ground). Andreeva 2021's depth factor f1 from this
 depth: seaway.ice.andreeva.depth_factor.
 """
 
@@ -83,7 +83,7 @@ def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None, crs=None):
     (e.g. the cost), or 1-D `lat` and `lon` pixel centres. Shallowest node per pixel where the
     chart is coarser, linear interpolation where it is finer (module doc). A `like` with y/x
     coordinates (km or m, by their units attribute; km if none) is a projected grid in `crs`
-    (default like.attrs['crs']; seaway.ice.grids projected grids): seaway._depth_projected."""
+    (default like.attrs['crs']; seaway.ice.grids projected grids): seaway.depth.projected."""
     import xarray as xr
 
     if isinstance(bathymetry, Bathymetry):

@@ -1,4 +1,4 @@
-"""Paper 004's fallback when every route crosses danger: the route that spends the least time in
+"""Sotnikova 2009's fallback when every route crosses danger: the route that spends the least time in
 the forecast's danger zones (wind above Vessel.danger_wind_ms, waves above
 Vessel.danger_wave_m), then the least total time, flagged and with the stretches in danger
 listed. Called by seaway.weather.route_time (cpp/seaway/danger_time.hpp searches)."""

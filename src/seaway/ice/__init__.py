@@ -1,5 +1,5 @@
-"""Ice navigation: ice classes, SIGRID-3 codes, and the cost models of paper 000 (impact
-tables), IMO POLARIS (MSC.1/Circ.1519) and paper 002 (Andreeva: speed V = F*V0, time, Pareto).
+"""Ice navigation: ice classes, SIGRID-3 codes, and the cost models of Grinyak et al. 2022 (impact
+tables), IMO POLARIS (MSC.1/Circ.1519) and Andreeva 2021 (Andreeva: speed V = F*V0, time, Pareto).
 
 Modules: classes, codes, impact, polaris, andreeva (formulas), colours; pareto (Andreeva's
 time-safety routes), summary, season (routes through a time series of charts; numpy/xarray
@@ -22,7 +22,7 @@ ice_shelf bool        ice-shelf polygons (POLY_TYPE S)
 off_chart bool        no polygon covers the pixel centre (all layers NaN)
 polygon  index        row of the source file's polygon at the pixel (-1 none)
 thickness m           sea-ice thickness (gridded products; optional)
-depth    m            water depth, positive down (optional; paper 002's Z)
+depth    m            water depth, positive down (optional; Andreeva 2021's Z)
 ======== ============ ===================================================================
 Coordinates: lat/lon (degrees, pixel centres) or y/x (km in the grid's projection, whose
 PROJ string is the Dataset attribute ``crs``).

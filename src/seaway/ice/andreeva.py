@@ -1,4 +1,4 @@
-"""Paper 002 (Andreeva): ship speed V = F * V0 with F = f1 * f2 * f3, time T = l / V, and the
+"""Andreeva 2021 (Andreeva): ship speed V = F * V0 with F = f1 * f2 * f3, time T = l / V, and the
 Pareto set between time and safety (a route's safety is the lowest F met along it).
 
 Equation 9 of the paper:
@@ -24,11 +24,11 @@ import numpy as np
 
 from ..base.units import KM_PER_NM
 
-NSR_K = 0.006  # paper 002: largest vertical roughness index at 95 % on the NSR
+NSR_K = 0.006  # Andreeva 2021: largest vertical roughness index at 95 % on the NSR
 
 
 def survey_correction(line_spacing_m, k=NSR_K, depth=None):
-    """dL (m) for a survey with `line_spacing_m` between sounding lines (paper 002, eq. 5 with
+    """dL (m) for a survey with `line_spacing_m` between sounding lines (Andreeva 2021, eq. 5 with
     L = half the spacing): 500 m -> 1.5 m, 2000 m -> 6 m. inf spacing (no survey) -> `depth`
     (so f1 = 0); 0 (multibeam) -> 0."""
     spacing = np.asarray(line_spacing_m, dtype=float)
@@ -56,7 +56,7 @@ def depth_factor(depth, draft, delta_l=0.0):
     if hasattr(depth, "dims"):
         out = depth.copy(data=f)
         out.name = "f1"
-        out.attrs = {"long_name": "depth factor 1 - d / (Z - dL) (paper 002, eq. 9)",
+        out.attrs = {"long_name": "depth factor 1 - d / (Z - dL) (Andreeva 2021, eq. 9)",
                      "units": "1", "draft_m": float(draft)}
         return out
     return f
@@ -78,12 +78,12 @@ def f3(lane_width, fairway_width):
 
 
 def safety_factor(*, draft, depth, thickness, h_pass, delta_l=0.0, f3_value=1.0):
-    """F = f1 * f2 * f3 (paper 002, eq. 8-9), elementwise."""
+    """F = f1 * f2 * f3 (Andreeva 2021, eq. 8-9), elementwise."""
     return f1(draft, depth, delta_l) * f2(thickness, h_pass) * np.asarray(f3_value, dtype=float)
 
 
 def route_row(l_nm, depth, thickness, *, draft, h_pass, v0_kn, delta_l=0.0, f3_value=1.0):
-    """One row of paper 002's route table for a route of `l_nm` nautical miles with one depth
+    """One row of Andreeva 2021's route table for a route of `l_nm` nautical miles with one depth
     (m) and one ice thickness (m): dict f1, f2, F, V (kn), T (h; inf when F = 0). Exact values:
     the paper prints them rounded to two digits, computing each column from the previous
     columns already rounded."""
@@ -101,7 +101,7 @@ def time_cost(F, v0_kn):
     if hasattr(F, "dims"):
         out = F.copy(data=cost)
         out.name = "time_cost"
-        out.attrs = {"long_name": "time per unit length at V = F*V0 (paper 002)",
+        out.attrs = {"long_name": "time per unit length at V = F*V0 (Andreeva 2021)",
                      "units": "h km-1"}
         return out
     return cost
@@ -109,7 +109,7 @@ def time_cost(F, v0_kn):
 
 def pareto_front(times, safeties) -> list:
     """Indices of the non-dominated (time, safety) pairs: no other has time <= and safety >=
-    with one strict (paper 002, eq. 10). Infinite times are never kept. Sorted by time."""
+    with one strict (Andreeva 2021, eq. 10). Infinite times are never kept. Sorted by time."""
     t, s = np.asarray(times, dtype=float), np.asarray(safeties, dtype=float)
     keep = []
     for i in range(len(t)):

@@ -3,7 +3,7 @@ mapping between them that the cost models use.
 
 Sources and what is assumed:
 
-* RS classes and their ice (concentration, thickness): paper 000, Table 1 (after the Russian
+* RS classes and their ice (concentration, thickness): Grinyak et al. 2022, Table 1 (after the Russian
   Maritime Register rules). `max_concentration` reads the table's words with the WMO
   nomenclature: open ice ("разреженный") up to 6/10, close ice ("сплоченный") up to 8/10,
   compact ice ("сплошной") 10/10.
@@ -33,10 +33,10 @@ class IceClass:
 
     name: canonical name ('Arc7', 'PC3', 'IA Super', 'none').
     system: 'RS' (Russian Register), 'IACS' (Polar Class), 'FSICR' (Finnish-Swedish), 'none'.
-    h_pass: thickness of ice (m) the class may enter (RS: paper 000 Table 1; FSICR: design
+    h_pass: thickness of ice (m) the class may enter (RS: Grinyak et al. 2022 Table 1; FSICR: design
         thickness; PC: that of `rs_class`, assumed).
     max_concentration: tenths of ice concentration the class may enter independently (6 open,
-        8 close, 10 compact; paper 000 Table 1).
+        8 close, 10 compact; Grinyak et al. 2022 Table 1).
     rs_class: the RS class whose paper-000 impact table this class uses.
     polaris_class: the row of the POLARIS RIV table (MSC.1/Circ.1519) this class uses.
     assumed: which fields are assumptions rather than sourced (empty when none).
@@ -61,7 +61,7 @@ def _rs(name, conc, h, pc, pc_assumed=True):
 #: Every class, by canonical name, weakest first within each system.
 CLASSES = {c.name: c for c in [
     IceClass("none", "none", 0.0, 0.0, "none", "not ice strengthened"),
-    # Russian Register, paper 000 Table 1.
+    # Russian Register, Grinyak et al. 2022 Table 1.
     _rs("Ice1", _OPEN, 0.4, "IC"),
     _rs("Ice2", _OPEN, 0.5, "IB"),
     _rs("Ice3", _OPEN, 0.7, "IA", pc_assumed=False),
@@ -96,7 +96,7 @@ for _n in range(1, 8):
 ALIASES = {"not ice strengthened": "none", "nis": "none", "ia super": "IA Super",
            "1a super": "IA Super", "1a": "IA", "1b": "IB", "1c": "IC",
            "icebraker6": "Icebreaker6", "icebraker7": "Icebreaker7",
-           "icebraker8": "Icebreaker8", "icebraker9": "Icebreaker9"}  # paper 000's spelling
+           "icebraker8": "Icebreaker8", "icebraker9": "Icebreaker9"}  # Grinyak et al. 2022's spelling
 
 
 def _key(name: str) -> str:

@@ -1,4 +1,4 @@
-"""The WMO colour code for sea-ice charts, for maps (seaway.plot, seaway.webmap).
+"""The WMO colour code for sea-ice charts, for maps (seaway.plot, seaway.output.webmap).
 
 Source: JCOMM Technical Report No. 24, WMO/TD-No. 1215, "Ice Chart Colour Code Standard"
 (version 1.0, 2014; approved by the JCOMM Expert Team on Sea Ice in October 2002; an extension

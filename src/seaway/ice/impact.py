@@ -1,7 +1,7 @@
-"""Paper 000's ice impact u(x, y): Tables 2 and 3 exactly, tables for the other classes by a
+"""Grinyak et al. 2022's ice impact u(x, y): Tables 2 and 3 exactly, tables for the other classes by a
 documented rule, and rasters of u for a vessel.
 
-Paper 000 (Grinyak et al. 2022) gives u only for "Arc7 and stronger" (Table 2) and Arc5
+Grinyak et al. 2022 (Grinyak et al. 2022) gives u only for "Arc7 and stronger" (Table 2) and Arc5
 (Table 3), by ice type. Rule used here for the other Russian Register classes (DERIVATION):
 
 1. Classes that Table 1 allows into close or compact ice (Arc7, Arc8, Arc9, Icebreaker6-9) use
@@ -30,18 +30,18 @@ from .classes import CLASSES, IceClass, class_names, get_class
 from .codes import ICE_FREE, STAGE_CODES, UNKNOWN_STAGE
 
 INF = float("inf")
-#: Paper 000, Table 2 ("Arc7 and stronger"), by WMO stage code. The paper's "thin" (тонкий) is
+#: Grinyak et al. 2022, Table 2 ("Arc7 and stronger"), by WMO stage code. The paper's "thin" (тонкий) is
 #: thin first-year ice (87, with its stages 88 and 89), "first-year" (однолетний) the undivided
 #: 86, "medium" 91, "thick" 93; "new ice" (начальные виды) 81.
 TABLE_2 = {55: 2.0, 81: 3.0, 82: 5.0, 84: 8.0, 83: 10.0, 85: 13.0, 87: 15.0, 88: 15.0,
            89: 15.0, 86: 20.0, 91: 25.0, 93: 30.0}
-#: Paper 000, Table 3 (Arc5).
+#: Grinyak et al. 2022, Table 3 (Arc5).
 TABLE_3 = {55: 1.0, 81: 3.0, 82: 5.0, 84: 10.0, 83: 15.0, 85: 25.0, 87: 30.0, 88: 30.0,
            89: 30.0, 86: INF, 91: INF, 93: INF}
 
 
 def derive_table(ice_class) -> dict:
-    """Impact table (WMO code -> u) of an RS class by the module's rule (paper 000 + Table 1)."""
+    """Impact table (WMO code -> u) of an RS class by the module's rule (Grinyak et al. 2022 + Table 1)."""
     cls = get_class(ice_class)
     if cls.system != "RS" and cls.name != "none":
         cls = CLASSES[cls.rs_class]
@@ -71,7 +71,7 @@ def table_for(ice_class) -> dict:
 
 
 def ice_impact(stage, ice_class="Arc7", *, table=None, unknown="raise", concentration=None):
-    """Paper 000's impact u (cost per unit length, dimensionless) of each pixel's WMO stage of
+    """Grinyak et al. 2022's impact u (cost per unit length, dimensionless) of each pixel's WMO stage of
     development for a vessel of `ice_class` (any name of seaway.ice.classes); inf where the
     class may not go.
 
@@ -80,7 +80,7 @@ def ice_impact(stage, ice_class="Arc7", *, table=None, unknown="raise", concentr
     unknown: what a code missing from the table costs: 'raise' (ValueError, the default) or a
         number (np.inf to forbid it, e.g. for old ice or 'unknown' 99).
     concentration: optional total concentration (tenths, same shape); pixels whose
-        concentration exceeds the class's max_concentration (paper 000 Table 1) become inf.
+        concentration exceeds the class's max_concentration (Grinyak et al. 2022 Table 1) become inf.
     Returns float64 u of the same shape (a DataArray, with attributes, for a DataArray)."""
     cls = get_class(ice_class)
     if table is None:
@@ -107,7 +107,7 @@ def ice_impact(stage, ice_class="Arc7", *, table=None, unknown="raise", concentr
     if hasattr(stage, "dims"):
         out = stage.copy(data=u)
         out.name = "ice_impact"
-        out.attrs = {"long_name": f"ice impact u for a {cls.name} vessel (paper 000)",
+        out.attrs = {"long_name": f"ice impact u for a {cls.name} vessel (Grinyak et al. 2022)",
                      "units": "1", "ice_class": cls.name}
         return out
     return u

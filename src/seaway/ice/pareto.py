@@ -1,4 +1,4 @@
-"""Andreeva's time-safety trade-off as routes (paper 002): sweep the safety threshold on F, find
+"""Andreeva's time-safety trade-off as routes (Andreeva 2021): sweep the safety threshold on F, find
 the quickest route for each, keep the Pareto-optimal ones."""
 
 from __future__ import annotations

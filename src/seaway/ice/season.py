@@ -21,7 +21,7 @@ clears the ice would arrive later than leaving with it — and no label-setting 
 it is, also in ice its class may not enter meanwhile: the charts are not drift forecasts.
 
 Speed of a class in a chart's ice (knots), `speed=`:
-* "andreeva" (default): paper 002 through seaway.ice.andreeva, V = F * V0, F = f2 * other_factor
+* "andreeva" (default): Andreeva 2021 through seaway.ice.andreeva, V = F * V0, F = f2 * other_factor
   with f2 = 1 - h / h_pass (h_pass the class's Table-1 thickness unless given); h is the
   `thickness` layer if the season has one, else the governing stage's typical thickness (the
   upper end of its WMO range by default: conservative; `stage_thickness="mid"` the middle);
@@ -30,7 +30,7 @@ Speed of a class in a chart's ice (knots), `speed=`:
   (55 ice free, 99 unknown) and total concentration; a stage the table lacks raises.
 Either way, unknown ice (NaN CT, stage 99, old ice without a thickness), land and pixels off the
 chart are closed, and with `concentration_limit=True` (default) so is ice above the class's
-independent-navigation concentration (paper 000 Table 1: Arc4-Arc6 6/10, Arc7-Arc8 8/10).
+independent-navigation concentration (Grinyak et al. 2022 Table 1: Arc4-Arc6 6/10, Arc7-Arc8 8/10).
 """
 
 from __future__ import annotations
@@ -116,7 +116,7 @@ def _closed(frame, ct, ice_class, concentration_limit):
 
 def andreeva_speed_kn(frame, ice_class, v0_kn, *, h_pass_m=None, stage_thickness="upper",
                       other_factor=1.0, concentration_limit=True) -> np.ndarray:
-    """Paper 002's V = F * V0 (knots) on one chart of a season; 0 where closed."""
+    """Andreeva 2021's V = F * V0 (knots) on one chart of a season; 0 where closed."""
     ct = np.asarray(frame["CT"].values, dtype=float)
     h_pass = get_class(ice_class).h_pass if h_pass_m is None else float(h_pass_m)
     if not h_pass > 0:
@@ -240,7 +240,7 @@ def route_season(season, start, end, *, ice_class="Arc7", v0_kn=12.0, departure=
     season: a season Dataset or NetCDF path (see the module docstring and as_season), or a
         SeasonGrid. ice_class: any class of seaway.ice.classes; v0_kn: its open-water speed (kn).
     departure: a date within the season (default its first chart's time).
-    speed: "andreeva" (paper 002) or a speed table; speed_options go to andreeva_speed_kn
+    speed: "andreeva" (Andreeva 2021) or a speed table; speed_options go to andreeva_speed_kn
         (h_pass_m, stage_thickness, other_factor, concentration_limit) or table_speed_kn.
     Waiting is allowed (the module docstring says why). Returns a Route whose cost is the
     passage time in hours, waiting included; see seaway.models.IceSeasonTime for its stats.

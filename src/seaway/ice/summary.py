@@ -44,7 +44,7 @@ def _chart_layers(chart):
 
 def summarize(route, chart, *, time_cost=None, polaris=None) -> dict:
     """Summary of `route` (a seaway Route found on this chart's grid) over `chart` (a SIGRID
-    chart Dataset or seaway.charts.kara_sea()).
+    chart Dataset or seaway.samples.kara_sea()).
 
     time_cost: optional raster of time per unit length (e.g. h/km from andreeva.time_cost or
     polaris_chart(...).cost) to give times; polaris: optional Dataset from

@@ -20,8 +20,8 @@ from ..chart.legs import Segments
 #: The static edge costs over a raster of cost per unit length: name -> engine class. The
 #: public list: the API, the CLI choices and the error texts come from it.
 EDGE_COSTS = {
-    "max": _core.MaxCost,  # paper 000: max(u_i, u_j) x length
-    "mean": _core.MeanCost,  # paper 003: (u_i + u_j) / 2 x length
+    "max": _core.MaxCost,  # Grinyak et al. 2022: max(u_i, u_j) x length
+    "mean": _core.MeanCost,  # Grinyak et al. 2018: (u_i + u_j) / 2 x length
     "integral": _core.IntegralCost,  # the exact line integral along the step
 }
 _PAIR_COSTS = {"max": _core.max_pair_costs, "mean": _core.mean_pair_costs}
@@ -74,7 +74,7 @@ class CostModel:
         return f"no route {where} under the {self.name} model"
 
     def segments(self, chart, neighbourhood: int):
-        """Pricing and land test of arbitrary legs on `chart` (seaway._segments)."""
+        """Pricing and land test of arbitrary legs on `chart` (seaway.chart.legs)."""
         raise ValueError(
             f"the {self.name!r} model prices only the engine's steps, not arbitrary straight legs "
             f"(its cost is in {self.unit(chart.geographic)}), so its routes cannot be smoothed or "

@@ -1,5 +1,5 @@
 """The cost models over a weather forecast (seaway.models re-exports them): travel time, fuel
-and wave danger (papers 001, 003, 004)."""
+and wave danger (Olovyannikov 2025, Grinyak et al. 2018 and Sotnikova 2009)."""
 
 from __future__ import annotations
 
@@ -26,7 +26,7 @@ class _OnForecast(CostModel):
 
 
 class TravelTime(_OnForecast):
-    """Hours through a forecast of currents, wind and waves (papers 001, 004); `forecast` is a
+    """Hours through a forecast of currents, wind and waves (Olovyannikov 2025 and Sotnikova 2009); `forecast` is a
     seaway.weather.ForecastGrid (its departure fixes the time axis)."""
 
     name = "time"
@@ -74,8 +74,8 @@ class TravelTime(_OnForecast):
 
 
 class Fuel(_OnForecast):
-    """Fuel + time_value x hours with an engine setting per step (paper 004), on the forecast
-    frame valid nearest `at_hours`; `fuel` a seaway.fuel.FuelCurve. Cost in tonnes."""
+    """Fuel + time_value x hours with an engine setting per step (Sotnikova 2009), on the forecast
+    frame valid nearest `at_hours`; `fuel` a seaway.weather.FuelCurve. Cost in tonnes."""
 
     name = "fuel"
 
@@ -111,7 +111,7 @@ class Fuel(_OnForecast):
 
 
 class WaveDanger(_OnForecast):
-    """Wave danger by heading (paper 003 with MSC.1/Circ.1228): sum (u_i + u_j) / 2 x km with u in
+    """Wave danger by heading (Grinyak et al. 2018 with MSC.1/Circ.1228): sum (u_i + u_j) / 2 x km with u in
     [1, 10], on the forecast frame valid nearest `at_hours`. Cost in danger x km."""
 
     name = "wave danger"

@@ -220,13 +220,13 @@ class Route:
         return route_table(self)
 
     def smoothed(self, **options) -> Route:
-        """Any-angle smoothing (see seaway.smooth.smooth)."""
+        """Any-angle smoothing (see seaway.smooth)."""
         from ..smoothing import smooth
         return smooth(self, **options)
 
     def explore(self, **options):
         """An interactive folium.Map of the route over its chart, working offline (see
-        seaway.webmap.explore for the options)."""
+        seaway.output.webmap.explore for the options)."""
         from ..output.webmap import explore
         return explore(self, **options)
 

@@ -1,9 +1,9 @@
-"""Fuel-optimal speeds (paper 004): an engine setting per step from a discrete set in
+"""Fuel-optimal speeds (Sotnikova 2009): an engine setting per step from a discrete set in
 [vmin, vmax], fuel burnt at a rate q(v) per hour that depends on the setting.
 
 Each step takes the setting that minimises fuel + lambda x time, lambda being what an hour of
 passage is worth in tonnes of fuel; lambda = 0 is the least fuel whatever the time, a large
-lambda the quickest passage. Sweeping lambda gives the time-fuel trade-off (paper 004: 5 % less
+lambda the quickest passage. Sweeping lambda gives the time-fuel trade-off (Sotnikova 2009: 5 % less
 fuel for 3.4 % more time) and the least fuel under an arrival deadline (the smallest lambda
 that meets it). Routes are found on the forecast frame valid at `at_hours` after its first time:
 with fuel + lambda x time as the label, the time a step starts is not known during the search.

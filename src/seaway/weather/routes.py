@@ -7,7 +7,7 @@ the first frame and after the last). The search labels every pixel with its earl
 time, which is exact when the weather is FIFO: leaving later never means arriving earlier
 (true unless a forecast speeds the ship up faster than time passes).
 
-Physics (paper 001), computed in the C++ core for every step and course:
+Physics (Olovyannikov 2025), computed in the C++ core for every step and course:
 * speed through water in wind waves, Khokhlov (eq. 8):
   V = V0 - (0.745 h - 0.275 q h)(1 - 1.35e-6 D V0), h = 1.32 x significant height (3 % waves,
   Rayleigh), q the waves' bearing from the bow in radians (0 head seas, pi following seas),
@@ -17,7 +17,7 @@ Physics (paper 001), computed in the C++ core for every step and course:
   the track means cancelling the cross current, which gives the minus (DOMAIN.md), and
   Vt |sin q| >= V0 (the track cannot be held) is impassable;
 * impassable where the wind exceeds max_wind_ms (25 m/s) or the waves max_wave_m (5 m), and,
-  for paper 004's moving danger zones, where the wind exceeds danger_wind_ms (11 m/s) at the
+  for Sotnikova 2009's moving danger zones, where the wind exceeds danger_wind_ms (11 m/s) at the
   time the ship would be there.
 """
 
@@ -50,7 +50,7 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
     via: points to pass in order; each leg departs when the previous one arrives.
     if_no_safe_route: when no route avoids the vessel's danger zones (danger_wind_ms,
         danger_wave_m), "least_danger" returns the route with the least hours in danger, then
-        the least hours (paper 004), flagged stats["through_danger"] = True with
+        the least hours (Sotnikova 2009), flagged stats["through_danger"] = True with
         stats["danger_h"] and stats["danger_legs"] (where, when and how long); "raise" raises
         NoRouteError. The hard limits (max_wind_ms, max_wave_m) are never crossed.
     Returns a Route whose cost is the passage time in hours (stats hold departure and arrival).
@@ -77,7 +77,7 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
 
 def route_safest(forecast, start, end, *, ship_length_m, speed_kn, at_hours=0.0, land=None,
                  neighbourhood=5, method="astar", variables=None) -> Route:
-    """The route of least wave danger (paper 003): minimises sum (u_i + u_j) / 2 * r with the
+    """The route of least wave danger (Grinyak et al. 2018): minimises sum (u_i + u_j) / 2 * r with the
     danger u in [1, 10] from MSC.1/Circ.1228's criteria for the step's heading (see
     seaway._core.wave_danger and cpp/seaway/waves.hpp), on the forecast frame valid nearest
     `at_hours` after its first time. Needs wave height, direction and period fields; cost in
@@ -97,7 +97,7 @@ def position_at(route: Route, hours: float) -> tuple[int, tuple[float, float]]:
 
 
 def replan(route: Route, hours: float, forecast, end, **kwargs) -> Route:
-    """Paper 003's re-planning: route again from where the ship is `hours` after departure,
+    """Grinyak et al. 2018's re-planning: route again from where the ship is `hours` after departure,
     with a newer `forecast`, leaving at that time. kwargs go to route_time()."""
     if "departure" not in route.stats:
         raise ValueError("re-planning needs a route found through a forecast with a time axis")
