@@ -40,9 +40,12 @@ class Vessel:
 
     def check_waves(self, max_hs_m: float):
         """STAWAVE-1 holds for Hs <= 2.25 sqrt(L / 100) (ITTC 7.5-04-01-01.1)."""
-        if self.speed_loss == "stawave1" and max_hs_m > 2.25 * np.sqrt(self.length_m / 100):
+        if self.speed_loss != "stawave1" or self.length_m is None:
+            return
+        limit = 2.25 * np.sqrt(self.length_m / 100)
+        if max_hs_m > limit:
             self._outside(f"STAWAVE-1 holds for significant heights up to 2.25 sqrt(L/100) = "
-                          f"{2.25 * np.sqrt(self.length_m / 100):.2f} m; the forecast has {max_hs_m:.2f} m")
+                          f"{limit:.2f} m; the forecast has {max_hs_m:.2f} m")
 
     def check(self):
         number(self.speed_kn, "speed_kn", above=0, what="positive", example=12.0)

@@ -28,7 +28,7 @@ def number(value, name: str, *, minimum=None, above=None, maximum=None, integer=
     ok_type = numbers.Integral if integer else numbers.Real
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, ok_type):
         raise TypeError(message.format(type(value).__name__ + " "))
-    v = int(value) if integer else float(value)
+    v = int(value) if integer else float(value)  # type: ignore[call-overload]
     if not (np.isfinite(v) and (minimum is None or v >= minimum) and (above is None or v > above)
             and (maximum is None or v <= maximum)):
         raise ValueError(message.format(""))

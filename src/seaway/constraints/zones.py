@@ -152,9 +152,9 @@ def rasterise_zone(zone: Zone, chart: Chart, chart_crs=None) -> np.ndarray:
     minx, miny, maxx, maxy = geom.bounds
     if chart.geographic:
         xs = (chart.lon - minx) % 360.0 + minx  # the same meridians in the geometry's range
-        ys = chart.lat
+        ys = np.asarray(chart.lat)
     else:
-        xs, ys = chart.x, chart.y
+        xs, ys = np.asarray(chart.x), np.asarray(chart.y)
     cols = np.nonzero((xs >= minx) & (xs <= maxx))[0]
     rows = np.nonzero((ys >= miny) & (ys <= maxy))[0]
     out = np.zeros(chart.shape, dtype=bool)

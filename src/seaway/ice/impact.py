@@ -67,7 +67,8 @@ ICE_IMPACT = {name: derive_table(name) for name in class_names("RS") + ["none"]}
 def table_for(ice_class) -> dict:
     """The table ice_impact uses for a class: ICE_IMPACT[name], else its RS equivalent's."""
     cls = get_class(ice_class)
-    return ICE_IMPACT.get(cls.name, ICE_IMPACT.get(cls.rs_class))
+    table = ICE_IMPACT.get(cls.name)
+    return table if table is not None else ICE_IMPACT[str(cls.rs_class)]
 
 
 def ice_impact(stage, ice_class="Arc7", *, table=None, unknown="raise", concentration=None):

@@ -133,7 +133,7 @@ def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_tou
     layers = _decode(fields, n, concentration)
     off = index < 0
     dims = grid.dims()
-    data = {}
+    data: dict[str, tuple] = {}
     attrs = {"CT": ("total concentration", "0.1"), "CA": ("partial concentration of SA", "0.1"),
              "CB": ("partial concentration of SB", "0.1"), "CC": ("partial concentration of SC", "0.1"),
              "SA": ("stage of development, thickest (WMO code)", "1"),

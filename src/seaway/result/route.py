@@ -186,10 +186,11 @@ class Route:
         env = dict(self.environment)
         for name in (names or list(data.keys())):
             arr = data[name]
-            if hasattr(arr, "dims") and self.chart.template is not None:
-                if set(arr.dims) != set(self.chart.template.dims):
+            template = self.chart.template
+            if hasattr(arr, "dims") and hasattr(template, "dims"):
+                if set(arr.dims) != set(template.dims):
                     continue
-                arr = arr.transpose(*self.chart.template.dims)
+                arr = arr.transpose(*template.dims)
             arr = np.asarray(getattr(arr, "values", arr))
             if arr.shape == self.chart.shape and np.issubdtype(arr.dtype, np.number):
                 env[str(name)] = arr
@@ -205,9 +206,10 @@ class Route:
                "edge_cost": self.edge_cost, "cost_unit": self.unit,
                "neighbourhood": self.neighbourhood}
         if self.geographic:
-            out["length_nm"] = self.length / geo.KM_PER_NM
+            length_nm = self.length / geo.KM_PER_NM
+            out["length_nm"] = length_nm
             if speed:
-                out.update(speed_kn=float(speed), time_h=out["length_nm"] / speed)
+                out.update(speed_kn=float(speed), time_h=length_nm / speed)
         for name in self.environment:
             vals = [leg.environment[name][1] for leg in legs]
             if name not in LEAST:
