@@ -12,6 +12,7 @@ import numpy as np
 from .. import _core
 from ..base.validate import number
 from .cf import coord_role
+from .flags import flags_out, has_flags
 
 
 @dataclass
@@ -65,10 +66,19 @@ def from_dataarray(da):
         )
     roles = {}
     for dim in da.dims:
-        coord = da.coords.get(dim)
+        coord = da.coords[dim] if dim in da.coords else None  # (.get makes up a range)
+        if coord is None:  # a 1-D coordinate along it under another name (NSIDC's xgrid on x)
+            coord = next((c for c in da.coords.values() if c.dims == (dim,)
+                          and coord_role(c.name, c.attrs)), None)
         if coord is None:
+            if coord_role(dim, {}) in ("lat", "lon"):
+                raise ValueError(
+                    f"the dimension {dim!r} has no coordinate values, so its pixels' "
+                    f"{coord_role(dim, {})} is unknown; give them, e.g. "
+                    f"da.assign_coords({dim}=values), or rename the dimension if it is not "
+                    "geographic")
             continue
-        role = coord_role(dim, coord.attrs)
+        role = coord_role(str(coord.name), coord.attrs)
         if role:
             roles[role] = (dim, np.asarray(coord.values, dtype=float))
     if "lat" in roles and "lon" in roles:
@@ -123,8 +133,12 @@ def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negat
     """Validate the user's raster and coordinates and build the engine's view of them."""
     template = None
     coords: dict = {}
+    flag_land = None
     if hasattr(cost, "dims") and hasattr(cost, "coords"):  # an xarray.DataArray
         values, coords, template = from_dataarray(cost)
+        if has_flags(template):  # CF flags and values outside valid_range are never costs
+            flagged = flags_out(template, "cost")
+            values, flag_land = np.asarray(flagged.values.values), flagged.land
     else:
         values = np.asarray(cost)
     if lat is not None or lon is not None:
@@ -167,6 +181,8 @@ def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negat
         if land_arr.shape != values.shape:
             raise ValueError(f"land has shape {land_arr.shape} but cost has shape {values.shape}; give a mask of the same shape")
         mask = np.ascontiguousarray(_land_mask(land_arr))
+    if flag_land is not None:
+        mask = flag_land.astype(np.uint8) if mask is None else mask | flag_land.astype(np.uint8)
 
     grid = _core.Grid()
     grid.rows, grid.cols = rows, cols

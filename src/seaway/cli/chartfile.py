@@ -14,11 +14,16 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..base.files import open_netcdf, read_geotiff
+from ..chart.cf import coord_role
+from ..chart.flags import flags_out, has_flags
 from ..ice import chart_impact
+from ..ice.codes import stage_name
+from ..ice.concentration import DEFAULT_STAGE, concentration_chart, is_concentration
 from ..ice.grids import latlon_grid
 from ..ice.routegrid import route_grid
 from ..ice.sigrid import read_sigrid3
 from ..samples import ice_impact, kara_sea
+from .projected import find_projection, in_km
 
 NETCDF = (".nc", ".nc4", ".cdf", ".netcdf", ".h5", ".hdf5")
 GEOTIFF = (".tif", ".tiff", ".gtiff")
@@ -40,13 +45,15 @@ class ChartData:
     description: str = ""
     notes: list = field(default_factory=list)
     layers: object = None  # the chart's Dataset (SIGRID-3 CT, SA, ... land): describes the ends
+    projection: object = None  # seaway.cli.projected.Projection of a projected chart, else None
 
 
 def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, grid=None,
-               ends=None) -> ChartData:
+               ends=None, stage=None) -> ChartData:
     """grid: (south, north, west, east, resolution) in degrees for a SIGRID-3 chart; by default
     a regional grid around `ends` ((lat, lon) start and end; seaway.ice.routegrid), else the
-    chart's own extent at 1/1000 of its longer side (geographic charts only)."""
+    chart's own extent at 1/1000 of its longer side (geographic charts only).
+    stage: the WMO stage assumed for the ice of a concentration-only chart (default 93)."""
 
     notes: list = []
     if path.lower() in ("kara", "builtin:kara"):
@@ -69,16 +76,38 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
             kind = "NetCDF chart"
     out = ChartData(cost=None, description=f"{kind} {path}", layers=ds)
     out.notes += notes
-    land_name = land_variable or ("land" if "land" in ds else None)
+    land_name = land_variable or _land_name(ds)
     if land_variable and land_variable not in ds:
         raise ChartError(f"{path} has no variable {land_variable!r}; it has {sorted(ds.data_vars)}")
-    if variable:
+    land = _land(ds[land_name], out.notes) if land_name else None
+    source = None  # the file's variable the cost comes from (its grid mapping, its flags)
+    conc = [n for n in ds.data_vars if is_concentration(ds[n]) and ds[n].ndim >= 2]
+    if variable and variable not in ds:
+        raise ChartError(f"{path} has no variable {variable!r}; it has {sorted(ds.data_vars)}")
+    if variable and is_concentration(ds[variable]) or (not variable and conc and not (
+            "stage_of_development" in ds or "SA" in ds)):
+        name = variable or _pick_concentration(path, ds, conc)
+        source = _two_d(ds[name], out.notes)
+        if not vessel:
+            raise ChartError(
+                f"{path}: {name} is a sea-ice concentration (CF sea_ice_area_fraction), not a cost "
+                "per unit length (open water would cost nothing); give --vessel CLASS (e.g. Arc7) "
+                f"to turn it into an ice chart for that class, its ice assumed to be "
+                f"{stage_name(stage or DEFAULT_STAGE)} (--assume-stage CODE to change)")
+        try:
+            ice, assumed = concentration_chart(source, stage=stage or DEFAULT_STAGE,
+                                               land=None if land is None else land.values)
+        except ValueError as exc:
+            raise ChartError(f"{path}: {exc}") from None
+        out.notes += assumed
+        out.layers, land = ice, ice["land"]
+        out.cost = chart_impact(ice, vessel)
+        out.description += f", {name} as an ice chart for {vessel} (Grinyak et al. 2022)"
+    elif variable:
         if vessel:
             raise ChartError("give either --variable (a cost raster) or --vessel (an ice class "
                              "applied to the chart's stage of development), not both")
-        if variable not in ds:
-            raise ChartError(f"{path} has no variable {variable!r}; it has {sorted(ds.data_vars)}")
-        out.cost = _two_d(ds[variable], out.notes)
+        source = out.cost = _two_d(ds[variable], out.notes)
         out.description += f", cost = {variable}"
     elif "stage_of_development" in ds or "SA" in ds:
         out.cost = _impact(ds, vessel or "Arc7", out.notes)
@@ -91,14 +120,87 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
         if vessel:
             raise ChartError(f"{path} has no stage_of_development (or SIGRID SA) variable to apply "
                              "--vessel to; give the cost with --variable instead")
-        out.cost = _two_d(ds[two_d[0]], out.notes)
+        source = out.cost = _two_d(ds[two_d[0]], out.notes)
         out.description += f", cost = {two_d[0]}"
-    if land_name:
-        out.land = _two_d(ds[land_name], out.notes).astype(bool)
+    if source is not None and has_flags(source) and source is out.cost:
+        flagged = flags_out(source)  # CF flags are never costs: land, or impassable
+        out.cost, out.notes = flagged.values, out.notes + flagged.notes
+        if flagged.land is not None:
+            land = flagged.values.copy(data=flagged.land | (False if land is None else land.values))
+    if land is not None:
+        out.land = land
     for name in ENVIRONMENT:
         if name in ds and ds[name].ndim >= 2:
             out.environment[name] = _two_d(ds[name], [])
+    if source is not None:
+        _project(out, ds, source)
     return out
+
+
+def _project(out: ChartData, ds, source) -> None:
+    """A chart on a projected grid with a known CRS: coordinates in km, the projection kept."""
+    try:
+        proj = find_projection(ds, source)
+    except ValueError as exc:
+        raise ChartError(str(exc)) from None
+    if proj is None:
+        return
+    try:
+        out.cost = in_km(out.cost)
+        out.land = None if out.land is None else in_km(out.land.astype(bool))
+        out.environment = {k: in_km(v) for k, v in out.environment.items()}
+    except (ValueError, KeyError, TypeError) as exc:
+        raise ChartError(f"{source.name}: {exc}") from None
+    out.projection = proj
+    _check_latlon(out, source, proj)
+    out.notes.append(f"projected chart ({proj.crs.name}, from {proj.source}): routed on its own "
+                     "grid in km; --from/--to and the outputs in lat/lon")
+
+
+def _check_latlon(out: ChartData, source, proj) -> None:
+    """A projected chart that also gives 2-D latitude/longitude: say how far they are from the
+    projection's (the route and outputs use the projection)."""
+    two = {coord_role(str(c.name), c.attrs): c for c in source.coords.values() if c.ndim == 2}
+    if "lat" not in two or "lon" not in two:
+        return
+    y, x = np.meshgrid(out.cost.y.values, out.cost.x.values, indexing="ij")
+    ll = proj.to_latlon(y.ravel(), x.ravel())
+    lat = np.asarray(two["lat"].transpose(*source.dims[-2:]).values, float).ravel()
+    err = np.nanmax(np.abs(ll[:, 0] - lat)) if lat.size == ll.shape[0] else 0.0
+    if err > 0.01:
+        out.notes.append(f"{source.name}: the file's latitudes and its projection differ by up to "
+                         f"{err:.2f} deg; the route and the outputs use the projection")
+
+
+def _land_name(ds):
+    """The land mask's variable: `land`, else a CF land_binary_mask or a ROMS-style mask."""
+    if "land" in ds:
+        return "land"
+    for name, v in ds.data_vars.items():
+        std = str(v.attrs.get("standard_name", ""))
+        if v.ndim >= 2 and (std == "land_binary_mask" or (
+                std == "area_type" and "land" in str(v.attrs.get("long_name", "")).lower())):
+            return name
+    return None
+
+
+def _land(da, notes):
+    """A land mask DataArray (True = land): 0/1 with 1 = land, or ROMS's option_0 = land."""
+    da = _two_d(da, notes)
+    if str(da.attrs.get("option_0", "")).lower() == "land":  # ROMS: 0 land, 1 water
+        notes.append(f"land = {da.name} == 0 (its option_0 is land)")
+        return da == 0
+    return da.astype(bool)
+
+
+def _pick_concentration(path, ds, names):
+    main = ds.attrs.get("cdr_variable")
+    if main in names:
+        return main
+    if len(names) == 1:
+        return names[0]
+    raise ChartError(f"{path} has several sea-ice concentrations ({', '.join(map(str, names))}); "
+                     "name one with --variable")
 
 
 def _two_d(da, notes):

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 from ..engine.api import route
 from ..errors import NoRouteError
 from ..models import EDGE_COSTS
@@ -21,6 +23,7 @@ from .common import (
 from .constraints import add_constraint_options, constraint_options
 from .depth import for_route, why_no_route
 from .ends import check_ends
+from .projected import end_pixel
 
 
 def run_route(args) -> int:
@@ -28,13 +31,17 @@ def run_route(args) -> int:
     say(f"reading {args.chart}")
     data = open_chart(args.chart, variable=args.variable, vessel=args.vessel,
                       land_variable=args.land_variable, grid=args.grid,
-                      ends=(args.start, args.end))
-    for note in data.notes:
-        say(note)
+                      ends=(args.start, args.end), stage=args.assume_stage)
+    for note in data.notes:  # what the chart's reading assumed or decided: even with --quiet
+        tell(note)
     cost = data.cost
     start, end = args.start, args.end
-    if not ("lat" in cost.coords or "latitude" in cost.coords):
-        say("the chart has projected y/x coordinates: --from and --to are ROW,COL pixel indices")
+    if data.projection is not None:
+        start, end = (end_pixel(cost, data.projection, p, name)
+                      for p, name in ((start, "start"), (end, "end")))
+    elif not ("lat" in cost.coords or "latitude" in cost.coords):
+        say("the chart has projected y/x coordinates but names no projection (CF grid_mapping): "
+            "--from and --to are ROW,COL pixel indices")
     chart_cost = cost
     cost, depth, shallow = for_route(args.depth, cost, draft=args.draft, ukc=args.ukc,
                                      variable=args.depth_variable, positive=args.depth_positive,
@@ -68,6 +75,9 @@ def run_route(args) -> int:
         r = r.smoothed()
         say(f"smoothed: cost {r.stats['cost_before']:.6g} -> {r.cost:.6g}, course changes "
             f"{r.stats['course_changes_before']} -> {r.stats['course_changes_after']}")
+    if data.projection is not None:  # vertices in lat/lon for the legs and the outputs
+        y, x = r.coords[:, 0], r.coords[:, 1]
+        r = dataclasses.replace(r, latlon=data.projection.to_latlon(y, x))
     r.name = args.name
     r.speed_kn = args.speed
     if data.environment:
@@ -101,6 +111,10 @@ def add_route_command(commands) -> None:
     rp.add_argument("--vessel", metavar="CLASS",
                     help="ice class (e.g. Arc7, Arc5): turns the chart's stage of development "
                          "into Grinyak et al. 2022's impact (default Arc7 on stage charts)")
+    rp.add_argument("--assume-stage", type=float, metavar="CODE",
+                    help="WMO stage of development assumed for the ice of a chart that gives only "
+                         "a concentration (CF sea_ice_area_fraction, e.g. NSIDC G02202); default "
+                         "93, thick first-year ice; said on stderr")
     rp.add_argument("--variable", metavar="NAME",
                     help="chart variable holding the cost per unit length (NaN/inf impassable); "
                          "GeoTIFF: the band number (default 1)")

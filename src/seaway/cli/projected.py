@@ -1,0 +1,109 @@
+"""Charts on projected grids on the command line: NSIDC's polar stereographic (EPSG:3411), an
+ocean model's grid (ROMS, NEMO on a CF grid mapping), ...
+
+The route is searched on the chart's own grid, in kilometres of the projection; the ends are
+given in lat/lon and projected onto it, and the route's vertices come back as lat/lon for the
+printed legs and every output (GeoJSON, GPX, RTZ, CSV). The projection comes from the cost
+variable's CF `grid_mapping` (its crs_wkt, spatial_ref or proj4 string, else its CF parameters;
+pyproj, the [ice] extra). A projected chart without one is routed in ROW,COL pixels, said so."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..chart.cf import coord_role
+
+_CRS_ATTRS = ("crs_wkt", "spatial_ref", "proj4_string", "proj4text", "proj4")
+
+
+@dataclass
+class Projection:
+    crs: object  # pyproj.CRS
+    source: str  # where it was found, for the messages
+
+    def to_xy_km(self, lat, lon):
+        import pyproj
+        t = pyproj.Transformer.from_crs("EPSG:4326", self.crs, always_xy=True)
+        x, y = t.transform(lon, lat)
+        return np.asarray(y) / 1000.0, np.asarray(x) / 1000.0
+
+    def to_latlon(self, y_km, x_km) -> np.ndarray:
+        import pyproj
+        t = pyproj.Transformer.from_crs(self.crs, "EPSG:4326", always_xy=True)
+        lon, lat = t.transform(np.asarray(x_km) * 1000.0, np.asarray(y_km) * 1000.0)
+        return np.column_stack([lat, lon])
+
+
+def _axes(da):
+    """The (y, x) 1-D coordinates of a 2-D DataArray, by CF role, or None."""
+    found = {}
+    for dim in da.dims:
+        for c in da.coords.values():
+            if c.dims == (dim,) and coord_role(str(c.name), c.attrs) in ("y", "x"):
+                found[coord_role(str(c.name), c.attrs)] = c
+    return (found["y"], found["x"]) if len(found) == 2 else None
+
+
+def find_projection(ds, da) -> Projection | None:
+    """The CRS of a projected cost DataArray from its grid mapping; None when it names none."""
+    name = da.attrs.get("grid_mapping")
+    if not name or _axes(da) is None:
+        return None
+    if name not in ds:
+        raise ValueError(f"{da.name} names the grid mapping {name!r}, which the file does not have")
+    try:
+        import pyproj
+    except ImportError:
+        raise ValueError('a chart on a projected grid needs pyproj: pip install "seaway[ice]"') from None
+    attrs = ds[name].attrs
+    for key in _CRS_ATTRS:
+        if attrs.get(key):
+            try:
+                return Projection(pyproj.CRS.from_user_input(attrs[key]), f"{name}.{key}")
+            except pyproj.exceptions.CRSError:
+                continue
+    try:
+        return Projection(pyproj.CRS.from_cf(dict(attrs)), f"{name} (CF parameters)")
+    except pyproj.exceptions.CRSError as exc:
+        raise ValueError(f"cannot read the projection of {da.name} from its grid mapping "
+                         f"{name!r} ({exc}); fix its attributes (crs_wkt or proj4_string)") from None
+
+
+def in_km(da):
+    """The DataArray with its y/x coordinates in km (metres divided by 1000), as dimension
+    coordinates named y and x."""
+    y, x = _axes(da)
+    out = []
+    for c in (y, x):
+        units = str(c.attrs.get("units", "")).lower()
+        scale = 1.0 if units in ("km", "kilometre", "kilometer", "kilometres", "kilometers") else 1e-3
+        if units not in ("m", "meter", "meters", "metre", "metres", "km", "kilometre",
+                         "kilometer", "kilometres", "kilometers"):
+            raise ValueError(f"{da.name}: the projected coordinate {c.name} has units "
+                             f"{c.attrs.get('units')!r}; give metres or km")
+        out.append(np.asarray(c.values, float) * scale)
+    da = da.drop_vars([n for n in da.coords if n not in da.dims or n in (y.name, x.name)],
+                      errors="ignore")
+    da = da.rename({y.dims[0]: "y", x.dims[0]: "x"}) if (y.dims[0], x.dims[0]) != ("y", "x") else da
+    return da.assign_coords(y=("y", out[0], {"standard_name": "projection_y_coordinate", "units": "km"}),
+                            x=("x", out[1], {"standard_name": "projection_x_coordinate", "units": "km"}))
+
+
+def end_pixel(da_km, proj: Projection, p, name: str) -> tuple[int, int]:
+    """(row, col) of the pixel holding the point p = (lat, lon) on a chart in km."""
+    y, x = proj.to_xy_km(p[0], p[1])
+    ys, xs = np.asarray(da_km.y.values), np.asarray(da_km.x.values)
+    r = (float(y) - ys[0]) / (ys[1] - ys[0]) if ys.size > 1 else 0.0
+    c = (float(x) - xs[0]) / (xs[1] - xs[0]) if xs.size > 1 else 0.0
+    rows, cols = ys.size, xs.size
+    if not (-0.5 <= r <= rows - 0.5 and -0.5 <= c <= cols - 0.5):
+        corners = proj.to_latlon([ys[0], ys[0], ys[-1], ys[-1]], [xs[0], xs[-1], xs[0], xs[-1]])
+        box = ", ".join(f"{a:.2f},{b:.2f}" for a, b in corners)
+        raise ValueError(f"{name} {p[0]:g},{p[1]:g} lies outside the chart (its corners are at "
+                         f"{box} lat,lon); give a point on the chart")
+    return min(int(round(r)), rows - 1), min(int(round(c)), cols - 1)
+
+
+__all__ = ["Projection", "find_projection", "in_km", "end_pixel"]
