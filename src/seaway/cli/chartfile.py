@@ -22,6 +22,7 @@ from ..ice.concentration import DEFAULT_STAGE, concentration_chart, is_concentra
 from ..ice.grids import latlon_grid
 from ..ice.routegrid import route_grid
 from ..ice.sigrid import read_sigrid3
+from ..ice.vectorfile import check_vector_file
 from ..samples import ice_impact, kara_sea
 from .projected import find_projection, in_km
 
@@ -63,6 +64,9 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
         if not os.path.exists(path):
             raise ChartError(f"{path}: no such file")
         ext = os.path.splitext(path)[1].lower()
+        if os.path.isdir(path) and ext not in SIGRID:
+            raise ChartError(f"{path} is a directory; give a chart file (NetCDF, GeoTIFF or "
+                             "SIGRID-3) inside it")
         if ext in GEOTIFF:
             return _geotiff(path, variable, vessel)
         if ext in SIGRID:
@@ -229,6 +233,12 @@ def _sigrid(path, grid, ends=None, notes=None):
     except ImportError as exc:
         raise ChartError(f"{path}: reading SIGRID-3 charts needs the [ice] extra ({exc}): "
                          'pip install "seaway[ice]"') from None
+    try:  # a directory, an empty file, a shapefile without .dbf/.shx or with a broken .prj
+        assumed = check_vector_file(path)
+    except ValueError as exc:
+        raise ChartError(str(exc)) from None
+    if notes is not None:
+        notes += assumed
     if grid is None and ends is not None:
         try:
             info = pyogrio.read_info(path)
