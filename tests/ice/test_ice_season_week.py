@@ -154,8 +154,15 @@ def test_command_line_routes_through_dated_sigrid3_files(week, tmp_path, capsys)
     assert f"{api.cost:.2f} h" in text and "wait " in text and "at 72.1500, 62.4500 from 2026-07-01" in text
     assert out.exists()
     # Bad command lines name the fix and exit 1.
-    assert main(["season", *charts, "--from", "72.15,60.05", "--to", "72.15,63.95", "-q"]) == 1
-    assert "--grid SOUTH,NORTH,WEST,EAST,RES" in capsys.readouterr().err
+    # Without --grid, the grid is chosen as `seaway route` chooses it (clipped to the charts) and said.
+    assert main(["season", *charts, "--from", "72.15,60.05", "--to", "72.15,63.95", "-q"]) == 0
+    err = capsys.readouterr().err
+    assert "seaway season: grid: lat 72.00..72.30, lon 59.99..64.01" in err and "--grid" in err
+    # A chart that does not cover an end is named: its extent, not the ice, stops the voyage.
+    assert main(["season", *charts, "--grid", "72,72.3,60,66,0.1", "--from", "72.15,60.05",
+                 "--to", "72.15,65.5", "-q"]) == 1
+    err = capsys.readouterr().err
+    assert f"the chart of {DAYS[0]} ({tmp_path / 'c0.shp'}) does not cover the end 72.15,65.5" in err
     assert main(["season", charts[1], charts[0], "--grid", "72,72.3,60,64,0.1", "--from",
                  "72.15,60.05", "--to", "72.15,63.95", "-q"]) == 1
     assert "is followed by 2026-07-01T00:00:00: sorted(charts)" in capsys.readouterr().err

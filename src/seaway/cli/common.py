@@ -69,9 +69,9 @@ def searching(say, pixels: int):
     return contextlib.nullcontext() if say.quiet else reporting(SettledProgress(say, pixels))
 
 
-def tell(message: str) -> None:
-    """What changed the voyage (a snapped end): on stderr even with --quiet."""
-    print(f"seaway route: {message}", file=sys.stderr, flush=True)
+def tell(message: str, command: str = "route") -> None:
+    """What changed the voyage or was assumed (a snapped end): on stderr even with --quiet."""
+    print(f"seaway {command}: {message}", file=sys.stderr, flush=True)
 
 
 def neighbourhood(text: str) -> int:

@@ -9,10 +9,12 @@ import os
 import numpy as np
 
 from ..ice.grids import latlon_grid
+from ..ice.routegrid import route_grid
 from ..ice.season import SeasonGrid, read_season
 from ..models import IceSeasonTime
 from ..output import export
-from .common import EPILOG, Progress, grid, neighbourhood, point
+from .chartfile import _in_degrees
+from .common import EPILOG, Progress, grid, neighbourhood, point, tell
 
 
 def dated_chart(text: str) -> tuple[str, str]:
@@ -54,11 +56,47 @@ def _season(args):
     for _, path in charts:
         if not os.path.exists(path):
             raise ValueError(f"{path}: no such file")
-    if args.grid is None:
-        raise ValueError("give the lat/lon grid to rasterise the charts onto: --grid "
-                         "SOUTH,NORTH,WEST,EAST,RES (degrees)")
+    if args.grid is None:  # as `seaway route` does: the box around the voyage
+        target, note = route_grid(args.start, args.end, chart_bounds=_bounds(charts))
+        tell(note, "season")
+    else:
+        target = latlon_grid(*args.grid)
+    ds = read_season(charts, target)
+    _check_cover(ds, charts, (args.start, args.end), target)
+    return SeasonGrid(ds)
 
-    return SeasonGrid(read_season(charts, latlon_grid(*args.grid)))
+
+def _bounds(charts):
+    """The union of the charts' extents in degrees, or None when one is not in degrees."""
+    import pyogrio
+    boxes = []
+    for _, path in charts:
+        info = pyogrio.read_info(path)
+        if not _in_degrees(info):
+            return None
+        boxes.append(info["total_bounds"])
+    b = np.array(boxes, float)
+    return b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
+
+
+def _check_cover(ds, charts, ends, target):
+    """Say which chart does not cover an end, or most of the grid: off a chart's polygons the
+    ice is unknown, so impassable; that is the chart's extent, not the ice."""
+    off = np.asarray(ds["off_chart"].values)
+    lat, lon = np.asarray(target.y, float), np.asarray(target.x, float)
+    for k, (date, path) in enumerate(charts):
+        for name, p in zip(("start", "end"), ends):
+            r = int(np.argmin(np.abs(lat - p[0])))
+            c = int(np.argmin(np.abs((lon - p[1] + 180) % 360 - 180)))
+            if off[k, r, c]:
+                raise ValueError(f"the chart of {date} ({path}) does not cover the {name} "
+                                 f"{p[0]:g},{p[1]:g}: no polygon of it lies there, so its ice is "
+                                 "unknown; give a chart that covers the voyage, or set the grid "
+                                 "with --grid")
+        share = float(off[k].mean())
+        if share > 0.05:
+            tell(f"the chart of {date} ({path}) leaves {100 * share:.0f} % of the grid uncovered: "
+                 "off its polygons the ice is unknown and impassable", "season")
 
 
 def run_season(args) -> int:
@@ -112,7 +150,8 @@ def add_season_command(commands) -> None:
     sp.add_argument("--no-concentration-limit", action="store_true",
                     help="let the class enter ice above its independent-navigation concentration")
     sp.add_argument("--grid", type=grid, metavar="S,N,W,E,RES",
-                    help="lat/lon grid (degrees) to rasterise SIGRID-3 charts onto (required for them)")
+                    help="lat/lon grid (degrees) to rasterise SIGRID-3 charts onto (default: as seaway "
+                         "route chooses it, the box around the great circle between the ends)")
     sp.add_argument("--neighbourhood", type=neighbourhood, default=5, metavar="K",
                     help="k of the k x k stencil: odd, 3 to 15 (default 5)")
     sp.add_argument("--method", default="astar", choices=("astar", "dijkstra"),
