@@ -47,6 +47,7 @@ class ChartData:
     notes: list = field(default_factory=list)
     layers: object = None  # the chart's Dataset (SIGRID-3 CT, SA, ... land): describes the ends
     projection: object = None  # seaway.cli.projected.Projection of a projected chart, else None
+    date: str = ""  # the chart's date (its time coordinate or time_coverage_start), if it has one
 
 
 def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, grid=None,
@@ -105,6 +106,7 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
             raise ChartError(f"{path}: {exc}") from None
         out.notes += assumed
         out.layers, land = ice, ice["land"]
+        out.environment["CT"] = ice["CT"]  # reported along the legs, drawn in the WMO colours
         out.cost = chart_impact(ice, vessel)
         out.description += f", {name} as an ice chart for {vessel} (Grinyak et al. 2022)"
     elif variable:
@@ -138,7 +140,19 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
             out.environment[name] = _two_d(ds[name], [])
     if source is not None:
         _project(out, ds, source)
+    out.date = _date(ds)
     return out
+
+
+def _date(ds) -> str:
+    """The chart's date as YYYY-MM-DD (HH:MM when not midnight), or ""."""
+    t = ds.coords.get("time") if "time" in ds.coords else None
+    text = ""
+    if t is not None and t.size >= 1 and np.issubdtype(t.dtype, np.datetime64):
+        text = str(np.datetime_as_string(np.asarray(t.values).ravel()[0], unit="m"))
+    elif ds.attrs.get("time_coverage_start"):
+        text = str(ds.attrs["time_coverage_start"])[:16]
+    return text.replace("T00:00", "").replace("T", " ")
 
 
 def _project(out: ChartData, ds, source) -> None:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 
+from ..base.units import KM_PER_NM
 from ..engine.api import route
 from ..errors import NoRouteError
 from ..models import EDGE_COSTS
@@ -75,23 +76,31 @@ def run_route(args) -> int:
         r = r.smoothed()
         say(f"smoothed: cost {r.stats['cost_before']:.6g} -> {r.cost:.6g}, course changes "
             f"{r.stats['course_changes_before']} -> {r.stats['course_changes_after']}")
-    if data.projection is not None:  # vertices in lat/lon for the legs and the outputs
-        y, x = r.coords[:, 0], r.coords[:, 1]
-        r = dataclasses.replace(r, latlon=data.projection.to_latlon(y, x))
     r.name = args.name
     r.speed_kn = args.speed
     if data.environment:
         r = r.with_environment(data.environment)
     if depth is not None:  # --depth, over a chart's own depth variable
         r = r.with_environment({"depth": depth})
+    planar = r  # the PNG map draws the projected chart as it is
+    if data.projection is not None:  # vertices in lat/lon for the legs and the outputs
+        y, x = r.coords[:, 0], r.coords[:, 1]
+        r = dataclasses.replace(r, latlon=data.projection.to_latlon(y, x))
     print(r)
     for path in args.out or []:
         fmt = export.write(r, path)
         say(f"wrote {path} ({fmt})")
     if args.plot:
-        plot_route(r, args.plot, title=f"{args.name}: {data.description}")
+        plot_route(planar if data.projection is not None else r, args.plot, title=_title(args, data, r))
         say(f"wrote {args.plot} (PNG)")
     return 0
+
+
+def _title(args, data, r) -> str:
+    """The map's title: the route, its chart's date and class, its length and cost."""
+    head = f"{args.name}" + (f", chart of {data.date}" if data.date else "")
+    length = f"{r.length:.0f} km ({r.length / KM_PER_NM:.0f} nm)" if r.geographic else f"{r.length:.1f} units"
+    return f"{head}: {length}, cost {r.cost:.5g} {r.unit}; {data.description}"
 
 
 def add_route_command(commands) -> None:
