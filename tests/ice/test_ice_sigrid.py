@@ -178,7 +178,7 @@ def test_real_chart_route_and_summary():
     assert s["time"] == pytest.approx(r.cost) and s["length"] == pytest.approx(r.length)
     assert s["length"] == pytest.approx(r.cost * 12 * 1.852)  # normal operation all the way
     assert 1200 < s["length"] < 1450
-    assert set(s["by_stage"]) == {"glacier ice", "new ice"}  # bergy water, then new ice 5/10
+    assert set(s["by_stage"]) == {"bergy water", "new ice"}  # CT 02 SA 98 FA 10, then new ice 5/10
     assert sum(v["distance"] for v in s["by_stage"].values()) == pytest.approx(s["length"])
     assert s["rio_min"] == 9 * 3 + 1 * -3 and not s["elevated_risk"]  # 1/10 glacier ice: HMY -3
 

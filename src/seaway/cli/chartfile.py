@@ -19,6 +19,7 @@ from ..chart.flags import flags_out, has_flags
 from ..ice import chart_impact
 from ..ice.codes import stage_name
 from ..ice.concentration import DEFAULT_STAGE, concentration_chart, is_concentration
+from ..ice.forms import DEFAULT_FAST_ICE, check_fast_ice
 from ..ice.grids import latlon_grid
 from ..ice.routegrid import route_grid
 from ..ice.sigrid import read_sigrid3
@@ -51,11 +52,13 @@ class ChartData:
 
 
 def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, grid=None,
-               ends=None, stage=None) -> ChartData:
+               ends=None, stage=None, fast_ice=DEFAULT_FAST_ICE) -> ChartData:
     """grid: (south, north, west, east, resolution) in degrees for a SIGRID-3 chart; by default
     a regional grid around `ends` ((lat, lon) start and end; seaway.ice.routegrid), else the
     chart's own extent at 1/1000 of its longer side (geographic charts only).
-    stage: the WMO stage assumed for the ice of a concentration-only chart (default 93)."""
+    stage: the WMO stage assumed for the ice of a concentration-only chart (default 93).
+    fast_ice: the stage of fast ice of unknown stage (seaway.ice.forms); what it assumes joins
+    the notes."""
 
     notes: list = []
     if path.lower() in ("kara", "builtin:kara"):
@@ -116,7 +119,7 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
         source = out.cost = _two_d(ds[variable], out.notes)
         out.description += f", cost = {variable}"
     elif "stage_of_development" in ds or "SA" in ds:
-        out.cost = _impact(ds, vessel or "Arc7", out.notes)
+        out.cost = _impact(ds, vessel or "Arc7", out.notes, fast_ice)
         out.description += f", ice impact for {vessel or 'Arc7'} (Grinyak et al. 2022)"
     else:
         two_d = [n for n in ds.data_vars if n != land_name and ds[n].ndim >= 2]
@@ -231,9 +234,14 @@ def _two_d(da, notes):
     return da
 
 
-def _impact(ds, vessel, notes):
+def _impact(ds, vessel, notes, fast_ice=DEFAULT_FAST_ICE):
     if "SA" in ds and "stage_of_development" not in ds:
-        return chart_impact(ds, vessel)
+        try:
+            u = chart_impact(ds, vessel, fast_ice=fast_ice)
+        except ValueError as exc:
+            raise ChartError(str(exc)) from None
+        notes += [f"assumed: {a}" for a in u.attrs.get("assumptions", ())]
+        return u
     try:
         return ice_impact(_two_d(ds.stage_of_development, notes), vessel)
     except ValueError as exc:
@@ -310,3 +318,12 @@ def _geotiff(path, variable, vessel):
         raise ChartError(str(exc)) from None
     da.name = "cost"
     return ChartData(cost=da, description=f"GeoTIFF {path}, band {band}")
+
+
+def fast_ice(text: str):
+    """argparse type of --fast-ice: 'nearby', 'closed' or a WMO stage code (seaway.ice.forms)."""
+    import argparse
+    try:
+        return check_fast_ice(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None

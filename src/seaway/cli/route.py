@@ -10,7 +10,7 @@ from ..errors import NoRouteError
 from ..models import EDGE_COSTS
 from ..output import export
 from ..output.plot import plot_route
-from .chartfile import open_chart
+from .chartfile import fast_ice, open_chart
 from .common import (
     CLI_METHODS,
     EPILOG,
@@ -32,7 +32,8 @@ def run_route(args) -> int:
     say(f"reading {args.chart}")
     data = open_chart(args.chart, variable=args.variable, vessel=args.vessel,
                       land_variable=args.land_variable, grid=args.grid,
-                      ends=(args.start, args.end), stage=args.assume_stage)
+                      ends=(args.start, args.end), stage=args.assume_stage,
+                      fast_ice=args.fast_ice)
     for note in data.notes:  # what the chart's reading assumed or decided: even with --quiet
         tell(note)
     cost = data.cost
@@ -124,6 +125,11 @@ def add_route_command(commands) -> None:
                     help="WMO stage of development assumed for the ice of a chart that gives only "
                          "a concentration (CF sea_ice_area_fraction, e.g. NSIDC G02202); default "
                          "93, thick first-year ice; said on stderr")
+    rp.add_argument("--fast-ice", type=fast_ice, default="nearby", metavar="RULE",
+                    help="stage of fast ice (SIGRID-3 FA 08) the chart gives no stage for: nearby "
+                         "(default: the thickest first-year stage on the grid, else thick "
+                         "first-year 93), closed (impassable), or a WMO stage code, e.g. 91; "
+                         "the assumption is printed (seaway.ice.forms)")
     rp.add_argument("--variable", metavar="NAME",
                     help="chart variable holding the cost per unit length (NaN/inf impassable); "
                          "GeoTIFF: the band number (default 1)")

@@ -125,3 +125,50 @@ def stage_code(value) -> float:
     if not math.isfinite(code):
         return math.nan
     return code if int(code) in STAGE_CODES else float(UNKNOWN_STAGE)
+
+
+#: SIGRID-3 form of ice (FA, FB, FC; the egg code's Fa Fb Fc), JCOMM TR-23 v3.0 -> name.
+FORM_CODES = {0: "pancake ice", 1: "shuga, small ice cake, brash ice", 2: "ice cake",
+              3: "small floe", 4: "medium floe", 5: "big floe", 6: "vast floe", 7: "giant floe",
+              8: "fast ice", 9: "growlers, floebergs or floebits", 10: "icebergs",
+              **{10 + n: f"strips and patches, {n}/10" for n in range(1, 11)},
+              21: "level ice", 99: "undetermined or unknown"}
+FAST_ICE = 8
+#: Ice of land origin among the forms (growlers, bergy bits; icebergs).
+LAND_ORIGIN_FORMS = (9, 10)
+#: SIGRID-3 concentration codes of freely navigable water (WMO No. 259): 01 open water (less
+#: than 1/10 sea ice), 02 bergy water (less than 1/10 ice of land origin).
+OPEN_WATER_CODE, BERGY_WATER_CODE = 1, 2
+
+#: Stages from the least to the most severe: by typical thickness (upper, then lower bound),
+#: old ice with the multi-year stages, then glacier ice, then unknown (99: cannot be ruled out
+#: worst). `stage_rank` orders codes by it; the governing stage of a leg is the highest rank.
+SEVERITY = (55, 80, 81, 82, 84, 83, 85, 88, 87, 89, 91, 86, 93, 96, 95, 97, 98, 99)
+FIRST_YEAR = (86, 87, 88, 89, 91, 93)
+
+
+def form_name(code: float) -> str:
+    """Name of a SIGRID-3 form code ('none' for NaN; 'form <n>' for codes outside the table)."""
+    if not math.isfinite(code):
+        return "none"
+    return FORM_CODES.get(int(code), f"form {int(code)}")
+
+
+def form_code(value) -> float:
+    """A decoded form: the SIGRID-3 code (0-21, 99), NaN when missing (-9, NULL, text) or out
+    of the table."""
+    code = parse_code(value)
+    return code if math.isfinite(code) and int(code) in FORM_CODES else math.nan
+
+
+def stage_rank(code: float) -> int:
+    """Position of a stage code in SEVERITY (-1 for NaN or codes outside it)."""
+    if not math.isfinite(code) or int(code) not in SEVERITY:
+        return -1
+    return SEVERITY.index(int(code))
+
+
+def thickest_first_year(codes) -> float | None:
+    """The most severe first-year stage (FIRST_YEAR, by SEVERITY) among `codes`, or None."""
+    present = {int(c) for c in np.asarray(codes, float).ravel() if math.isfinite(c)} & set(FIRST_YEAR)
+    return float(max(present, key=SEVERITY.index)) if present else None

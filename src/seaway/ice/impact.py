@@ -28,6 +28,7 @@ import numpy as np
 
 from .classes import CLASSES, IceClass, class_names, get_class
 from .codes import ICE_FREE, STAGE_CODES, UNKNOWN_STAGE
+from .forms import DEFAULT_FAST_ICE, fast_ice_stage, free_water_rule
 
 INF = float("inf")
 #: Grinyak et al. 2022, Table 2 ("Arc7 and stronger"), by WMO stage code. The paper's "thin" (тонкий) is
@@ -114,26 +115,41 @@ def ice_impact(stage, ice_class="Arc7", *, table=None, unknown="raise", concentr
     return u
 
 
-def governing_stage(ds, unknown_stage=UNKNOWN_STAGE):
+def governing_stage(ds, unknown_stage=UNKNOWN_STAGE, *, fast_ice=DEFAULT_FAST_ICE):
     """One stage per pixel of a SIGRID-style chart (seaway.ice.sigrid): SA (the thickest stage,
-    SIGRID-3 order) where there is ice, 55 where CT is 0, `unknown_stage` (99) where there is
-    ice of no known stage or the concentration is unknown; NaN on land and off the chart."""
+    SIGRID-3 order) where there is ice, 55 where CT is 0 and in open or bergy water (CT codes
+    01/02), `unknown_stage` (99) where there is ice of no known stage or the concentration is
+    unknown; NaN on land and off the chart. Fast ice (FA 08) of unknown stage takes the stage
+    `fast_ice` says (seaway.ice.forms: "nearby" by default, a WMO code, or "closed": NaN, i.e.
+    impassable). The result's attribute ``assumptions`` (a tuple of sentences) says what was
+    assumed."""
     ct, sa = ds["CT"].values, ds["SA"].values
     stage = np.where(ct == 0, float(ICE_FREE), sa)
     stage = np.where((ct > 0) & np.isnan(sa), float(unknown_stage), stage)
     off = ds["off_chart"].values if "off_chart" in ds else np.zeros(ct.shape, bool)
     stage = np.where(np.isnan(ct) & ~off, float(unknown_stage), stage)
-    land = ds["land"].values
-    return ds["CT"].copy(data=np.where(land | off, np.nan, stage)).rename("stage_of_development")
+    free, free_note = free_water_rule(ds)
+    stage = np.where(free, float(ICE_FREE), stage)
+    code, fast_note, fast = fast_ice_stage(ds, fast_ice)
+    blocked = ds["land"].values | off | (fast if code is None else np.zeros(ct.shape, bool))
+    stage = np.where(fast & ~blocked, code if code is not None else np.nan, stage)
+    out = ds["CT"].copy(data=np.where(blocked, np.nan, stage)).rename("stage_of_development")
+    out.attrs = {"long_name": "governing stage of development (WMO code)", "units": "1",
+                 "assumptions": tuple(n for n in (fast_note, free_note) if n)}
+    return out
 
 
-def chart_impact(ds, ice_class="Arc7", *, unknown=INF, table=None, use_concentration=False):
-    """u for a SIGRID-style chart Dataset: ice_impact of governing_stage(ds); land, ice shelves
-    and pixels off the chart are inf; stages the table lacks (old ice, 99) cost `unknown`
-    (impassable by default: conservative, never open water)."""
-    stage = governing_stage(ds)
+def chart_impact(ds, ice_class="Arc7", *, unknown=INF, table=None, use_concentration=False,
+                 fast_ice=DEFAULT_FAST_ICE):
+    """u for a SIGRID-style chart Dataset: ice_impact of governing_stage(ds, fast_ice=...); land,
+    ice shelves and pixels off the chart are inf; stages the table lacks (old ice, glacier ice
+    at 1/10 or more, 99) cost `unknown` (impassable by default: conservative, never open water).
+    Fast ice, bergy water and icebergs follow seaway.ice.forms; what was assumed is in the
+    result's ``assumptions`` attribute (and in Route.assumptions of routes found on it)."""
+    stage = governing_stage(ds, fast_ice=fast_ice)
     u = ice_impact(stage, ice_class, table=table, unknown=unknown,
                    concentration=ds["CT"] if use_concentration else None)
+    u.attrs["assumptions"] = stage.attrs["assumptions"]
     return u
 
 

@@ -3,7 +3,9 @@ Grid you choose, and NSIDC G02202 gridded sea-ice concentration (NetCDF).
 
 Needs the optional packages pyogrio, shapely, rasterio and pyproj (``pip install
 "seaway[ice]"``); the ImportError says so. Output: the ice chart Dataset documented in
-seaway.ice (CT, CA-CC in tenths; SA-SC WMO codes; land, ice_shelf, off_chart, polygon).
+seaway.ice (CT, CA-CC in tenths; SA-SC WMO codes; FA-FC form codes (8 = fast ice); free_water
+(CT code 01 open water / 02 bergy water); land, ice_shelf, off_chart, polygon). How the forms
+are costed (fast ice, bergy water, icebergs): seaway.ice.forms.
 
 What real charts contain, and what the reader does with it:
 * codes as text, with or without the leading zero ('1' = '01'), NULL on land: parse_code.
@@ -26,12 +28,13 @@ import warnings
 
 import numpy as np
 
-from .codes import concentration_tenths, parse_code, stage_code
+from .codes import FORM_CODES, concentration_tenths, form_code, parse_code, stage_code
 from .geometry import to_grid_crs, wrap_copies
 from .grids import Grid
 
 _STAGES = ("SA", "SB", "SC")
 _PARTIALS = ("CA", "CB", "CC")
+_FORMS = ("FA", "FB", "FC")
 EXTRA = 'pip install "seaway[ice]"'
 
 
@@ -87,13 +90,22 @@ def _decode(fields: dict, n: int, rule: str) -> dict:
         fill = ~np.isnan(out[s]) & np.isnan(out[c])
         out[c] = np.where(fill & ~given, rest, np.where(fill, 0.0, out[c]))
         given |= fill
+    for f in _FORMS:
+        out[f] = np.array([form_code(v) for v in get(f)])
+    ct_code = np.array([parse_code(v) for v in get("CT")])
+    out["free_water"] = np.where(ct_code == 1, 1, np.where(ct_code == 2, 2, 0)).astype(np.uint8)
     out["CT"] = np.where(ptype == "W", np.where(np.isnan(out["CT"]), 0.0, out["CT"]), out["CT"])
     blank = np.isin(ptype, ["L", "S", "N"])
-    for name in ("CT",) + _PARTIALS + _STAGES:
+    for name in ("CT",) + _PARTIALS + _STAGES + _FORMS:
         out[name] = np.where(blank, np.nan, out[name])
+    out["free_water"] = np.where(blank | (ptype == "W"), 0, out["free_water"]).astype(np.uint8)
     out["land"] = np.isin(ptype, ["L", "S"])
     out["ice_shelf"] = ptype == "S"
     return out
+
+
+def _flag(name: str) -> str:
+    return "_".join(name.replace(",", " ").replace("/", "_").split())
 
 
 def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_touched=False):
@@ -142,6 +154,15 @@ def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_tou
     for name, (long_name, units) in attrs.items():
         values = np.append(layers[name], np.nan)[index].astype(np.float32)
         data[name] = (dims, values, {"long_name": long_name, "units": units})
+    for name, whose in zip(_FORMS, _STAGES):
+        values = np.append(layers[name], np.nan)[index].astype(np.float32)
+        data[name] = (dims, values, {"long_name": f"form of ice of {whose} (SIGRID-3 code; 8 fast ice)",
+                                     "units": "1", "flag_values": np.array(sorted(FORM_CODES), np.int8),
+                                     "flag_meanings": " ".join(_flag(n) for _, n in sorted(FORM_CODES.items()))})
+    data["free_water"] = (dims, np.append(layers["free_water"], 0)[index].astype(np.uint8),
+                          {"long_name": "freely navigable water by its CT code (WMO-No. 259)",
+                           "flag_values": np.array([0, 1, 2], np.uint8),
+                           "flag_meanings": "not_coded_so open_water bergy_water"})
     for name in ("land", "ice_shelf"):
         data[name] = (dims, np.append(layers[name], False)[index])
     data["off_chart"] = (dims, off, {"long_name": "no chart polygon at the pixel centre"})

@@ -20,7 +20,7 @@ import numpy as np
 
 from ..base import sphere as geo
 from ..base.files import replace_atomically, write_atomically  # noqa: F401 - part of this API
-from ..result.environment import extreme_name
+from ..result.environment import CATEGORICAL, STAGES, Category, extreme_name
 from .webmap import html_text
 
 GPX_NS = "http://www.topografix.com/GPX/1/1"
@@ -65,6 +65,8 @@ def geojson(route, antimeridian: str = "split", speed_kn=None) -> dict:
             props[k] = v
         elif k == "least_depth_at" and v is not None:  # (lat, lon) of the shallowest pixel
             props[k] = [float(x) for x in v]
+        elif k == "assumptions":  # what the chart's ice assumes (seaway.ice.forms)
+            props[k] = list(v)
     props["name"] = route.name
     if route.geographic and antimeridian == "split":
         c = route.coords
@@ -126,7 +128,7 @@ def csv_text(route, speed_kn=None) -> str:
     env = list(route.environment)
     out = io.StringIO()
     w = csv.writer(out, lineterminator="\n")
-    w.writerow(CSV_FIELDS + [f"{n}_{s}" for n in env for s in ("mean", extreme_name(n))])
+    w.writerow(CSV_FIELDS + [h for n in env for h in _env_header(n)])
     first = route.waypoints[0]
     w.writerow([1, f"{first[0]:.7f}", f"{first[1]:.7f}"] + [""] * (len(CSV_FIELDS) - 3 + 2 * len(env)))
     km = cost = 0.0
@@ -136,9 +138,21 @@ def csv_text(route, speed_kn=None) -> str:
                f"{leg.course:.2f}", f"{leg.distance:.4f}", _opt(leg.distance_nm, 4),
                _opt(leg.speed_kn, 2), _opt(leg.time_h, 3), f"{leg.cost:.6g}", f"{km:.4f}",
                f"{cost:.6g}"]
-        row += [f"{v:.4g}" for n in env for v in leg.environment[n]]
+        row += [c for n in env for c in _env_cells(leg.environment[n])]
         w.writerow(row)
     return out.getvalue()
+
+
+def _env_header(name):
+    if name in CATEGORICAL:  # stage / form codes: one category per leg, code and name
+        return [f"{name}_{'governing' if name in STAGES else 'most_frequent'}", f"{name}_name"]
+    return [f"{name}_mean", f"{name}_{extreme_name(name)}"]
+
+
+def _env_cells(value):
+    if isinstance(value, Category):
+        return ["" if not np.isfinite(value.code) else str(int(value.code)), value.name]
+    return ["" if not np.isfinite(v) else f"{v:.4g}" for v in value]
 
 
 def write(route, path, fmt=None, speed_kn=None) -> str:

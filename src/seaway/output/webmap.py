@@ -19,8 +19,8 @@ import numpy as np
 
 from ..base import sphere as geo
 from ..base.files import write_atomically
-from ..ice.codes import STAGE_CODES
 from ..ice.colours import classes, guess_code
+from ..result.environment import Category
 from .style import LAND_COLOUR, ROUTE_COLOUR, edges, ice_layer, route_xy
 
 MERCATOR_LIMIT = 85.051128779806589  # Web Mercator's latitude limit
@@ -150,9 +150,12 @@ def _dms(value, pos, neg, width):
     return f"{int(deg):0{width}d}&deg;{minutes:04.1f}'{hemi}"
 
 
-def _ice_text(name, mean, high):
-    if name in ("stage_of_development", "SA") and np.isfinite(high) and int(high) in STAGE_CODES:
-        return f"{name}: up to {STAGE_CODES[int(high)][0]} (code {int(high)})"
+def _ice_text(name, value):
+    if isinstance(value, Category):
+        return f"{name}: {'up to' if value.rule == 'governing' else 'mostly'} {value}"
+    mean, high = value
+    if not np.isfinite(high):
+        return f"{name}: none"
     return f"{name}: mean {mean:.3g}, max {high:.3g}"
 
 
@@ -173,7 +176,7 @@ def _popup(route, number, point, leg, speed_kn):
         if leg.time_h is not None:
             lines.append(f"time {leg.time_h:.2f} h at {speed_kn:g} kn")
         lines.append(f"cost {leg.cost:.6g} {html.escape(route.unit)}")
-        lines += [html.escape(_ice_text(n, *mv)) for n, mv in leg.environment.items()]
+        lines += [html.escape(_ice_text(n, mv)) for n, mv in leg.environment.items()]
     return "<br>".join(lines)
 
 

@@ -1,12 +1,65 @@
 """What a route meets on its way: chart variables (ice, weather, depth) sampled along its legs,
-for the leg tables, summaries and exports."""
+for the leg tables, summaries and exports.
+
+Numeric variables give a leg's mean, min and max over the points sampled every half pixel
+along it (`Numeric`: a (mean, max) pair, (mean, min) for LEAST, with .mean .min .max).
+Categorical variables give one category (`Category`: .code, .name, .rule): the stages of
+development (SA, SB, SC, stage_of_development) their governing stage, the most severe met
+(seaway.ice.codes.SEVERITY: the thickest, unknown last); the form of ice (FA, FB, FC) and other
+codes the most frequent. A leg that samples no value gives NaN numbers and the category "none"
+(code NaN), never an error."""
 
 from __future__ import annotations
 
+from collections import Counter
+
 import numpy as np
+
+from .._core import haversine_km
+from ..chart.legs import index_coords, leg_path
+from ..ice.codes import form_name, stage_name, stage_rank
+from ..ice.forms import FREE_WATER
 
 #: Environment variables whose least value along a leg matters (reported instead of the most).
 LEAST = frozenset({"depth"})
+#: Categorical variables: a leg reports the governing stage (STAGES) or the most frequent code.
+STAGES = frozenset({"SA", "SB", "SC", "stage_of_development"})
+FORMS = frozenset({"FA", "FB", "FC"})
+CATEGORICAL = STAGES | FORMS | frozenset({"polygon", "free_water"})
+
+
+class Numeric(tuple):
+    """(mean, max) ((mean, min) for LEAST) of a numeric variable along a leg, with .mean, .min,
+    .max (NaN when the leg samples no value)."""
+
+    mean: float
+    min: float
+    max: float
+
+    def __new__(cls, mean, low, high, least=False):
+        self = super().__new__(cls, (mean, low if least else high))
+        self.mean, self.min, self.max = mean, low, high
+        return self
+
+
+class Category(tuple):
+    """The category of a leg: (code, code) as a pair, with .code, .name ('none' when no value
+    was sampled), .rule ('governing' or 'most frequent') and .share (of the sampled points)."""
+
+    code: float
+    name: str
+    rule: str
+    share: float
+    label: str
+
+    def __new__(cls, code, name, rule, share, coded=True):
+        self = super().__new__(cls, (code, code))
+        self.code, self.name, self.rule, self.share = code, name, rule, share
+        self.label = f"{name} ({int(code)})" if coded and np.isfinite(code) else name
+        return self
+
+    def __str__(self) -> str:
+        return self.label
 
 
 def extreme_name(name: str) -> str:
@@ -14,20 +67,87 @@ def extreme_name(name: str) -> str:
     return "min" if name in LEAST else "max"
 
 
+def category_name(name: str, code: float) -> str:
+    if not np.isfinite(code):
+        return "none"
+    if name in STAGES:
+        return stage_name(code)
+    if name in FORMS:
+        return form_name(code)
+    if name == "free_water":
+        return FREE_WATER.get(int(code), "neither")
+    return f"{name} {int(code)}"
+
+
+def summarise(name: str, vals: np.ndarray):
+    """The Numeric or Category of values sampled along a leg (NaN ignored)."""
+    vals = np.asarray(vals, float)
+    vals = vals[np.isfinite(vals)]
+    if name in CATEGORICAL:
+        if not vals.size:
+            return Category(np.nan, "none", "governing" if name in STAGES else "most frequent", 0.0)
+        counts = Counter(vals.tolist())
+        if name in STAGES:
+            code = max(counts, key=lambda c: (stage_rank(c), c))
+            rule = "governing"
+        else:
+            code, rule = counts.most_common(1)[0][0], "most frequent"
+        return Category(float(code), category_name(name, code), rule, counts[code] / vals.size,
+                        coded=name in STAGES | FORMS)
+    if not vals.size:
+        return Numeric(np.nan, np.nan, np.nan, name in LEAST)
+    return Numeric(float(vals.mean()), float(vals.min()), float(vals.max()), name in LEAST)
+
+
+def values_at(arr, pixels) -> np.ndarray:
+    """arr at (row, col) pixels (columns taken modulo the width, rows clipped), as float."""
+    a = np.asarray(arr, float)
+    return a[np.clip(pixels[:, 0], 0, a.shape[0] - 1), pixels[:, 1] % a.shape[1]]
+
+
 def along(route, i: int, j: int) -> dict:
-    """name -> (mean, max) ((mean, min) for LEAST) of each environment variable between
-    vertices i and j of `route`, sampled every half pixel."""
+    """name -> Numeric or Category of each environment variable between vertices i and j of
+    `route`, sampled every half pixel."""
     if not route.environment:
         return {}
     p = route.sample_pixels(i, j)
-    out = {}
-    for name, arr in route.environment.items():
-        cols = p[:, 1] % arr.shape[1]
-        vals = np.asarray(arr, float)[np.clip(p[:, 0], 0, arr.shape[0] - 1), cols]
-        vals = vals[np.isfinite(vals)]
-        top = vals.min() if name in LEAST else vals.max()
-        out[name] = (float(vals.mean()), float(top)) if vals.size else (np.nan, np.nan)
-    return out
+    return {name: summarise(name, values_at(arr, p)) for name, arr in route.environment.items()}
+
+
+def weighted_samples(route):
+    """(pixels (n, 2), length (n,) each sample stands for, step (n,)) along the route's steps:
+    the midpoints of pieces at most half a pixel long of each step's own path (a great circle on
+    lat/lon charts), each piece's length scaled so a step's pieces add up to its length (km on
+    geographic charts, grid units on planar ones). Sums over them are line integrals along the
+    route, smoothed or not."""
+    v, steps = route.vertices, route.leg_lengths
+    half = (route.neighbourhood - 1) // 2
+    pix, km, idx = [], [], []
+    for k, (p, q) in enumerate(zip(v[:-1], v[1:])):
+        straight = bool(np.all(p == np.round(p)) and np.all(q == np.round(q)) and np.abs(q - p).max() <= half)
+        path = leg_path(route.chart, p, q, straight)
+        pts, w = [], []
+        for a, b in zip(path[:-1], path[1:]):
+            m = max(int(np.ceil(2 * np.abs(b - a).max())), 1)
+            t = (np.arange(m) + 0.5) / m
+            pts.append(a + t[:, None] * (b - a))
+            w.append(np.full(m, _piece_length(route, a, b) / m))
+        w = np.concatenate(w)
+        w = w * (steps[k] / w.sum()) if w.sum() > 0 else np.full(w.size, steps[k] / w.size)
+        pix.append(np.rint(np.concatenate(pts)).astype(np.int64))
+        km.append(w)
+        idx.append(np.full(w.size, k))
+    if not pix:
+        return np.zeros((0, 2), np.int64), np.zeros(0), np.zeros(0, np.int64)
+    return np.concatenate(pix), np.concatenate(km), np.concatenate(idx)
+
+
+def _piece_length(route, a, b) -> float:
+    if route.chart.geographic:
+        (la1, lo1), (la2, lo2) = index_coords(route.chart, np.array([a, b]))
+        return float(haversine_km(la1, lo1, la2, lo2))
+    g = route.chart.grid
+    return float(np.hypot((b[0] - a[0]) * g.dy, (b[1] - a[1]) * g.dx))
 
 
 def least_depth(route, depth):

@@ -14,7 +14,15 @@ from ..base.validate import number
 from ..chart.legs import index_coords, leg_path
 from ..chart.raster import Chart
 from ..models.base import CostModel, EdgeCost
-from .environment import LEAST, along, extreme_name, least_depth  # noqa: F401 - extreme_name: part of this API
+from .environment import (  # noqa: F401 - extreme_name: part of this API
+    CATEGORICAL,
+    LEAST,
+    along,
+    extreme_name,
+    least_depth,
+    summarise,
+    values_at,
+)
 from .table import route_table
 
 
@@ -32,7 +40,9 @@ class Leg:
     speed_kn: float | None
     time_h: float | None
     cost: float
-    environment: dict  # name -> (mean, max) of the chart variable along the leg ((mean, min) for LEAST)
+    #: name -> the chart variable along the leg (seaway.result.environment): Numeric (mean, max)
+    #: pairs ((mean, min) for LEAST) or, for stages and forms of ice, a Category.
+    environment: dict
 
 
 @dataclass
@@ -55,6 +65,15 @@ class Route:
     #: name -> (rows, cols) array on the chart's grid: ice or weather reported along each leg.
     environment: dict = field(default_factory=dict, repr=False)
     name: str = "seaway route"
+
+    @property
+    def assumptions(self) -> tuple:
+        """What was assumed to build the chart the route was found on (e.g. the stage of fast
+        ice of unknown stage, seaway.ice.forms): the ``assumptions`` attribute of the cost
+        DataArray (chart_impact sets it); empty when nothing was assumed."""
+        attrs = getattr(self.chart.template, "attrs", None) or {}
+        said = attrs.get("assumptions", ())
+        return (said,) if isinstance(said, str) else tuple(said)
 
     @property
     def vertices(self) -> np.ndarray:
@@ -210,10 +229,16 @@ class Route:
             out["length_nm"] = length_nm
             if speed:
                 out.update(speed_kn=float(speed), time_h=length_nm / speed)
-        for name in self.environment:
-            vals = [leg.environment[name][1] for leg in legs]
-            if name not in LEAST:
-                out[f"max_{name}"] = float(np.nanmax(vals)) if vals else np.nan
+        for name, arr in self.environment.items():
+            if name in CATEGORICAL:  # the governing / most frequent category of the whole route
+                cat = summarise(name, values_at(arr, self.sample_pixels()))
+                out[f"{cat.rule.replace(' ', '_')}_{name}"] = str(cat)
+            elif name not in LEAST:
+                tops = [leg.environment[name].max for leg in legs]
+                tops = [v for v in tops if np.isfinite(v)]
+                out[f"max_{name}"] = float(max(tops)) if tops else None
+        if self.assumptions:
+            out["assumptions"] = list(self.assumptions)
         if "depth" in self.environment:  # for depth the least matters (seaway.depth)
             out["least_depth_m"], out["least_depth_at"] = least_depth(self, self.environment["depth"])
         return out

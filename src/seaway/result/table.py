@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .environment import extreme_name
+from .environment import CATEGORICAL, STAGES, Category, extreme_name
 
 
 def fmt_lat(v: float) -> str:
@@ -42,11 +42,13 @@ def route_table(route) -> str:
                    f"{route.neighbourhood}x{route.neighbourhood} stencil)"]
     if "time_h" in s:
         lines[-1] += f"; {fmt_hours(s['time_h'])} at {s['speed_kn']:g} kn"
+    lines += [f"assumed: {a}" for a in route.assumptions]
     if np.isfinite(s.get("least_depth_m", np.nan)):
         lines.append(f"least depth {s['least_depth_m']:.1f} m at {fmt_point(s['least_depth_at'], geo)}")
     env = list(route.environment)
     cols = ["leg", "from", "to", "course", "nm" if geo else "", units, "kn", "hours", "cost"]
-    cols += [f"{n} mean/{extreme_name(n)}" for n in env]
+    cols += [(f"{n} ({'governing' if n in STAGES else 'most frequent'})" if n in CATEGORICAL
+              else f"{n} mean/{extreme_name(n)}") for n in env]
     rows = []
     for leg in legs:
         row = [str(leg.number), fmt_point(leg.start, geo), fmt_point(leg.end, geo),
@@ -55,8 +57,11 @@ def route_table(route) -> str:
                f"{leg.speed_kn:g}" if leg.speed_kn else "-",
                f"{leg.time_h:.1f}" if leg.time_h is not None else "-", f"{leg.cost:.5g}"]
         for n in env:
-            mean, top = leg.environment[n]
-            row.append("-" if np.isnan(top) else f"{mean:.3g}/{top:.3g}")
+            value = leg.environment[n]
+            if isinstance(value, Category):
+                row.append(str(value) if np.isfinite(value.code) else "-")
+            else:
+                row.append("-" if np.isnan(value[1]) else f"{value[0]:.3g}/{value[1]:.3g}")
         rows.append(row)
     keep = [k for k, c in enumerate(cols) if c or any(r[k] for r in rows)]
     cols = [cols[k] for k in keep]
