@@ -25,8 +25,8 @@ class LazyLabels {
   explicit LazyLabels(std::int64_t n)
       : n_(std::size_t(n)), cost_(map(n_ * 8)), pred_(map(n_)), written_((n_ >> 9) + 1) {}
   ~LazyLabels() {
-    munmap(cost_, n_ * 8);
-    munmap(pred_, n_);
+    munmap(cost_, n_ > 0 ? n_ * 8 : 1);
+    munmap(pred_, n_ > 0 ? n_ : 1);
   }
   LazyLabels(const LazyLabels&) = delete;
   LazyLabels& operator=(const LazyLabels&) = delete;
@@ -62,7 +62,7 @@ class LazyLabels {
   }
   // Give every page back to the kernel (zero pages again on the next write).
   void release() {
-    madvise(cost_, n_ * 8 ? n_ * 8 : 1, MADV_DONTNEED);
+    madvise(cost_, n_ > 0 ? n_ * 8 : 1, MADV_DONTNEED);
     madvise(pred_, n_ ? n_ : 1, MADV_DONTNEED);
     std::fill(written_.begin(), written_.end(), std::uint8_t(0));
   }
