@@ -16,7 +16,7 @@
 #include <new>
 #include <vector>
 
-#include "grid.hpp"
+#include "geometry.hpp"
 
 namespace seaway {
 
@@ -50,7 +50,7 @@ class LazyLabels {
   int pred(std::int64_t v) const { return int(static_cast<const std::uint8_t*>(pred_)[v]) - 1; }
 
   // Back to "nothing reached" for the next search on the same chart, keeping the pages (a pool
-  // of PreparedGrid): the cost pages this search wrote are zeroed, so the next search writes
+  // of PreparedChart): the cost pages this search wrote are zeroed, so the next search writes
   // them without page faults. Predecessors are not: a search reads only those it wrote.
   void clear() {
     for (std::size_t p = 0; p < written_.size(); ++p)

@@ -9,7 +9,7 @@
 #include <limits>
 #include <thread>
 
-#include "grid.hpp"
+#include "geometry.hpp"
 
 namespace seaway {
 
@@ -25,7 +25,7 @@ struct Passability {
 // two passes, so on a chart of a million pixels or more each pass runs on two threads (the
 // preparation is a tenth of a fresh chart's route otherwise); the result does not depend on it.
 template <class T>
-Passability compute_clearance(const Grid& g, const T* cost, const std::uint8_t* land, int cap,
+Passability compute_clearance(const Geometry& g, const T* cost, const std::uint8_t* land, int cap,
                               std::uint8_t* clearance, std::uint8_t* scratch) {
   const std::int64_t R = g.rows, C = g.cols;
   // Pass 1: distance along the row to the nearest impassable pixel of that row.
