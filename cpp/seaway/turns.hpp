@@ -30,29 +30,6 @@
 
 namespace seaway {
 
-namespace detail {
-struct FreeDeleter {
-  void operator()(void* p) const { std::free(p); }
-};
-template <class T>
-std::unique_ptr<T[], FreeDeleter> zeroed(std::size_t n) {
-  void* p = std::calloc(n, sizeof(T));
-  if (!p) throw std::bad_alloc();
-  return std::unique_ptr<T[], FreeDeleter>(static_cast<T*>(p));
-}
-// Costs are stored as bits(d) ^ bits(inf), so zero-filled memory reads as inf.
-inline std::uint64_t bits_of(double d) {
-  std::uint64_t b;
-  std::memcpy(&b, &d, 8);
-  return b;
-}
-inline double from_bits(std::uint64_t b) {
-  double d;
-  std::memcpy(&d, &b, 8);
-  return d;
-}
-}  // namespace detail
-
 // Least-cost route from `start` to `target` with turn penalties under `model`. `incoming`: the
 // offset of the step that reached the start (charged at the first turn), or -1 for none.
 // weight 0: Dijkstra, 1: A*, > 1: weighted A*. The queue is chosen as in PreparedChart::run
