@@ -5,8 +5,8 @@
 //   template <class Fn> StepValues step_values(const Fn&, const PreparedChart&,
 //                                              const RouteResult&) const;  // per-step extras
 // visit() runs without the GIL: it must not touch Python objects.
-// Adding a model: a functor in cpp/seaway/, a struct here, its name in the Models list below,
-// its class in register_models.cpp, and a Python class in seaway/models.py.
+// Adding a model: a functor in cpp/seaway/ (with its Capabilities), a struct here, its name in
+// the Models list below, its class in register_models.cpp, and a Python class in seaway.models.
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -55,6 +55,9 @@ inline void check_on_grid(const PreparedChart& p, std::int64_t rows, std::int64_
 // integral, entered pixel).
 template <template <class> class Functor>
 struct RasterModel : NoStepValues {
+  static constexpr Capabilities caps = Functor<double>::caps;
+  template <class T>
+  using Rule = Functor<T>;
   pybind11::object keep;  // the raster
   const void* u = nullptr;
   bool single = false;
@@ -86,6 +89,7 @@ using ForecastPtr = std::shared_ptr<const ForecastFields>;
 
 // Hours through a forecast (Olovyannikov 2025 and Sotnikova 2009).
 struct TravelTimeModel : NoStepValues {
+  static constexpr Capabilities caps = WeatherTime::caps;
   ForecastPtr forecast;
   Vessel vessel;
   double best_speed_kn;
@@ -99,6 +103,7 @@ struct TravelTimeModel : NoStepValues {
 
 // Fuel + lambda x time with an engine setting per step (Sotnikova 2009), on the forecast's first frame.
 struct FuelModel {
+  static constexpr Capabilities caps = FuelLagrangian::caps;
   ForecastPtr forecast;
   Vessel vessel;
   std::vector<double> settings_kn, rate_t_per_h;
@@ -127,6 +132,7 @@ struct FuelModel {
 
 // Wave danger by heading (Grinyak et al. 2018, MSC.1/Circ.1228) on the forecast's first frame.
 struct WaveDangerModel : NoStepValues {
+  static constexpr Capabilities caps = WaveDangerCost::caps;
   ForecastPtr forecast;
   double ship_length_m, speed_kn;
 
@@ -142,6 +148,7 @@ struct WaveDangerModel : NoStepValues {
 // Hours through a season of ice charts (issue 10): hours per km, float32 (frames, rows, cols),
 // frame k valid from valid_from_h[k] hours after departure; waiting allowed (ice_time.hpp).
 struct IceSeasonModel {
+  static constexpr Capabilities caps = IceSeasonTime::caps;
   pybind11::object keep;  // the hours-per-km frames
   IceSeries series;
   std::vector<double> valid_from_h;
@@ -166,11 +173,19 @@ struct IceSeasonModel {
   }
 };
 
-// Every model a query takes: Router.route and Router.field get one overload each.
+// Every model a query takes: Router.route and Router.field get one overload each; the other
+// searches one for each model whose capabilities they need (for_each_model).
 template <class... M>
 struct ModelList {};
 using Models = ModelList<RasterModel<MaxCost>, RasterModel<MeanCost>, RasterModel<IntegralCost>,
-                         RasterModel<EnteredPixelCost>, TravelTimeModel, FuelModel, WaveDangerModel,
+                         RasterModel<LengthCost>, RasterModel<EnteredPixelCost>, TravelTimeModel, FuelModel, WaveDangerModel,
                          IceSeasonModel, Zoned<TravelTimeModel>>;
+
+// Calls f(static_cast<M*>(nullptr)) for every model M of the list: a binding folds over the
+// models and keeps those whose M::caps have what its search needs (if constexpr).
+template <class F, class... M>
+void for_each_model(ModelList<M...>, F&& f) {
+  (f(static_cast<M*>(nullptr)), ...);
+}
 
 }  // namespace seaway

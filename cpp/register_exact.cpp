@@ -1,9 +1,11 @@
 // Bindings for the faster exact searches on a Router: bidirectional Dijkstra on two threads
-// (any static raster model), and A* with landmark tables built once per chart and model
-// (the symmetric models max, mean, integral). Python (seaway/_exact.py) picks and validates.
+// (the models with caps.is_static), and A* with landmark tables built once per chart and model
+// (static and symmetric models). Python (seaway.engine.methods) picks and validates.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+
+#include <type_traits>
 
 #include "results.hpp"
 #include "seaway/bidirectional.hpp"
@@ -80,11 +82,9 @@ void register_exact(py::module_& m) {
     const Passability& p = chart.passability();
     return py::make_tuple(p.passable ? p.min_cost : 0.0, p.max_cost, p.passable);
   }, "(smallest, largest passable cost, passable pixels), from the preparation");
-  def_bidirectional<RasterModel<MaxCost>>(router);
-  def_bidirectional<RasterModel<MeanCost>>(router);
-  def_bidirectional<RasterModel<IntegralCost>>(router);
-  def_bidirectional<RasterModel<EnteredPixelCost>>(router);
-  def_landmarks<RasterModel<MaxCost>>(router);
-  def_landmarks<RasterModel<MeanCost>>(router);
-  def_landmarks<RasterModel<IntegralCost>>(router);
+  for_each_model(Models{}, [&](auto* tag) {
+    using M = std::remove_pointer_t<decltype(tag)>;
+    if constexpr (M::caps.is_static) def_bidirectional<M>(router);  // the backward side prices steps
+    if constexpr (M::caps.is_static && M::caps.symmetric) def_landmarks<M>(router);
+  });
 }

@@ -1,5 +1,7 @@
 """Type stubs for seaway's private C++ module (see cpp/register_*.cpp)."""
 
+from typing import ClassVar
+
 import numpy as np
 import numpy.typing as npt
 
@@ -27,15 +29,33 @@ class CancelToken:
 class SearchCancelled(KeyboardInterrupt): ...
 
 class MaxCost:
+    #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
+    #: time_dependent, smoothable.
+    capabilities: ClassVar[dict[str, bool]]
     def __init__(self, cost: npt.NDArray[np.float32] | npt.NDArray[np.float64]) -> None: ...
 
 class MeanCost:
+    #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
+    #: time_dependent, smoothable.
+    capabilities: ClassVar[dict[str, bool]]
     def __init__(self, cost: npt.NDArray[np.float32] | npt.NDArray[np.float64]) -> None: ...
 
 class IntegralCost:
+    #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
+    #: time_dependent, smoothable.
+    capabilities: ClassVar[dict[str, bool]]
+    def __init__(self, cost: npt.NDArray[np.float32] | npt.NDArray[np.float64]) -> None: ...
+
+class LengthCost:
+    #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
+    #: time_dependent, smoothable.
+    capabilities: ClassVar[dict[str, bool]]
     def __init__(self, cost: npt.NDArray[np.float32] | npt.NDArray[np.float64]) -> None: ...
 
 class EnteredPixelCost:
+    #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
+    #: time_dependent, smoothable.
+    capabilities: ClassVar[dict[str, bool]]
     def __init__(self, cost: npt.NDArray[np.float32] | npt.NDArray[np.float64]) -> None: ...
 
 class SpeedLoss:
@@ -65,25 +85,40 @@ class Forecast:
                  wave_period: npt.NDArray[np.float32] | None = ...) -> None: ...
 
 class TravelTimeModel:
+    #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
+    #: time_dependent, smoothable.
+    capabilities: ClassVar[dict[str, bool]]
     def __init__(self, forecast: Forecast, vessel: Vessel, best_speed_kn: float) -> None: ...
 
 class FuelModel:
+    #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
+    #: time_dependent, smoothable.
+    capabilities: ClassVar[dict[str, bool]]
     def __init__(self, forecast: Forecast, vessel: Vessel, settings_kn: list[float],
                  rate_t_per_h: list[float], lambda_t_per_h: float, best_extra_kn: float) -> None: ...
 
 class WaveDangerModel:
+    #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
+    #: time_dependent, smoothable.
+    capabilities: ClassVar[dict[str, bool]]
     def __init__(self, forecast: Forecast, ship_length_m: float, speed_kn: float) -> None: ...
 
 class ZonedTravelTimeModel:
+    #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
+    #: time_dependent, smoothable.
+    capabilities: ClassVar[dict[str, bool]]
     def __init__(self, model: TravelTimeModel, mask: npt.NDArray[np.uint8],
                  near: npt.NDArray[np.uint8], closes_h: list[float],
                  opens_h: list[float]) -> None: ...
 
 class IceSeasonModel:
+    #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
+    #: time_dependent, smoothable.
+    capabilities: ClassVar[dict[str, bool]]
     def __init__(self, hours_per_km: npt.NDArray[np.float32], valid_from_h: list[float],
                  min_hours_per_km: float) -> None: ...
 
-Model = (MaxCost | MeanCost | IntegralCost | EnteredPixelCost | TravelTimeModel | FuelModel
+Model = (MaxCost | MeanCost | IntegralCost | LengthCost | EnteredPixelCost | TravelTimeModel | FuelModel
          | WaveDangerModel | IceSeasonModel | ZonedTravelTimeModel)
 
 class Router:
@@ -117,8 +152,8 @@ class Landmarks:
     def largest(self) -> float: ...
 
 class LegPricer:
-    def __init__(self, values: npt.NDArray[np.float32] | npt.NDArray[np.float64],
-                 land: npt.NDArray[np.uint8] | None, grid: Grid, rule: str, half: int) -> None: ...
+    def __init__(self, model: MaxCost | MeanCost | IntegralCost | LengthCost, land: npt.NDArray[np.uint8] | None,
+                 grid: Grid, half: int) -> None: ...
     def leg(self, r0: float, c0: float, r1: float, c1: float) -> tuple[float, float]: ...
     def smooth(self, vertices: npt.ArrayLike, step_cost: npt.ArrayLike, candidates: npt.ArrayLike,
                refine: bool, max_sweeps: int) -> tuple[npt.NDArray[np.float64],
@@ -129,7 +164,8 @@ def make_router(cost: npt.NDArray[np.float32] | npt.NDArray[np.float64],
                 directions: str, land_rule: str) -> Router: ...
 def max_pair_costs(a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
 def mean_pair_costs(a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
-def route_turns(router: Router, model: MaxCost | MeanCost | IntegralCost, start: int, target: int,
+def length_pair_costs(a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+def route_turns(router: Router, model: MaxCost | MeanCost | IntegralCost | LengthCost, start: int, target: int,
                 heuristic_weight: float, angle_deg: list[float], cost: list[float],
                 incoming: int = -1, cancel: CancelToken | None = None) -> tuple: ...
 def offset_index(router: Router, di: int, dj: int) -> int: ...

@@ -23,8 +23,10 @@ EDGE_COSTS = {
     "max": _core.MaxCost,  # Grinyak et al. 2022: max(u_i, u_j) x length
     "mean": _core.MeanCost,  # Grinyak et al. 2018: (u_i + u_j) / 2 x length
     "integral": _core.IntegralCost,  # the exact line integral along the step
+    "length": _core.LengthCost,  # the step's length: the shortest route through passable pixels
 }
-_PAIR_COSTS = {"max": _core.max_pair_costs, "mean": _core.mean_pair_costs}
+_PAIR_COSTS = {"max": _core.max_pair_costs, "mean": _core.mean_pair_costs,
+               "length": _core.length_pair_costs}
 
 
 class CostModel:
@@ -96,7 +98,8 @@ class EdgeCost(CostModel):
         self.name = rule
 
     def unit(self, geographic):
-        return "cost x km" if geographic else "cost x grid unit"
+        length = "km" if geographic else "grid unit"
+        return length if self.name == "length" else f"cost x {length}"  # length: r alone
 
     def engine(self, prepared):
         return EDGE_COSTS[self.name](prepared.chart.values)
@@ -108,7 +111,7 @@ class EdgeCost(CostModel):
                 "larger neighbourhood, check the land mask, or choose another end point")
 
     def segments(self, chart, neighbourhood):
-        return Segments(chart, self.name, neighbourhood)
+        return Segments(chart, EDGE_COSTS[self.name](chart.values), neighbourhood)
 
     def pair_costs(self, a, b, length) -> np.ndarray:
         """Cost of steps of `length` between pixels of costs a and b, from the engine's rule
