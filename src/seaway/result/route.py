@@ -23,6 +23,7 @@ from .environment import (  # noqa: F401 - extreme_name: part of this API
     summarise,
     values_at,
 )
+from .stats import RouteStats
 from .table import route_table
 
 
@@ -54,7 +55,8 @@ class Route:
     neighbourhood: int = 5
     #: What the route minimises (seaway.models); its unit is .unit.
     model: CostModel = field(default_factory=EdgeCost)
-    stats: dict = field(default_factory=dict, repr=False)
+    #: The search's figures and what the model, constraints and smoothing add (seaway.result.stats).
+    stats: RouteStats = field(default_factory=RouteStats, repr=False)
     #: (n, 2) fractional (row, col) of the vertices when they are not pixel centres (smoothed).
     points: np.ndarray | None = field(default=None, repr=False)
     #: (n, 2) lat/lon of the vertices when the chart is not a lat/lon grid (corridor routes).
