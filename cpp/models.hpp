@@ -13,6 +13,7 @@
 
 #include <atomic>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -35,8 +36,22 @@ inline const SearchControl* flag_of(const CancelToken* t) { return t; }
 // The prepared chart's Python class, _core.Router (one chart serves every model).
 using ChartClass = pybind11::class_<PreparedChart, std::unique_ptr<PreparedChart>>;
 
-// Named per-step values a model reports beside the route (e.g. fuel's engine setting).
-using StepValues = std::vector<std::pair<std::string, std::vector<double>>>;
+// What a model reports per step beside the route, one typed slot each (unset when the model
+// reports none): bound as _core.StepValues, read by the Python model's finish().
+struct StepValues {
+  std::optional<std::vector<double>> setting;   // FuelModel: the engine setting's index
+  std::optional<std::vector<double>> hours;     // FuelModel: hours of the step
+  std::optional<std::vector<double>> fuel_t;    // FuelModel: tonnes burnt on the step
+  std::optional<std::vector<double>> depart_h;  // IceSeasonModel: when the step leaves its first pixel
+  std::optional<std::vector<double>> wait_h;    // Zoned: hours waited for a zone to open
+};
+
+// A query's answer, bound as _core.QueryResult: the route with the search's figures, and the
+// model's values per step.
+struct QueryResult {
+  RouteResult route;
+  StepValues steps;
+};
 
 struct NoStepValues {
   template <class Fn>
@@ -126,7 +141,11 @@ struct FuelModel {
       hours.push_back(c.hours);
       fuel.push_back(c.fuel_t);
     }
-    return {{"setting", setting}, {"hours", hours}, {"fuel_t", fuel}};
+    StepValues out_values;
+    out_values.setting = std::move(setting);
+    out_values.hours = std::move(hours);
+    out_values.fuel_t = std::move(fuel);
+    return out_values;
   }
 };
 
@@ -169,7 +188,9 @@ struct IceSeasonModel {
       const int o = out.offsets[i];
       depart.push_back(m.step(a, o, g.lengths().row(row)[o], out.cumulative[i]).depart_h);
     }
-    return {{"depart_h", depart}};
+    StepValues values;
+    values.depart_h = std::move(depart);
+    return values;
   }
 };
 

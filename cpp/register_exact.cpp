@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <type_traits>
+#include <utility>
 
 #include "results.hpp"
 #include "seaway/bidirectional.hpp"
@@ -30,7 +31,7 @@ void def_bidirectional(ChartClass& router) {
                    return 0;
                  });
                }
-               return route_tuple(out, {});
+               return answer(std::move(out));
              },
              py::arg("model"), py::arg("start"), py::arg("target"), py::arg("astar"),
              py::arg("cancel") = nullptr,
@@ -62,7 +63,7 @@ void def_landmarks(ChartClass& router) {
                    return 0;
                  });
                }
-               return route_tuple(out, {});
+               return answer(std::move(out));
              },
              py::arg("model"), py::arg("landmarks"), py::arg("start"), py::arg("target"),
              py::arg("bidirectional"), py::arg("cancel") = nullptr,

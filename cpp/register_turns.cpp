@@ -8,6 +8,7 @@
 
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "results.hpp"
@@ -36,7 +37,7 @@ void def_route_turns(py::module_& m) {
             return 0;
           });
         }
-        return route_tuple(out, {});
+        return answer(std::move(out));
       },
       py::arg("router"), py::arg("model"), py::arg("start"), py::arg("target"),
       py::arg("heuristic_weight"), py::arg("angle_deg"), py::arg("cost"), py::arg("incoming") = -1,

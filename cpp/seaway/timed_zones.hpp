@@ -125,7 +125,7 @@ struct Zoned {
       const std::uint8_t bits = m.bits(v, w, o);
       wait.push_back(bits && h < inf ? m.departure(v, w, o, r, t, h, bits, no_cell) - t : 0.0);
     }
-    values.emplace_back("wait_h", std::move(wait));
+    values.wait_h = std::move(wait);
     return values;
   }
 };

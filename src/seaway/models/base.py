@@ -16,6 +16,7 @@ import numpy as np
 
 from .. import _core
 from ..chart.legs import Segments
+from .results import StepValues
 
 #: The static edge costs over a raster of cost per unit length: name -> engine class. The
 #: public list: the API, the CLI choices and the error texts come from it.
@@ -67,7 +68,7 @@ class CostModel:
         """Refuse a start or end pixel (row, col; end None for a cost field) this model can
         never use, naming why and the fix; the chart has checked land already."""
 
-    def finish(self, route, per_step: dict):
+    def finish(self, route, per_step: StepValues):
         """The Route with what this model adds: its typed result built from the per-step values
         (seaway.models.results: a Voyage or FuelUse, put in route.stats with
         dataclasses.replace) and its speed."""
