@@ -8,8 +8,6 @@ from ..base.units import KM_PER_NM
 from ..engine.api import route
 from ..errors import NoRouteError
 from ..models import EDGE_COSTS
-from ..output import export
-from ..output.plot import plot_route
 from .chartfile import fast_ice, open_chart
 from .common import (
     CLI_METHODS,
@@ -24,11 +22,13 @@ from .common import (
 from .constraints import add_constraint_options, constraint_options
 from .depth import for_route, why_no_route
 from .ends import check_ends
+from .outputs import check_outputs, write_outputs
 from .projected import end_pixel
 
 
 def run_route(args) -> int:
     say = Progress("route", args.quiet)
+    planned = check_outputs(args.out, args.plot)  # before any work: nothing found is then lost
     say(f"reading {args.chart}")
     data = open_chart(args.chart, variable=args.variable, vessel=args.vessel,
                       land_variable=args.land_variable, grid=args.grid,
@@ -88,12 +88,8 @@ def run_route(args) -> int:
         y, x = r.coords[:, 0], r.coords[:, 1]
         r = dataclasses.replace(r, latlon=data.projection.to_latlon(y, x))
     print(r)
-    for path in args.out or []:
-        fmt = export.write(r, path)
-        say(f"wrote {path} ({fmt})")
-    if args.plot:
-        plot_route(planar if data.projection is not None else r, args.plot, title=_title(args, data, r))
-        say(f"wrote {args.plot} (PNG)")
+    write_outputs(planned, r, planar=planar if data.projection is not None else None,
+                  title=_title(args, data, r), say=say)
     return 0
 
 

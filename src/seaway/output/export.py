@@ -19,7 +19,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 
 from ..base import sphere as geo
-from ..base.files import replace_atomically, write_atomically  # noqa: F401 - part of this API
+from ..base.files import replace_atomically, write_all, write_atomically  # noqa: F401 - part of this API
 from ..result.environment import CATEGORICAL, STAGES, Category, extreme_name
 from .webmap import html_text
 
@@ -155,22 +155,33 @@ def _env_cells(value):
     return ["" if not np.isfinite(v) else f"{v:.4g}" for v in value]
 
 
-def write(route, path, fmt=None, speed_kn=None) -> str:
-    """Write `route` to `path` in the format given or named by its extension; returns the format."""
-    fmt = fmt or FORMATS.get(os.path.splitext(os.fspath(path))[1].lower())
+def render(route, fmt: str, speed_kn=None, **map_options) -> str:
+    """The text of `route` in format `fmt` (one of FORMATS' values); map_options go to the HTML
+    map (seaway.output.webmap.explore)."""
     makers = {"geojson": lambda: json.dumps(geojson(route, speed_kn=speed_kn), indent=1),
               "gpx": lambda: gpx(route, speed_kn), "rtz": lambda: rtz(route, speed_kn),
               "csv": lambda: csv_text(route, speed_kn),
-              "html": lambda: _html(route, speed_kn)}
+              "html": lambda: html_text(route, speed_kn=speed_kn, **map_options)}
     if fmt not in makers:
+        raise ValueError(f"fmt must be one of {sorted(makers)}, got {fmt!r}")
+    return makers[fmt]()
+
+
+def format_of(path) -> str:
+    """The format an output path's extension names; ValueError naming the extensions otherwise."""
+    fmt = FORMATS.get(os.path.splitext(os.fspath(path))[1].lower())
+    if fmt is None:
         raise ValueError(f"cannot tell the format of {os.fspath(path)!r}: use one of the extensions "
-                         f"{', '.join(sorted(FORMATS))} or fmt= one of {sorted(makers)}")
-    write_atomically(path, makers[fmt]())
+                         f"{', '.join(sorted(FORMATS))}")
     return fmt
 
 
-def _html(route, speed_kn):
-    return html_text(route, speed_kn=speed_kn)
+def write(route, path, fmt=None, speed_kn=None) -> str:
+    """Write `route` to `path` in the format given or named by its extension, atomically;
+    returns the format. Several files all or nothing: seaway.base.files.write_all over render()."""
+    fmt = fmt or format_of(path)
+    write_all([(path, render(route, fmt, speed_kn))])
+    return fmt
 
 
 def _opt(v, digits):

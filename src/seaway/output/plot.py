@@ -11,12 +11,11 @@ drawn on plain axes. A raster without an ice code (a cost, a cost field) keeps i
 
 from __future__ import annotations
 
-import os
-import textwrap
+import io
 
 import numpy as np
 
-from ..base.files import replace_atomically
+from ..base.files import write_all
 from ..base.units import KM_PER_NM
 from ..chart.raster import as_chart
 from ..ice.colours import classes
@@ -26,6 +25,7 @@ from .style import (
     ROUTE_COLOUR,
     axes_coords,
     edges,
+    fit_title,
     ice_layer,
     route_xy,
 )
@@ -54,13 +54,6 @@ def _cartopy():
 
 def _stride(shape) -> int:
     return max(1, int(np.ceil(max(shape) / MAX_DRAWN)))
-
-
-def _save(fig, path, dpi):
-    def write(fd, tmp):
-        os.close(fd)
-        fig.savefig(tmp, dpi=dpi, format="png")
-    replace_atomically(path, write, ".png")
 
 
 class _Map:
@@ -196,37 +189,24 @@ class _Map:
         handles, labels = list(extra) + handles, [h.get_label() for h in extra] + labels
         self.fig.legend(handles, labels, loc="outside right center", fontsize=8, frameon=False)
 
-    def save(self, path, dpi):
-        _save(self.fig, path, dpi)
-        self.plt.close(self.fig)
+    def png(self, dpi) -> bytes:
+        """The figure as PNG bytes (the figure is closed)."""
+        buffer = io.BytesIO()
+        try:
+            self.fig.savefig(buffer, dpi=dpi, format="png")
+        finally:
+            self.plt.close(self.fig)
+        return buffer.getvalue()
 
 
-def _shorten_path(word: str, room: int) -> str:
-    """A file path longer than `room` characters as '.../' and its last parts that fit."""
-    parts = word.split("/")
-    if len(word) <= room or len(parts) < 3:
-        return word
-    tail = parts[-1]
-    for part in reversed(parts[1:-1]):
-        if len(tail) + len(part) + 5 > room:
-            break
-        tail = part + "/" + tail
-    return ".../" + tail
+def plot_route(route, path, **options) -> None:
+    """Write a PNG map of the route over its chart (route_png(route, **options)), atomically."""
+    write_all([(path, route_png(route, **options))])
 
 
-def fit_title(text: str, width: int, lines: int = 3) -> str:
-    """`text` on at most `lines` lines of `width` characters: long paths shortened to their
-    last parts, then wrapped at spaces; what still does not fit ends in '...' (never cut at the
-    figure's edge)."""
-    words = [_shorten_path(w, width // 2) for w in text.split(" ")]
-    wrapped = textwrap.wrap(" ".join(words), width, break_long_words=True, break_on_hyphens=False,
-                            max_lines=lines, placeholder=" ...")
-    return "\n".join(wrapped)
-
-
-def plot_route(route, path, *, ice=None, code=None, values=None, label=None, title=None,
-               size=None, dpi=100, cmap="Blues"):
-    """Write a PNG map of the route over its chart.
+def route_png(route, *, ice=None, code=None, values=None, label=None, title=None, size=None,
+              dpi=100, cmap="Blues") -> bytes:
+    """A PNG map of the route over its chart, as bytes.
 
     ice: a raster on the chart's grid to draw in the WMO colour code (SIGRID-3 stage codes or
         concentration in tenths, percent or a fraction); default: the route's environment
@@ -270,7 +250,7 @@ def plot_route(route, path, *, ice=None, code=None, values=None, label=None, tit
     units = "km" if route.geographic else "units"
     nm = f" ({route.length / KM_PER_NM:.0f} nm)" if route.geographic else ""
     m.title(title or f"{route.name}: {route.length:.1f} {units}{nm}, cost {route.cost:.5g}; {what}")
-    m.save(path, dpi)
+    return m.png(dpi)
 
 
 def plot_cost_field(field, path, *, route=None, lat=None, lon=None, title=None, size=None,
@@ -292,4 +272,4 @@ def plot_cost_field(field, path, *, route=None, lat=None, lon=None, title=None, 
         m.route(route, waypoints=False)
         m.legend()
     m.title(title or "accumulated cost")
-    m.save(path, dpi)
+    write_all([(path, m.png(dpi))])

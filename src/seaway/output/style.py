@@ -3,6 +3,8 @@ the ice layer to colour by."""
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
 
 from ..base.sphere import unwrap_lon
@@ -56,3 +58,26 @@ def ice_layer(route, ice, code):
         raise ValueError(f"ice has shape {ice.shape} but the chart has {route.chart.shape}; give "
                          "the ice raster on the chart's grid")
     return ice, code or guess_code(ice)
+
+
+def _shorten_path(word: str, room: int) -> str:
+    """A file path longer than `room` characters as '.../' and its last parts that fit."""
+    parts = word.split("/")
+    if len(word) <= room or len(parts) < 3:
+        return word
+    tail = parts[-1]
+    for part in reversed(parts[1:-1]):
+        if len(tail) + len(part) + 5 > room:
+            break
+        tail = part + "/" + tail
+    return ".../" + tail
+
+
+def fit_title(text: str, width: int, lines: int = 3) -> str:
+    """`text` on at most `lines` lines of `width` characters: long paths shortened to their
+    last parts, then wrapped at spaces; what still does not fit ends in '...' (never cut at the
+    figure's edge)."""
+    words = [_shorten_path(w, width // 2) for w in text.split(" ")]
+    wrapped = textwrap.wrap(" ".join(words), width, break_long_words=True, break_on_hyphens=False,
+                            max_lines=lines, placeholder=" ...")
+    return "\n".join(wrapped)
