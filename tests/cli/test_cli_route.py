@@ -72,6 +72,9 @@ def test_route_netcdf_all_outputs(chart_nc, tmp_path):
     gpx = ET.parse(outs[1]).getroot()
     assert len(gpx.findall(".//{http://www.topografix.com/GPX/1/1}rtept")) == len(wps)
     rows = outs[3].read_text().splitlines()
+    head, rows = [x for x in rows if x.startswith("#")], [x for x in rows if not x.startswith("#")]
+    assert head[1:3] == ["# start 73.00000,61.00000 (requested 73,61)",
+                         "# end 73.00000,75.00000 (requested 73,75)"]  # the ends used and asked for
     assert rows[0].startswith("waypoint,lat,lon,leg,course_deg") and len(rows) == len(wps) + 1
     assert "sea_ice_concentration_max" in rows[0]
     assert (tmp_path / "r.png").stat().st_size > 10_000
@@ -116,6 +119,10 @@ def test_route_errors(chart_nc, args, code, message):
 def test_route_snap_and_missing_file(chart_nc, tmp_path):
     path, _ = chart_nc
     done = run("route", str(path), "--from", "73,61", "--to", "74,67", "--snap")
+    assert done.returncode == 1  # 36.8 km is farther than --snap-km's 20 km
+    assert ("the nearest point the ship may use is 74.0000,65.8000, 36.8 km away, farther than "
+            "--snap-km 20: give a point in water the ship may use, or --snap-km 37") in done.stderr
+    done = run("route", str(path), "--from", "73,61", "--to", "74,67", "--snap", "--snap-km", "40")
     assert done.returncode == 0, done.stderr
     assert "end 74,67 is on an impassable pixel (land): moved 36.8 km to 74.0000,65.8000" in done.stderr
     done = run("route", str(tmp_path / "none.nc"), "--from", "73,61", "--to", "74,67")

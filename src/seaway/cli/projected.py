@@ -106,6 +106,19 @@ def end_pixel(da_km, proj: Projection, p, name: str) -> tuple[int, int]:
     return min(int(round(r)), rows - 1), min(int(round(c)), cols - 1)
 
 
+def pixel_latlon(da_km, proj: Projection | None):
+    """For a projected chart: a function (row, col) pixel -> (lat, lon) of its centre, as ends
+    are shown to the user; None for a lat/lon chart."""
+    if proj is None:
+        return None
+    ys, xs = np.asarray(da_km.y.values), np.asarray(da_km.x.values)
+
+    def to_user(p):
+        lat, lon = proj.to_latlon([ys[int(p[0])]], [xs[int(p[1])]])[0]
+        return float(lat), float(lon)
+    return to_user
+
+
 def project_chart(out, ds, source) -> None:
     """A chart (seaway.cli.chartfile.ChartData `out`) on a projected grid with a known CRS: its
     rasters get coordinates in km, the projection is kept, and the notes say so. Nothing
@@ -141,4 +154,4 @@ def _check_latlon(out, source, proj) -> None:
                          f"{err:.2f} deg; the route and the outputs use the projection")
 
 
-__all__ = ["Projection", "find_projection", "in_km", "end_pixel", "project_chart"]
+__all__ = ["Projection", "find_projection", "in_km", "end_pixel", "project_chart", "pixel_latlon"]

@@ -6,6 +6,7 @@ import dataclasses
 
 from ..base.units import KM_PER_NM
 from ..engine.api import route
+from ..engine.snap import DEFAULT_SNAP_KM
 from ..errors import NoRouteError
 from ..models import EDGE_COSTS
 from .chartfile import fast_ice, open_chart
@@ -16,14 +17,16 @@ from .common import (
     grid,
     neighbourhood,
     point,
+    positive_km,
     searching,
     tell,
 )
 from .constraints import add_constraint_options, constraint_options
-from .depth import for_route, why_no_route
+from .depth import for_route
 from .ends import check_ends
+from .noroute import why_no_route
 from .outputs import check_outputs, write_outputs
-from .projected import end_pixel
+from .projected import end_pixel, pixel_latlon
 
 
 def run_route(args) -> int:
@@ -48,9 +51,11 @@ def run_route(args) -> int:
     cost, depth, shallow = for_route(args.depth, cost, draft=args.draft, ukc=args.ukc,
                                      variable=args.depth_variable, positive=args.depth_positive,
                                      say=say, crs=getattr(data.layers, "attrs", {}).get("crs"))
-    start, end = check_ends(cost, data.land, data.layers, (start, end), vessel=args.vessel,
-                            snap=args.snap, say=tell, neighbourhood=args.neighbourhood,
-                            reasons=shallow, chart_cost=chart_cost)
+    (start, end), moved = check_ends(cost, data.land, data.layers, (start, end), vessel=args.vessel,
+                                     snap=args.snap, snap_km=args.snap_km, say=tell,
+                                     neighbourhood=args.neighbourhood, reasons=shallow,
+                                     chart_cost=chart_cost, to_user=pixel_latlon(cost, data.projection),
+                                     asked=(args.start, args.end))
     rows, cols = cost.shape
     say(f"routing on {rows} x {cols} pixels ({data.description}; {args.method}, "
         f"{args.neighbourhood}x{args.neighbourhood} stencil, edge cost {args.edge_cost})")
@@ -64,11 +69,10 @@ def run_route(args) -> int:
         with searching(say, rows * cols * states):
             r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
                       edge_cost=args.edge_cost, method=args.method, **constraints)
-    except NoRouteError as exc:
-        if shallow is None:
-            raise
-        why = why_no_route(chart_cost, data.land, depth, start, end, args.draft, args.ukc)
-        raise NoRouteError(f"{exc}; {why}") from None
+    except NoRouteError:
+        used = any(v not in (None, []) for v in constraints.values())
+        raise why_no_route(data, cost, (start, end), args, depth=depth, shallow=shallow,
+                           constrained=used) from None
     say(f"found: cost {r.cost:.6g}, {len(r.pixels)} pixels, {r.stats['settled']} settled")
     if constraints["via"] or constraints["turn_penalty"] is not None:
         say("not smoothed: smoothing would cut the via-points or ignore the turn penalty")
@@ -77,8 +81,8 @@ def run_route(args) -> int:
         r = r.smoothed()
         say(f"smoothed: cost {r.stats['cost_before']:.6g} -> {r.cost:.6g}, course changes "
             f"{r.stats['course_changes_before']} -> {r.stats['course_changes_after']}")
-    r.name = args.name
-    r.speed_kn = args.speed
+    r = dataclasses.replace(r, name=args.name, speed_kn=args.speed, notes=r.notes + tuple(moved),
+                            requested=(args.start, args.end))  # every output gives both ends
     if data.environment:
         r = r.with_environment(data.environment)
     if depth is not None:  # --depth, over a chart's own depth variable
@@ -162,8 +166,13 @@ def add_route_command(commands) -> None:
                     help="keep the raw pixel route (default: any-angle smoothing, never costlier)")
     rp.add_argument("--snap", action="store_true",
                     help="move a start or end on land, in ice the class may not enter or in too "
-                         "shallow water to the nearest pixel the ship can reach from the other end "
-                         "(default: stop with an error naming why, that point and its distance)")
+                         "shallow water to the nearest point the ship may use in water that joins "
+                         "both ends, at most --snap-km away; the ends asked for and used are in "
+                         "every output (default: stop with an error naming why, that point and "
+                         "its distance)")
+    rp.add_argument("--snap-km", type=positive_km, default=DEFAULT_SNAP_KM, metavar="KM",
+                    help=f"the farthest --snap moves an end (default {DEFAULT_SNAP_KM:g} km; "
+                         "farther: stop, naming the distance)")
     add_constraint_options(rp, point)
     rp.add_argument("--speed", type=float, metavar="KN",
                     help="speed in knots: adds each leg's time and the voyage time")

@@ -23,6 +23,9 @@ from ..base.files import replace_atomically, write_all, write_atomically  # noqa
 from ..result.environment import CATEGORICAL, STAGES, Category, extreme_name
 from .webmap import html_text
 
+#: Summary entries that are points, given in GeoJSON properties as [lat, lon] ([y, x] or
+#: [row, col] on planar charts): the ends used, the ends requested, the shallowest point.
+POINTS = ("start", "end", "requested_start", "requested_end", "least_depth_at")
 GPX_NS = "http://www.topografix.com/GPX/1/1"
 RTZ_NS = "http://www.cirm.org/RTZ/1/0"
 FORMATS = {".geojson": "geojson", ".json": "geojson", ".gpx": "gpx", ".csv": "csv", ".rtz": "rtz",
@@ -63,7 +66,7 @@ def geojson(route, antimeridian: str = "split", speed_kn=None) -> dict:
     for k, v in route.summary(speed_kn).items():
         if isinstance(v, str) or (isinstance(v, (int, float)) and np.isfinite(v)):
             props[k] = v
-        elif k == "least_depth_at" and v is not None:  # (lat, lon) of the shallowest pixel
+        elif k in POINTS and v is not None:  # [lat, lon] (planar charts: [y, x] / [row, col])
             props[k] = [float(x) for x in v]
         elif k == "assumptions":  # what the chart's ice assumes (seaway.ice.forms)
             props[k] = list(v)
@@ -86,7 +89,7 @@ def gpx(route, speed_kn=None) -> str:
     root = ET.Element(f"{{{GPX_NS}}}gpx", {"version": "1.1", "creator": "seaway"})
     rte = ET.SubElement(root, f"{{{GPX_NS}}}rte")
     ET.SubElement(rte, f"{{{GPX_NS}}}name").text = route.name
-    ET.SubElement(rte, f"{{{GPX_NS}}}desc").text = _describe(route, speed_kn)
+    ET.SubElement(rte, f"{{{GPX_NS}}}desc").text = describe(route, speed_kn)
     for k, (lat, lon) in enumerate(route.waypoints, start=1):
         pt = ET.SubElement(rte, f"{{{GPX_NS}}}rtept", {"lat": f"{lat:.7f}", "lon": f"{_wrap180(lon):.7f}"})
         ET.SubElement(pt, f"{{{GPX_NS}}}name").text = f"WP{k:03d}"
@@ -100,9 +103,12 @@ def rtz(route, speed_kn=None) -> str:
     ET.register_namespace("", RTZ_NS)
     speed = route.speed_kn if speed_kn is None else speed_kn
     root = ET.Element(f"{{{RTZ_NS}}}route", {"version": "1.0"})
-    ET.SubElement(root, f"{{{RTZ_NS}}}routeInfo", {"routeName": route.name,
-                                                    "routeAuthor": "seaway",
-                                                    "routeStatus": "computed, not validated"})
+    info = ET.SubElement(root, f"{{{RTZ_NS}}}routeInfo", {"routeName": route.name,
+                                                           "routeAuthor": "seaway",
+                                                           "routeStatus": "computed, not validated"})
+    ext = ET.SubElement(ET.SubElement(info, f"{{{RTZ_NS}}}extensions"), f"{{{RTZ_NS}}}extension",
+                        {"manufacturer": "seaway", "name": "description", "version": "1.0"})
+    ext.text = describe(route, speed_kn)
     wps = ET.SubElement(root, f"{{{RTZ_NS}}}waypoints")
     default = ET.SubElement(wps, f"{{{RTZ_NS}}}defaultWaypoint", {"radius": "0.1"})
     ET.SubElement(default, f"{{{RTZ_NS}}}leg", {"geometryType": "Orthodrome"})
@@ -127,6 +133,7 @@ def csv_text(route, speed_kn=None) -> str:
     legs = route.legs(speed_kn)
     env = list(route.environment)
     out = io.StringIO()
+    out.writelines(f"# {line}\n" for line in header_lines(route, speed_kn))
     w = csv.writer(out, lineterminator="\n")
     w.writerow(CSV_FIELDS + [h for n in env for h in _env_header(n)])
     first = route.waypoints[0]
@@ -194,10 +201,31 @@ def _need_latlon(route, what):
                          "(give the chart lat/lon coordinates, or export GeoJSON or CSV)")
 
 
-def _describe(route, speed_kn):
+def header_lines(route, speed_kn=None) -> list:
+    """The lines that head a route's file (CSV comments, GPX and RTZ descriptions): its length,
+    cost and time; the ends used and those requested; what it assumes."""
     s = route.summary(speed_kn)
-    text = f"{s['length_nm']:.1f} nm, cost {route.cost:.6g}, {s['legs']} legs"
-    return text + (f", {s['time_h']:.1f} h at {s['speed_kn']:g} kn" if "time_h" in s else "")
+    geo_ = route.geographic
+    size = f"{s['length_nm']:.1f} nm" if geo_ else f"{s['length']:.4g} {s['length_units']}"
+    head = f"{route.name}: {size}, cost {route.cost:.6g} {route.unit}, {s['legs']} legs"
+    if "time_h" in s:
+        head += f", {s['time_h']:.1f} h at {s['speed_kn']:g} kn"
+    lines = [head]
+    for end in ("start", "end"):
+        line = f"{end} {_point(s[end])}"
+        if f"requested_{end}" in s:
+            line += f" (requested {_point(s[f'requested_{end}'], None)})"
+        lines.append(line)
+    return lines + [f"assumed: {a}" for a in s.get("assumptions", ())]
+
+
+def describe(route, speed_kn=None) -> str:
+    """One paragraph for a GPX or RTZ description: header_lines joined."""
+    return "; ".join(header_lines(route, speed_kn))
+
+
+def _point(p, digits=5) -> str:
+    return ",".join(f"{v:g}" if digits is None else f"{v:.{digits}f}" for v in p)
 
 
 def _xml(root) -> str:

@@ -166,6 +166,13 @@ def _popup(route, number, point, leg, speed_kn):
     else:
         where = f"y {point[0]:.6g}, x {point[1]:.6g}"
     lines = [f"<b>waypoint {number}</b>", where]
+    last = number == len(route.waypoint_index)
+    if route.requested is not None and (number == 1 or last):  # an end: the one asked for
+        asked = route.requested[1 if last else 0]
+        lines[0] = f"<b>waypoint {number}: {'end' if last else 'start'}</b>"
+        lines.append(f"requested {_dms(asked[0], 'N', 'S', 2)} {_dms((asked[1] + 180) % 360 - 180, 'E', 'W', 3)}"
+                     if route.geographic else f"requested {asked[0]:g}, {asked[1]:g}")
+        lines += [html.escape(n) for n in route.notes if n.startswith("end " if last else "start ")]
     if leg is None:
         lines.append(f"end: {route.length:.1f} {'km' if route.geographic else 'units'}, "
                      f"cost {route.cost:.6g} {html.escape(route.unit)}")

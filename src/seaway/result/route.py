@@ -14,15 +14,8 @@ from ..base.validate import number
 from ..chart.legs import index_coords, leg_path
 from ..chart.raster import Chart
 from ..models.base import CostModel, EdgeCost
-from .environment import (  # noqa: F401 - extreme_name: part of this API
-    CATEGORICAL,
-    LEAST,
-    along,
-    extreme_name,
-    least_depth,
-    summarise,
-    values_at,
-)
+from .environment import along, extreme_name  # noqa: F401 - extreme_name: part of this API
+from .summary import route_summary
 from .table import route_table
 
 
@@ -65,15 +58,20 @@ class Route:
     #: name -> (rows, cols) array on the chart's grid: ice or weather reported along each leg.
     environment: dict = field(default_factory=dict, repr=False)
     name: str = "seaway route"
+    #: (start, end) as they were asked for, when recorded (seaway.engine.snap.SnappedEnds.record;
+    #: `seaway route` always records them): every output gives them beside the ends used.
+    requested: tuple | None = field(default=None, repr=False)
+    #: Sentences on how the route was set up (an end moved to usable water): in .assumptions.
+    notes: tuple = field(default=(), repr=False)
 
     @property
     def assumptions(self) -> tuple:
-        """What was assumed to build the chart the route was found on (e.g. the stage of fast
-        ice of unknown stage, seaway.ice.forms): the ``assumptions`` attribute of the cost
-        DataArray (chart_impact sets it); empty when nothing was assumed."""
+        """What the route rests on: what was assumed to build its chart (e.g. the stage of fast
+        ice of unknown stage, seaway.ice.forms: the ``assumptions`` attribute of the cost
+        DataArray, which chart_impact sets), then .notes (a moved end); empty when nothing."""
         attrs = getattr(self.chart.template, "attrs", None) or {}
         said = attrs.get("assumptions", ())
-        return (said,) if isinstance(said, str) else tuple(said)
+        return ((said,) if isinstance(said, str) else tuple(said)) + tuple(self.notes)
 
     @property
     def vertices(self) -> np.ndarray:
@@ -216,32 +214,9 @@ class Route:
         return dataclasses.replace(self, environment=env)
 
     def summary(self, speed_kn: float | None = None) -> dict:
-        legs = self.legs(speed_kn)
-        speed = self.speed_kn if speed_kn is None else speed_kn
-        out = {"name": self.name, "start": tuple(map(float, self.coords[0])),
-               "end": tuple(map(float, self.coords[-1])), "cost": self.cost,
-               "length": self.length, "length_units": "km" if self.geographic else "grid units",
-               "legs": len(legs), "course_changes": self.course_changes,
-               "edge_cost": self.edge_cost, "cost_unit": self.unit,
-               "neighbourhood": self.neighbourhood}
-        if self.geographic:
-            length_nm = self.length / geo.KM_PER_NM
-            out["length_nm"] = length_nm
-            if speed:
-                out.update(speed_kn=float(speed), time_h=length_nm / speed)
-        for name, arr in self.environment.items():
-            if name in CATEGORICAL:  # the governing / most frequent category of the whole route
-                cat = summarise(name, values_at(arr, self.sample_pixels()))
-                out[f"{cat.rule.replace(' ', '_')}_{name}"] = str(cat)
-            elif name not in LEAST:
-                tops = [leg.environment[name].max for leg in legs]
-                tops = [v for v in tops if np.isfinite(v)]
-                out[f"max_{name}"] = float(max(tops)) if tops else None
-        if self.assumptions:
-            out["assumptions"] = list(self.assumptions)
-        if "depth" in self.environment:  # for depth the least matters (seaway.depth)
-            out["least_depth_m"], out["least_depth_at"] = least_depth(self, self.environment["depth"])
-        return out
+        """The route in figures (seaway.result.summary.route_summary): name, ends (and the ends
+        requested), cost, length, legs, time, the ice met, assumptions, least depth."""
+        return route_summary(self, speed_kn)
 
     def __str__(self) -> str:
         return route_table(self)

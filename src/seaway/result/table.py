@@ -42,6 +42,9 @@ def route_table(route) -> str:
                    f"{route.neighbourhood}x{route.neighbourhood} stencil)"]
     if "time_h" in s:
         lines[-1] += f"; {fmt_hours(s['time_h'])} at {s['speed_kn']:g} kn"
+    if "requested_start" in s:
+        lines.insert(1, f"requested {fmt_point(s['requested_start'], geo)} -> "
+                        f"{fmt_point(s['requested_end'], geo)}")
     lines += [f"assumed: {a}" for a in route.assumptions]
     if np.isfinite(s.get("least_depth_m", np.nan)):
         lines.append(f"least depth {s['least_depth_m']:.1f} m at {fmt_point(s['least_depth_at'], geo)}")
