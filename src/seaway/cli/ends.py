@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..base.sphere import distance_km
 from ..chart.raster import as_chart
 from ..engine.snap import DEFAULT_SNAP_KM, SnapError, snap_ends
 from ..ice.codes import stage_name
@@ -82,14 +83,25 @@ def check_ends(cost, land, layers, ends, *, vessel=None, snap=False, snap_km=DEF
     unit = "km" if chart.geographic or to_user else "chart units"
     try:
         snapped = snap_ends(cost, ends[0], ends[1], land=land, neighbourhood=neighbourhood,
-                            max_km=snap_km if snap else 0.0, why=why)
-    except SnapError as exc:
-        raise ValueError("; ".join(_refusal(m, given[m.name], snap, snap_km, show, unit)
+                            max_km=np.inf, why=why)
+    except SnapError as exc:  # no usable pixel joins the other end
+        raise ValueError("; ".join(_refusal(m, given[m.name], np.inf, snap, snap_km, show, unit)
                                    for m in exc.moves)) from None
+
+    def km(m):  # a projected chart: great-circle km between the point asked for and the new one
+        if to_user is None:
+            return m.distance
+        (a, b), (c, d) = given[m.name], show(m.to)
+        return float(distance_km(a, b, c, d))
+
+    far = [m for m in snapped.moves if not (snap and km(m) <= snap_km)]
+    if far:
+        raise ValueError("; ".join(_refusal(m, given[m.name], km(m), snap, snap_km, show, unit)
+                                   for m in far))
     notes = []
     for m in snapped.moves:
         notes.append(f"{m.name} {_pt(given[m.name])} is on an impassable pixel ({m.why}): moved "
-                     f"{m.distance:.1f} {unit} to {_pt(show(m.to), 4)} (--snap, at most {snap_km:g} {unit})")
+                     f"{km(m):.1f} {unit} to {_pt(show(m.to), 4)} (--snap, at most {snap_km:g} {unit})")
         say(notes[-1])
     return list(snapped.ends), notes
 
@@ -98,12 +110,12 @@ def _pt(p, digits=None) -> str:
     return ",".join(f"{v:g}" if digits is None else f"{v:.{digits}f}" for v in p)
 
 
-def _refusal(m, given, snap, snap_km, show, unit) -> str:
+def _refusal(m, given, km, snap, snap_km, show, unit) -> str:
     here = f"{m.name} {_pt(given)} is on an impassable pixel ({m.why})"
     if m.to is None:
         return f"{here}; no pixel of the chart the ship may use is joined to the other end"
-    there = f"the nearest point the ship may use is {_pt(show(m.to), 4)}, {m.distance:.1f} {unit} away"
+    there = f"the nearest point the ship may use is {_pt(show(m.to), 4)}, {km:.1f} {unit} away"
     if not snap:
         return f"{here}; {there}: give it, or pass --snap to move the {m.name} there"
     return (f"{here}; {there}, farther than --snap-km {snap_km:g}: give a point in water the ship "
-            f"may use, or --snap-km {np.ceil(m.distance):.0f} to move the {m.name} there")
+            f"may use, or --snap-km {np.ceil(km):.0f} to move the {m.name} there")
