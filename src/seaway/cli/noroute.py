@@ -11,14 +11,19 @@ from .depth import why_no_route as why_depth
 from .projected import pixel_latlon
 
 
+def ice_chart(data, args) -> bool:
+    """Is the route's cost the ice of the chart (stages for a class), not a cost variable?"""
+    layers = data.layers
+    return bool(layers is not None and ("SA" in layers or "stage_of_development" in layers)
+                and not args.variable)
+
+
 def why_no_route(data, cost, ends, args, *, depth=None, shallow=None, constrained=False) -> NoRouteError:
     asked = (args.start, args.end)
     """The NoRouteError to report for a search between `ends` on `cost` that found nothing."""
     layers = data.layers
     show = pixel_latlon(cost, data.projection)
-    ice = layers is not None and ("SA" in layers or "stage_of_development" in layers) \
-        and not args.variable
-    if ice:
+    if ice_chart(data, args):
         blocked = ("water shallower than draft + UKC" if shallow is not None
                    else "closed by the cost, not by the ice")
         err = explain_ice(layers, args.vessel or "Arc7", ends[0], ends[1], cost=cost,

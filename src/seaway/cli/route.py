@@ -8,6 +8,7 @@ from ..base.units import KM_PER_NM
 from ..engine.api import route
 from ..engine.snap import DEFAULT_SNAP_KM
 from ..errors import NoRouteError
+from ..ice.speed import ice_speed
 from ..models import EDGE_COSTS
 from .chartfile import fast_ice, open_chart
 from .common import (
@@ -24,7 +25,7 @@ from .common import (
 from .constraints import add_constraint_options, constraint_options
 from .depth import for_route
 from .ends import check_ends
-from .noroute import why_no_route
+from .noroute import ice_chart, why_no_route
 from .outputs import check_outputs, write_outputs
 from .projected import end_pixel, pixel_latlon
 
@@ -83,6 +84,11 @@ def run_route(args) -> int:
             f"{r.stats['course_changes_before']} -> {r.stats['course_changes_after']}")
     r = dataclasses.replace(r, name=args.name, speed_kn=args.speed, notes=r.notes + tuple(moved),
                             requested=(args.start, args.end))  # every output gives both ends
+    if args.speed and ice_chart(data, args):  # times from the speed in the ice, never open water's
+        knots = ice_speed(data.layers, args.vessel or "Arc7", args.speed, fast_ice=args.fast_ice,
+                          depth=depth if args.draft is not None else None, draft=args.draft)
+        r = r.with_ice_speed(knots)
+        tell(f"times from the speed in the ice: {knots.attrs['model']}")
     if data.environment:
         r = r.with_environment(data.environment)
     if depth is not None:  # --depth, over a chart's own depth variable
@@ -175,7 +181,11 @@ def add_route_command(commands) -> None:
                          "farther: stop, naming the distance)")
     add_constraint_options(rp, point)
     rp.add_argument("--speed", type=float, metavar="KN",
-                    help="speed in knots: adds each leg's time and the voyage time")
+                    help="speed in open water, knots: adds each leg's time and the voyage time; "
+                         "on an ice chart the speed in the ice comes from a model named in the "
+                         "output: Andreeva 2021's V = F x V0 for Register classes, the IMO POLARIS "
+                         "speed limits for Polar Classes and Finnish-Swedish classes "
+                         "(seaway.ice.speed)")
     rp.add_argument("--name", default="seaway route", help="route name in the outputs")
     rp.add_argument("--out", action="append", metavar="FILE",
                     help="write the route; the extension picks the format: .geojson/.json, .gpx, "

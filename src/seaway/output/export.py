@@ -112,13 +112,15 @@ def rtz(route, speed_kn=None) -> str:
     wps = ET.SubElement(root, f"{{{RTZ_NS}}}waypoints")
     default = ET.SubElement(wps, f"{{{RTZ_NS}}}defaultWaypoint", {"radius": "0.1"})
     ET.SubElement(default, f"{{{RTZ_NS}}}leg", {"geometryType": "Orthodrome"})
+    legs = route.legs(speed_kn) if route.ice_speed is not None else None
     for k, (lat, lon) in enumerate(route.waypoints, start=1):
         wp = ET.SubElement(wps, f"{{{RTZ_NS}}}waypoint", {"id": str(k), "name": f"WP{k:03d}"})
         ET.SubElement(wp, f"{{{RTZ_NS}}}position", {"lat": f"{lat:.7f}", "lon": f"{_wrap180(lon):.7f}"})
         if k > 1:
             attrs = {"geometryType": "Orthodrome"}
-            if speed:
-                attrs["speedMax"] = f"{float(speed):.2f}"
+            leg_speed = legs[k - 2].speed_kn if legs is not None else speed  # in ice: the leg's mean
+            if leg_speed:
+                attrs["speedMax"] = f"{float(leg_speed):.2f}"
             ET.SubElement(wp, f"{{{RTZ_NS}}}leg", attrs)
     return _xml(root)
 
@@ -208,9 +210,15 @@ def header_lines(route, speed_kn=None) -> list:
     geo_ = route.geographic
     size = f"{s['length_nm']:.1f} nm" if geo_ else f"{s['length']:.4g} {s['length_units']}"
     head = f"{route.name}: {size}, cost {route.cost:.6g} {route.unit}, {s['legs']} legs"
-    if "time_h" in s:
-        head += f", {s['time_h']:.1f} h at {s['speed_kn']:g} kn"
-    lines = [head]
+    if "speed_model" in s:
+        head += f", {s['time_h']:.1f} h" if np.isfinite(s["time_h"]) else ", no time"
+        lines = [head, f"speed in ice: {s['speed_model']}"]
+        if s.get("stopped_km"):
+            lines.append(f"no speed on {s['stopped_km']:.1f} km (an icebreaker's escort)")
+    else:
+        if "time_h" in s:
+            head += f", {s['time_h']:.1f} h at {s['speed_kn']:g} kn"
+        lines = [head]
     for end in ("start", "end"):
         line = f"{end} {_point(s[end])}"
         if f"requested_{end}" in s:

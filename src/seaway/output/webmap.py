@@ -176,11 +176,18 @@ def _popup(route, number, point, leg, speed_kn):
     if leg is None:
         lines.append(f"end: {route.length:.1f} {'km' if route.geographic else 'units'}, "
                      f"cost {route.cost:.6g} {html.escape(route.unit)}")
+        if route.ice_speed is not None:
+            hours = sum(leg.time_h for leg in route.legs())
+            lines.append(html.escape(f"time {hours:.1f} h" if np.isfinite(hours) else "no time")
+                         + "; speed in ice: " + html.escape(route.ice_speed.model))
     else:
         dist = (f"{leg.distance_nm:.2f} nm ({leg.distance:.2f} km)" if leg.distance_nm is not None
                 else f"{leg.distance:.4g} units")
         lines += [f"leg {leg.number}: course {leg.course:05.1f}&deg;, {dist}"]
-        if leg.time_h is not None:
+        if leg.time_h is not None and route.ice_speed is not None:  # the speed in the ice
+            lines.append(f"time {leg.time_h:.2f} h at {leg.speed_kn:.3g} kn (mean, in ice)"
+                         if np.isfinite(leg.time_h) else "no time: no speed in part of its ice")
+        elif leg.time_h is not None:
             lines.append(f"time {leg.time_h:.2f} h at {speed_kn:g} kn")
         lines.append(f"cost {leg.cost:.6g} {html.escape(route.unit)}")
         lines += [html.escape(_ice_text(n, mv)) for n, mv in leg.environment.items()]

@@ -17,6 +17,7 @@ from ..models.base import CostModel, EdgeCost
 from .environment import along, extreme_name  # noqa: F401 - extreme_name: part of this API
 from .summary import route_summary
 from .table import route_table
+from .timing import SpeedField, step_times
 
 
 @dataclass
@@ -63,6 +64,8 @@ class Route:
     requested: tuple | None = field(default=None, repr=False)
     #: Sentences on how the route was set up (an end moved to usable water): in .assumptions.
     notes: tuple = field(default=(), repr=False)
+    #: The speed in the ice its times come from (with_ice_speed; seaway.result.timing).
+    ice_speed: SpeedField | None = field(default=None, repr=False)
 
     @property
     def assumptions(self) -> tuple:
@@ -161,6 +164,12 @@ class Route:
         """The legs between consecutive waypoints, with course, distance, time, cost and the mean
         and maximum of each environment variable along the leg. speed_kn defaults to .speed_kn."""
         speed = self.speed_kn if speed_kn is None else number(speed_kn, "speed_kn", above=0)
+        ice = self.ice_speed if self.geographic else None
+        if ice is not None:  # times from the speed in the ice (seaway.result.timing)
+            if speed is not None and speed != ice.v0_kn:
+                raise ValueError(f"the route's speeds in ice are for {ice.v0_kn:g} kn in open water, "
+                                 f"not {speed:g} kn; make them again with with_ice_speed")
+            speed, hours_of = ice.v0_kn, step_times(self)[0]
         wi, c = self.waypoint_index, self.coords
         steps, costs = self.leg_lengths, self.costs()
         out = []
@@ -174,8 +183,12 @@ class Route:
                 course = float(np.degrees(np.arctan2(b[1] - a[1], b[0] - a[0])) % 360.0)
                 nm = None
             hours = nm / speed if (speed and nm is not None) else None
-            out.append(Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm, speed,
-                           hours, float(costs[i:j].sum()), self._along(i, j)))
+            leg_speed = speed
+            if ice is not None:  # the leg's mean speed over its time; 0 where it stops
+                hours = float(hours_of[i:j].sum())
+                leg_speed = nm / hours if 0 < hours < np.inf else (0.0 if hours else speed)
+            out.append(Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm,
+                           leg_speed, hours, float(costs[i:j].sum()), self._along(i, j)))
         return out
 
     def sample_pixels(self, i: int = 0, j: int | None = None) -> np.ndarray:
@@ -196,6 +209,23 @@ class Route:
 
     def _along(self, i: int, j: int) -> dict:
         return along(self, i, j)
+
+    def with_ice_speed(self, knots, model=None) -> Route:
+        """A copy whose times come from `knots`, the speed on the chart's grid (a DataArray from
+        seaway.ice.speed.ice_speed, whose attributes give the model and the open-water speed,
+        or an array with `model`): each leg's time is its length over the speed along it, its
+        speed the mean; speed_kn becomes the open-water speed."""
+        arr = knots
+        template = self.chart.template
+        if hasattr(arr, "dims") and hasattr(template, "dims") and set(arr.dims) == set(template.dims):
+            arr = arr.transpose(*template.dims)
+        values = np.asarray(getattr(arr, "values", arr), float)
+        if values.shape != self.chart.shape:
+            raise ValueError(f"the speed has shape {values.shape}, the chart {self.chart.shape}")
+        attrs = getattr(knots, "attrs", {})
+        v0 = float(attrs.get("v0_kn", np.nanmax(values)))
+        field = SpeedField(values, model or str(attrs.get("model", "speed field")), v0)
+        return dataclasses.replace(self, ice_speed=field, speed_kn=v0)
 
     def with_environment(self, data, names=None) -> Route:
         """A copy that reports `data` along each leg: an xarray.Dataset or a dict of DataArrays or

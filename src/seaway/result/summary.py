@@ -6,6 +6,7 @@ import numpy as np
 
 from ..base import sphere as geo
 from .environment import CATEGORICAL, LEAST, least_depth, summarise, values_at
+from .timing import step_times
 
 
 def route_summary(route, speed_kn=None) -> dict:
@@ -26,7 +27,13 @@ def route_summary(route, speed_kn=None) -> dict:
     if route.geographic:
         length_nm = route.length / geo.KM_PER_NM
         out["length_nm"] = length_nm
-        if speed:
+        if route.ice_speed is not None:  # times from the speed in the ice
+            out.update(speed_kn=route.ice_speed.v0_kn, time_h=float(sum(leg.time_h for leg in legs)),
+                       speed_model=route.ice_speed.model)
+            stopped = float(step_times(route)[1].sum())
+            if stopped > 0:
+                out["stopped_km"] = stopped
+        elif speed:
             out.update(speed_kn=float(speed), time_h=length_nm / speed)
     for name, arr in route.environment.items():
         if name in CATEGORICAL:  # the governing / most frequent category of the whole route
