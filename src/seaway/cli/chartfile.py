@@ -19,6 +19,7 @@ from ..ice import chart_impact
 from ..ice.codes import stage_name
 from ..ice.concentration import DEFAULT_STAGE, concentration_chart, is_concentration
 from ..ice.forms import DEFAULT_FAST_ICE, check_fast_ice
+from ..ice.impact import governing_stage
 from ..samples import ice_impact, kara_sea
 from .projected import project_chart
 from .vectorchart import sigrid_chart
@@ -120,6 +121,12 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
     elif "stage_of_development" in ds or "SA" in ds:
         out.cost = _impact(ds, vessel or "Arc7", out.notes, fast_ice)
         out.description += f", ice impact for {vessel or 'Arc7'} (Grinyak et al. 2022)"
+        # along the legs and on the maps: the stage that governs (SIGRID-3: SA, open and bergy
+        # water ice free, fast ice's stated stage) and the form of ice (fast ice)
+        out.environment["stage_of_development"] = (_two_d(ds.stage_of_development, []) if "SA" not in ds
+                                                   else governing_stage(ds, fast_ice=fast_ice))
+        if "FA" in ds:
+            out.environment["FA"] = ds["FA"]
     else:
         two_d = [n for n in ds.data_vars if n != land_name and ds[n].ndim >= 2]
         if len(two_d) != 1:

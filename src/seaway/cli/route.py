@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 
 from ..base.units import KM_PER_NM
+from ..depth import check_draft
 from ..engine.api import route
 from ..engine.snap import DEFAULT_SNAP_KM
 from ..errors import NoRouteError
@@ -98,8 +99,9 @@ def run_route(args) -> int:
         y, x = r.coords[:, 0], r.coords[:, 1]
         r = dataclasses.replace(r, latlon=data.projection.to_latlon(y, x))
     print(r)
+    shoal = sum(check_draft(args.draft, args.ukc)) if args.draft is not None else None
     write_outputs(planned, r, planar=planar if data.projection is not None else None,
-                  title=_title(args, data, r), say=say)
+                  title=_title(args, data, r), say=say, map_options={"shoal_m": shoal})
     return 0
 
 

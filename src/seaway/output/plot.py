@@ -19,15 +19,20 @@ from ..base.files import write_all
 from ..base.units import KM_PER_NM
 from ..chart.raster import as_chart
 from ..ice.colours import classes
+from ..result.environment import least_depth
 from .style import (
     COAST_COLOUR,
     LAND_COLOUR,
     ROUTE_COLOUR,
+    SHOAL_COLOUR,
     axes_coords,
     edges,
+    fast_ice,
     fit_title,
     ice_layer,
+    point_xy,
     route_xy,
+    shoals,
 )
 
 MAX_DRAWN = 700  # pixels along a side actually drawn (larger charts are subsampled)
@@ -205,7 +210,7 @@ def plot_route(route, path, **options) -> None:
 
 
 def route_png(route, *, ice=None, code=None, values=None, label=None, title=None, size=None,
-              dpi=100, cmap="Blues") -> bytes:
+              dpi=100, cmap="Blues", shoal_m=None) -> bytes:
     """A PNG map of the route over its chart, as bytes.
 
     ice: a raster on the chart's grid to draw in the WMO colour code (SIGRID-3 stage codes or
@@ -215,7 +220,10 @@ def route_png(route, *, ice=None, code=None, values=None, label=None, title=None
     values: any other raster to draw instead, with a colour bar (`label` names it); with no ice
         and no values, the cost raster is drawn.
     size: (width, height) in inches (pixels = size x dpi); default 11 inches wide, as high as the
-        map's aspect needs."""
+        map's aspect needs.
+    shoal_m: with a depth environment (Route.with_environment({"depth": ...})), water shallower
+        than this (draft + UKC) is drawn as shoal; the route's least depth is marked either way.
+    Fast ice (an FA environment, form 08) is drawn as fast ice."""
     from matplotlib.colors import BoundaryNorm, ListedColormap
     from matplotlib.patches import Patch
 
@@ -229,7 +237,7 @@ def route_png(route, *, ice=None, code=None, values=None, label=None, title=None
     layer, kind = (None, None) if values is not None else ice_layer(route, ice, code)
     land = np.zeros(chart.shape, bool) if chart.land is None else chart.land.astype(bool)
     if layer is not None:
-        index, table = classes(layer, kind)
+        index, table = classes(layer, kind, fast=fast_ice(route) if ice is None else None)
         present = np.unique(index[(index >= 0) & ~land])
         colours = ListedColormap([np.array(rgb) / 255 for _, rgb in table])
         norm = BoundaryNorm(np.arange(len(table) + 1) - 0.5, len(table))
@@ -242,10 +250,22 @@ def route_png(route, *, ice=None, code=None, values=None, label=None, title=None
         im = m.raster(np.ma.masked_where(land | ~np.isfinite(v), v), cmap)
         m.fig.colorbar(im, ax=m.ax, label=label or "cost per unit length", shrink=0.7)
         what = label or "cost per unit length"
+    shoal = shoals(route, shoal_m)
+    if shoal is not None and (shoal & ~land).any():
+        m.raster(np.ma.masked_where(~shoal | land, np.ones(shoal.shape)),
+                 ListedColormap([SHOAL_COLOUR]), zorder=2.5)
+        patches.append(Patch(facecolor=SHOAL_COLOUR, edgecolor="#444444",
+                             label=f"shoal: shallower than {float(shoal_m):g} m (draft + UKC)"))
     if m.chart_land() or chart.geographic:
         patches.append(Patch(facecolor=LAND_COLOUR, edgecolor=COAST_COLOUR, label="land"))
     m.graticule()
     m.route(route)
+    if "depth" in route.environment:  # the shallowest point the route crosses
+        z, at = least_depth(route, route.environment["depth"])
+        if at is not None:
+            x, y = point_xy(chart, at)
+            m.ax.plot(x, y, "v", color=SHOAL_COLOUR, mec="black", ms=10, zorder=9,
+                      label=f"least depth {z:.1f} m", **m.kw)
     m.legend(patches)
     units = "km" if route.geographic else "units"
     nm = f" ({route.length / KM_PER_NM:.0f} nm)" if route.geographic else ""

@@ -11,9 +11,10 @@ from ..base.sphere import unwrap_lon
 from ..ice.colours import guess_code
 
 ROUTE_COLOUR = "#ff00ff"  # magenta, outlined in black: absent from the WMO colours and the greys
-LAND_COLOUR = "#8c8c8c"
+LAND_COLOUR = "#c8b996"  # light tan: grey is fast ice in the WMO colour code
 COAST_COLOUR = "#303030"
 NO_DATA_COLOUR = "#ffffff"
+SHOAL_COLOUR = "#00e5e5"  # cyan: water shallower than draft + UKC (absent from the WMO colours)
 
 
 def edges(centres) -> np.ndarray:
@@ -39,6 +40,30 @@ def route_xy(route, chart):
         lon0 = unwrap_lon(chart.lon)[0]
         return lon0 + ((c[:, 1] - lon0) % 360.0), c[:, 0]
     return c[:, 1], c[:, 0]
+
+
+def point_xy(chart, p):
+    """(x, y) of one point (lat, lon or y, x) on the axes of axes_coords()."""
+    if chart.geographic:
+        lon0 = unwrap_lon(chart.lon)[0]
+        return lon0 + ((p[1] - lon0) % 360.0), p[0]
+    return p[1], p[0]
+
+
+def fast_ice(route):
+    """Mask of the fast ice (form FA 08) on the route's chart, from its environment; or None."""
+    fa = route.environment.get("FA")
+    return None if fa is None else np.asarray(fa, float) == 8
+
+
+def shoals(route, shoal_m):
+    """Mask of water shallower than `shoal_m` metres (the route's depth environment), or None."""
+    depth = route.environment.get("depth")
+    if shoal_m is None or depth is None:
+        return None
+    z = np.asarray(depth, float)
+    with np.errstate(invalid="ignore"):
+        return (z > 0) & (z < float(shoal_m))
 
 
 def ice_layer(route, ice, code):
