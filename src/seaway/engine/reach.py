@@ -148,3 +148,5 @@ def with_reach(err: NoRouteError, reach: Reach | None, show=None, unit="km",
 
 def _pt(p, digits=None) -> str:
     return ",".join(f"{float(v):g}" if digits is None else f"{float(v):.{digits}f}" for v in p)
+
+__all__ = ["BASE", "Reach", "nearest_reachable", "least_barrier", "explain_no_route", "with_reach", "chart_order"]

@@ -125,7 +125,8 @@ def snap_ends(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None
         water = _component(prepared, pixels[0] if ok[0] else pixels[1], usable)[cand[:, 0], cand[:, 1]]
     else:
         water = _joint_water(prepared, usable, cand, dist)
-    moves, ends = [], list(requested)
+    moves: list = []
+    ends: list = list(requested)
     for k, name in enumerate(("start", "end")):
         if ok[k]:
             continue
@@ -193,3 +194,5 @@ def _joint_water(prepared, usable, cand, dist):
         if total < best_total:
             best, best_total = water, total
     return best
+
+__all__ = ["DEFAULT_SNAP_KM", "Move", "SnapError", "SnappedEnds", "snap_ends"]

@@ -199,3 +199,5 @@ def _weakest(kinds, way, px, chart, start, end, neighbourhood):
 
 def _pt(p) -> str:
     return ",".join(f"{float(v):g}" for v in p)
+
+__all__ = ["LADDER", "explain_no_route"]

@@ -3,7 +3,7 @@ an ice chart, Route.with_ice_speed): never the open-water speed through ice.
 
 The model depends on the class (seaway.ice.classes):
 
-* **Russian Register classes and 'none'**: Andreeva 2021, V = F * V0 with F = f1 * f2
+* Russian Register classes and 'none': Andreeva 2021, V = F x V0 with F = f1 x f2
   (seaway.ice.andreeva; f3 = 1: no fairway is charted). f2 = 1 - h / h_pass, h_pass the class's
   Table-1 thickness (Grinyak et al. 2022); h the chart's ice thickness (a `thickness` or CF
   `sea_ice_thickness` layer) where it has one, else the typical thickness of the governing
@@ -14,7 +14,7 @@ The model depends on the class (seaway.ice.classes):
   no independent way there (an icebreaker's escort). f1 = 1 - d / Z (Andreeva's depth factor,
   survey correction dL = 0) when a depth raster and the draft are given, else 1. The
   concentration is not a term of the model.
-* **IACS Polar Classes and Finnish-Swedish classes**: IMO POLARIS (MSC.1/Circ.1519,
+* IACS Polar Classes and Finnish-Swedish classes: IMO POLARIS (MSC.1/Circ.1519,
   seaway.ice.polaris): V0 in normal operation, the circular's speed limit under elevated risk
   (PC1 11 kn, PC2 8 kn, PC3-PC5 5 kn, PC6-PC7 3 kn; classes below PC7 have no such level), no
   speed under special consideration.
@@ -101,3 +101,5 @@ def _thickness(chart, fast_ice, rule):
     stage = governing_stage(chart, fast_ice=fast_ice)
     end = "upper end" if rule == "upper" else "middle"
     return andreeva.stage_thickness(stage, rule), f"the {end} of the governing stage's WMO range"
+
+__all__ = ["ice_speed", "THICKNESS_NAMES"]

@@ -184,7 +184,7 @@ class Route:
                 nm = None
             hours = nm / speed if (speed and nm is not None) else None
             leg_speed = speed
-            if ice is not None:  # the leg's mean speed over its time; 0 where it stops
+            if ice is not None and nm is not None:  # the leg's mean speed; 0 where it stops
                 hours = float(hours_of[i:j].sum())
                 leg_speed = nm / hours if 0 < hours < np.inf else (0.0 if hours else speed)
             out.append(Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm,
