@@ -192,7 +192,11 @@ def add_route_command(commands) -> None:
     rp.add_argument("--out", action="append", metavar="FILE",
                     help="write the route; the extension picks the format: .geojson/.json, .gpx, "
                          ".rtz (IEC 61174, for ECDIS), .csv, .html (interactive map, offline; "
-                         "needs seaway[plot]); may be repeated")
+                         "needs seaway[plot]); may be repeated. Every path is checked before the "
+                         "chart is read, and all files are written or none; each carries the ends "
+                         "asked for and used and what the route assumes")
     rp.add_argument("--plot", metavar="PNG",
-                    help="draw the chart, land and route to a PNG (needs seaway[plot])")
+                    help="draw the chart, land and route to a PNG (needs seaway[plot]): ice in the "
+                         "WMO colour code (by stage of development on stage charts, fast ice grey), "
+                         "with --depth/--draft the shoals and the least depth")
     rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")
