@@ -25,11 +25,11 @@ import dataclasses
 
 import numpy as np
 
-from ..chart.legs import Segments
 from ..engine.api import route
 from ..engine.prepared import PreparedChart
 from ..engine.reach import chart_order, least_barrier, nearest_reachable, with_reach
 from ..errors import NoRouteError
+from ..models.base import EdgeCost
 from ..result.environment import weighted_samples
 from .classes import get_class
 from .codes import stage_name
@@ -183,7 +183,7 @@ def _weakest(kinds, way, px, chart, start, end, neighbourhood):
         u = ice_impact(kinds.stage, LADDER[k], unknown=np.inf)
         u[kinds.other | ~np.isfinite(kinds.stage)] = np.inf
         own = dataclasses.replace(chart, values=np.ascontiguousarray(u, dtype=float))
-        seg = Segments(own, "max", neighbourhood)
+        seg = EdgeCost("max").segments(own, neighbourhood)
         v = way.vertices
         if all(np.isfinite(seg.leg(a, b)[0]) for a, b in zip(v[:-1], v[1:])):
             return LADDER[k]
