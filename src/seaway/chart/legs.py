@@ -20,7 +20,7 @@ planar units) inside pixels of cost u_k.
   length; a leg inside one pixel costs l_0 u_0. A stencil step of the engine costs what the
   engine charges (max(u_i, u_j) r or (u_i + u_j)/2 r: only its two ends count).
 A piece lying exactly on a pixel boundary is charged the larger of the two sides.
-tests/reference_legs.py keeps the former numpy implementation as the check of the C++ one."""
+tests/support/reference_legs.py keeps the former numpy implementation as the check of the C++ one."""
 
 from __future__ import annotations
 
