@@ -47,6 +47,19 @@ class Leg:
 
 @dataclass
 class Route:
+    """A route a search returned: its pixels, cost and model, and what a navigator reads from it.
+
+    cost: the sum of the step costs, in the model's unit (``unit``: cost x km, h, t, ...).
+    pixels: (n, 2) (row, col) of the route's pixels, both ends included; ``coords`` gives the
+        vertices as lat/lon (geographic charts) or y/x, ``length`` the length (km or grid units).
+    method, stats: the search that found it ("bidirectional", "astar", ...) and its figures
+        (``stats["settled"]``: pixels settled) with the model's own (arrival, waits, ...).
+    model, speed_kn: the cost model (seaway.models) and the speed of the leg table's times.
+
+    Waypoints are the ends and every course change: ``legs()``, ``summary()`` and ``str()`` give
+    the leg table; ``smoothed()`` removes the zig-zag, ``with_environment(ds)`` reports a chart's
+    variables along the legs, ``to_geojson()``, ``to_html()`` and seaway.export write it."""
+
     chart: Chart = field(repr=False)
     cost: float
     pixels: np.ndarray  # (n, 2) row, col; both ends included
@@ -101,6 +114,7 @@ class Route:
 
     @property
     def geographic(self) -> bool:
+        """True on lat/lon charts (lengths in km, coords lat/lon), False on planar ones."""
         return self.latlon is not None or self.chart.geographic
 
     @property
@@ -157,6 +171,7 @@ class Route:
 
     @property
     def course_changes(self) -> int:
+        """The number of waypoints between the ends (each is a change of course)."""
         return max(len(self.waypoint_index) - 2, 0)
 
     def legs(self, speed_kn: float | None = None) -> list[Leg]:
@@ -216,6 +231,7 @@ class Route:
         return dataclasses.replace(self, environment=env)
 
     def summary(self, speed_kn: float | None = None) -> dict:
+        """The route as a dict: ends, cost and unit, length, legs, course changes, what it meets."""
         legs = self.legs(speed_kn)
         speed = self.speed_kn if speed_kn is None else speed_kn
         out = {"name": self.name, "start": tuple(map(float, self.coords[0])),
