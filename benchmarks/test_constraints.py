@@ -26,8 +26,8 @@ with open("/proc/self/clear_refs", "w") as f:
     f.write("5")  # reset the peak (VmHWM) to the current resident size
 before = status("VmRSS:")
 t = cpu(); r = chart.route(start, end, method="dijkstra", turn_penalty=0.1); t_turn = cpu() - t
-print((status("VmHWM:") - before) / cost.size, r.stats["state_bytes"] / cost.size,
-      r.stats["settled"], plain.stats["settled"], t_turn, t_plain, r.cost, plain.cost,
+print((status("VmHWM:") - before) / cost.size, r.stats.search.state_bytes / cost.size,
+      r.stats.search.settled, plain.stats.search.settled, t_turn, t_plain, r.cost, plain.cost,
       r.course_changes, plain.course_changes)
 """
 

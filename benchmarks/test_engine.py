@@ -43,9 +43,9 @@ def test_seaway_route(benchmark, chart, k, method):
     r = benchmark.pedantic(seaway.route, args=(cost, start, end),
                            kwargs=dict(neighbourhood=k, method=method, edge_cost="mean"),
                            rounds=5, iterations=1, warmup_rounds=1)
-    per_pixel = r.stats["state_bytes"] / cost.size
+    per_pixel = r.stats.search.state_bytes / cost.size
     record(f"seaway {method} k={k}", benchmark,
-           f"{per_pixel:.1f} B/pixel, {r.stats['settled']:,} settled")
+           f"{per_pixel:.1f} B/pixel, {r.stats.search.settled:,} settled")
     exact = seaway.route(cost, start, end, neighbourhood=k, method="dijkstra", edge_cost="mean")
     assert r.cost == pytest.approx(exact.cost, rel=1e-9)
     assert per_pixel <= 16
@@ -72,7 +72,7 @@ def test_summer_chart(benchmark, chart, method):
     r = benchmark.pedantic(seaway.route, args=(summer, start, end),
                            kwargs=dict(neighbourhood=5, method=method, edge_cost="mean"),
                            rounds=5, iterations=1, warmup_rounds=1)
-    record(f"summer chart (costs 1-2) {method} k=5", benchmark, f"{r.stats['settled']:,} settled")
+    record(f"summer chart (costs 1-2) {method} k=5", benchmark, f"{r.stats.search.settled:,} settled")
     exact = seaway.route(summer, start, end, neighbourhood=5, method="dijkstra", edge_cost="mean")
     assert r.cost == pytest.approx(exact.cost, rel=1e-9)
 
@@ -89,7 +89,7 @@ with open("/proc/self/clear_refs", "w") as f:
     f.write("5")  # reset the peak (VmHWM) to the current resident size
 before = status("VmRSS:")
 r = seaway.route(cost, start, end, neighbourhood=int(sys.argv[6]), method="dijkstra")
-print((status("VmHWM:") - before) / cost.size, r.stats["state_bytes"] / cost.size)
+print((status("VmHWM:") - before) / cost.size, r.stats.search.state_bytes / cost.size)
 """
 
 

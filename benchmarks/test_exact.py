@@ -79,16 +79,17 @@ def test_one_route_fresh_chart(benchmark, charts, season, method):
                            kwargs=dict(edge_cost="mean", method=method), rounds=ROUNDS,
                            iterations=1, warmup_rounds=1)
     record(f"{method} one route {season}", benchmark,
-           f"{r.method}, {r.stats['settled']:,} settled, {r.stats['state_bytes'] / cost.size:.1f} B/pixel",
+           f"{r.method}, {r.stats.search.settled:,} settled, "
+           f"{r.stats.search.state_bytes / cost.size:.1f} B/pixel",
            cpu=cpu, peer=f"skimage one route {season}")
     exact = seaway.route(cost, s, e, edge_cost="mean", method="dijkstra")
     assert r.cost == pytest.approx(exact.cost, rel=1e-9)
-    assert r.stats["settled"] <= exact.stats["settled"]
+    assert r.stats.search.settled <= exact.stats.search.settled
     if method != "dijkstra" and season == "summer":  # the bound is tight in summer: it prunes
-        assert r.stats["settled"] < 0.5 * exact.stats["settled"]
+        assert r.stats.search.settled < 0.5 * exact.stats.search.settled
     if method == "auto":  # the rule of seaway.engine.methods: bidirectional (A* potential in summer)
         assert r.method == "bidirectional"
-        assert r.stats["state_bytes"] / cost.size <= 16
+        assert r.stats.search.state_bytes / cost.size <= 16
 
 
 @pytest.fixture(scope="module")
@@ -125,7 +126,7 @@ def test_many_routes_prepared(benchmark, with_landmarks, voyages, method):
         return [with_landmarks.route(s, e, method=method) for s, e in voyages]
 
     routes = benchmark.pedantic(_timed(run, cpu), rounds=3, iterations=1, warmup_rounds=1)
-    settled = sum(r.stats["settled"] for r in routes)
+    settled = sum(r.stats.search.settled for r in routes)
     record(f"{method} 8 routes, prepared chart", benchmark, f"{settled:,} settled in all",
            cpu=cpu, peer="skimage 8 routes")
     exact = [with_landmarks.route(s, e, method="dijkstra").cost for s, e in voyages]
@@ -146,7 +147,7 @@ with open("/proc/self/clear_refs", "w") as f:
     f.write("5")  # reset the peak (VmHWM) to the current resident size
 before = status("VmRSS:")
 r = chart.route(start, end)
-print((status("VmHWM:") - before) / cost.size, r.stats["state_bytes"] / cost.size, r.method)
+print((status("VmHWM:") - before) / cost.size, r.stats.search.state_bytes / cost.size, r.method)
 """
 
 

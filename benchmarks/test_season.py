@@ -47,8 +47,9 @@ def test_season_route(benchmark, season, method):
                            rounds=5, iterations=1, warmup_rounds=1)
     best = _static(grid, model.hours_per_km[-1]).route(GATE, VILKITSKY_WEST)  # the most open chart
     record(f"season route Arc7 7 charts {method} k=5", benchmark,
-           f"{r.cost:.2f} h ({r.stats['hours_waiting']:.2f} h waiting), {r.stats['settled']:,} settled, "
-           f"{r.stats['state_bytes'] / np.prod(SHAPE):.1f} B/pixel")
+           f"{r.cost:.2f} h ({r.stats.voyage.hours_waiting:.2f} h waiting), "
+           f"{r.stats.search.settled:,} settled, "
+           f"{r.stats.search.state_bytes / np.prod(SHAPE):.1f} B/pixel")
     other = chart.route(GATE, VILKITSKY_WEST, model=model,
                         method={"astar": "dijkstra", "dijkstra": "astar"}[method])
     assert r.cost == pytest.approx(other.cost, rel=1e-9) and r.cost >= best.cost - 1e-9
@@ -61,7 +62,7 @@ def test_static_route_same_chart(benchmark, season, method):
     r = benchmark.pedantic(static.route, (GATE, VILKITSKY_WEST), {"method": method},
                            rounds=5, iterations=1, warmup_rounds=1)
     record(f"static route Arc7 day-1 chart {method} k=5", benchmark,
-           f"{r.cost:.2f} h, {r.stats['settled']:,} settled")
+           f"{r.cost:.2f} h, {r.stats.search.settled:,} settled")
 
 
 def test_peer_skimage_on_day_one(benchmark, season):

@@ -1,8 +1,8 @@
 // Cost models as Python objects. Each bound model is a small struct that keeps its data alive
 // and, for one query, builds its C++ functor (seaway/cost_models.hpp, weather.hpp, waves.hpp)
 // on a prepared chart:
-//   template <class F> auto visit(const PreparedGrid&, F&& f) const;  // calls f(functor)
-//   template <class Fn> StepValues step_values(const Fn&, const PreparedGrid&,
+//   template <class F> auto visit(const PreparedChart&, F&& f) const;  // calls f(functor)
+//   template <class Fn> StepValues step_values(const Fn&, const PreparedChart&,
 //                                              const RouteResult&) const;  // per-step extras
 // visit() runs without the GIL: it must not touch Python objects.
 // Adding a model: a functor in cpp/seaway/, a struct here, its name in the Models list below,
@@ -20,7 +20,7 @@
 
 #include "seaway/cost_models.hpp"
 #include "seaway/ice_time.hpp"
-#include "seaway/router.hpp"
+#include "seaway/prepared_chart.hpp"
 #include "seaway/timed_zones.hpp"
 #include "seaway/waves.hpp"
 #include "seaway/weather.hpp"
@@ -32,21 +32,19 @@ namespace seaway {
 using CancelToken = SearchControl;
 inline const SearchControl* flag_of(const CancelToken* t) { return t; }
 
-// A chart prepared for routing (geometry, stencil, land clearance): one serves every model.
-struct Router {
-  std::unique_ptr<PreparedGrid> grid;
-};
+// The prepared chart's Python class, _core.Router (one chart serves every model).
+using ChartClass = pybind11::class_<PreparedChart, std::unique_ptr<PreparedChart>>;
 
 // Named per-step values a model reports beside the route (e.g. fuel's engine setting).
 using StepValues = std::vector<std::pair<std::string, std::vector<double>>>;
 
 struct NoStepValues {
   template <class Fn>
-  StepValues step_values(const Fn&, const PreparedGrid&, const RouteResult&) const { return {}; }
+  StepValues step_values(const Fn&, const PreparedChart&, const RouteResult&) const { return {}; }
 };
 
-inline void check_on_grid(const PreparedGrid& p, std::int64_t rows, std::int64_t cols, const char* what) {
-  const Grid& g = p.grid();
+inline void check_on_grid(const PreparedChart& p, std::int64_t rows, std::int64_t cols, const char* what) {
+  const Geometry& g = p.geometry();
   if (rows != g.rows || cols != g.cols)
     throw std::invalid_argument(std::string(what) + " has " + std::to_string(rows) + " x " +
                                 std::to_string(cols) + " pixels but the chart " + std::to_string(g.rows) +
@@ -63,12 +61,12 @@ struct RasterModel : NoStepValues {
   std::int64_t rows = 0, cols = 0;
 
   template <class F>
-  auto visit(const PreparedGrid& g, F&& f) const {
+  auto visit(const PreparedChart& g, F&& f) const {
     check_on_grid(g, rows, cols, "the cost raster");
     return single ? f(make<float>(g)) : f(make<double>(g));
   }
   template <class T>
-  Functor<T> make(const PreparedGrid& g) const {
+  Functor<T> make(const PreparedChart& g) const {
     const T* p = static_cast<const T*>(u);
     if constexpr (std::is_same_v<Functor<T>, IntegralCost<T>>)
       return {p, &g.stencil()};
@@ -93,9 +91,9 @@ struct TravelTimeModel : NoStepValues {
   double best_speed_kn;
 
   template <class F>
-  auto visit(const PreparedGrid& g, F&& f) const {
+  auto visit(const PreparedChart& g, F&& f) const {
     check_on_grid(g, forecast->rows, forecast->cols, "the forecast");
-    return f(WeatherTime(g.grid(), g.stencil(), forecast->f, vessel, best_speed_kn));
+    return f(WeatherTime(g.geometry(), g.stencil(), forecast->f, vessel, best_speed_kn));
   }
 };
 
@@ -107,16 +105,16 @@ struct FuelModel {
   double lambda_t_per_h, best_extra_kn;
 
   template <class F>
-  auto visit(const PreparedGrid& g, F&& f) const {
+  auto visit(const PreparedChart& g, F&& f) const {
     check_on_grid(g, forecast->rows, forecast->cols, "the forecast");
-    const WeatherTime physics(g.grid(), g.stencil(), forecast->f, vessel, 1.0);
+    const WeatherTime physics(g.geometry(), g.stencil(), forecast->f, vessel, 1.0);
     return f(FuelLagrangian(physics, settings_kn, rate_t_per_h, lambda_t_per_h, best_extra_kn));
   }
   // The chosen setting (index), hours and fuel (t) of each step.
-  StepValues step_values(const FuelLagrangian& m, const PreparedGrid& g, const RouteResult& out) const {
+  StepValues step_values(const FuelLagrangian& m, const PreparedChart& g, const RouteResult& out) const {
     std::vector<double> setting, hours, fuel;
     for (std::size_t i = 0; i < out.offsets.size(); ++i) {
-      const std::int64_t a = out.path[i], row = a / g.grid().cols;
+      const std::int64_t a = out.path[i], row = a / g.geometry().cols;
       const int o = out.offsets[i];
       const auto c = m.best(a, out.path[i + 1], o, g.lengths().row(row)[o]);
       setting.push_back(c.setting);
@@ -133,10 +131,10 @@ struct WaveDangerModel : NoStepValues {
   double ship_length_m, speed_kn;
 
   template <class F>
-  auto visit(const PreparedGrid& g, F&& f) const {
+  auto visit(const PreparedChart& g, F&& f) const {
     check_on_grid(g, forecast->rows, forecast->cols, "the forecast");
     const ForecastFields& w = *forecast;
-    return f(WaveDangerCost(g.grid(), g.stencil(), w.f.wave_height, w.f.wave_from, w.wave_period,
+    return f(WaveDangerCost(g.geometry(), g.stencil(), w.f.wave_height, w.f.wave_from, w.wave_period,
                             ship_length_m, speed_kn));
   }
 };
@@ -150,17 +148,17 @@ struct IceSeasonModel {
   std::int64_t rows = 0, cols = 0;
 
   template <class F>
-  auto visit(const PreparedGrid& g, F&& f) const {
+  auto visit(const PreparedChart& g, F&& f) const {
     check_on_grid(g, rows, cols, "the season of ice charts");
     IceSeries s = series;
     s.valid_from_h = valid_from_h.data();
-    return f(IceSeasonTime(g.grid(), g.stencil(), s));
+    return f(IceSeasonTime(g.geometry(), g.stencil(), s));
   }
   // The hour each step leaves its first pixel: after the arrival there, by any wait.
-  StepValues step_values(const IceSeasonTime& m, const PreparedGrid& g, const RouteResult& out) const {
+  StepValues step_values(const IceSeasonTime& m, const PreparedChart& g, const RouteResult& out) const {
     std::vector<double> depart;
     for (std::size_t i = 0; i < out.offsets.size(); ++i) {
-      const std::int64_t a = out.path[i], row = a / g.grid().cols;
+      const std::int64_t a = out.path[i], row = a / g.geometry().cols;
       const int o = out.offsets[i];
       depart.push_back(m.step(a, o, g.lengths().row(row)[o], out.cumulative[i]).depart_h);
     }

@@ -40,14 +40,14 @@ template <class M>
 void def_least_danger(py::module_& m) {
   m.def(
       "route_least_danger",
-      [](Router& r, const M& model, double danger_wind_ms, double danger_wave_m, std::int64_t start,
+      [](PreparedChart& chart, const M& model, double danger_wind_ms, double danger_wave_m, std::int64_t start,
          std::int64_t target, double weight, const CancelToken* cancel) {
         DangerRoute out;
         {
           py::gil_scoped_release release;
-          const DangerZones zones{&r.grid->grid(), fields_of(model).f, danger_wind_ms, danger_wave_m};
-          model.visit(*r.grid, [&](const auto& time) {
-            out = route_least_danger(*r.grid, time, zones, best_of(model), start, target, weight,
+          const DangerZones zones{&chart.geometry(), fields_of(model).f, danger_wind_ms, danger_wave_m};
+          model.visit(chart, [&](const auto& time) {
+            out = route_least_danger(chart, time, zones, best_of(model), start, target, weight,
                                      flag_of(cancel));
             return 0;
           });

@@ -15,16 +15,16 @@ using namespace seaway;
 namespace {
 
 template <class M>
-void def_bidirectional(py::class_<Router>& router) {
+void def_bidirectional(ChartClass& router) {
   router.def("route_bidirectional",
-             [](Router& r, const M& m, std::int64_t start, std::int64_t target, bool astar,
+             [](PreparedChart& chart, const M& m, std::int64_t start, std::int64_t target, bool astar,
                 const CancelToken* cancel) {
                RouteResult out;
                {
                  py::gil_scoped_release release;
-                 m.visit(*r.grid, [&](const auto& model) {
-                   out = astar ? route_bidirectional_astar(*r.grid, model, start, target, flag_of(cancel))
-                               : route_bidirectional(*r.grid, model, start, target, flag_of(cancel));
+                 m.visit(chart, [&](const auto& model) {
+                   out = astar ? route_bidirectional_astar(chart, model, start, target, flag_of(cancel))
+                               : route_bidirectional(chart, model, start, target, flag_of(cancel));
                    return 0;
                  });
                }
@@ -37,26 +37,26 @@ void def_bidirectional(py::class_<Router>& router) {
 }
 
 template <class M>
-void def_landmarks(py::class_<Router>& router) {
+void def_landmarks(ChartClass& router) {
   router.def("build_landmarks",
-             [](Router& r, const M& m, int count, std::int64_t seed, const CancelToken* cancel) {
+             [](PreparedChart& chart, const M& m, int count, std::int64_t seed, const CancelToken* cancel) {
                py::gil_scoped_release release;
-               return m.visit(*r.grid, [&](const auto& model) {
-                 return build_landmarks(*r.grid, model, count, seed, flag_of(cancel));
+               return m.visit(chart, [&](const auto& model) {
+                 return build_landmarks(chart, model, count, seed, flag_of(cancel));
                });
              },
              py::arg("model"), py::arg("count"), py::arg("seed"), py::arg("cancel") = nullptr,
              "Pick `count` landmarks farthest-first from `seed` and tabulate their costs (float32)");
   router.def("route_landmarks",
-             [](Router& r, const M& m, const Landmarks& lm, std::int64_t start, std::int64_t target,
+             [](PreparedChart& chart, const M& m, const Landmarks& lm, std::int64_t start, std::int64_t target,
                 bool bidirectional, const CancelToken* cancel) {
                RouteResult out;
                {
                  py::gil_scoped_release release;
-                 m.visit(*r.grid, [&](const auto& model) {
+                 m.visit(chart, [&](const auto& model) {
                    out = bidirectional
-                             ? route_landmarks_bidirectional(*r.grid, lm, model, start, target, flag_of(cancel))
-                             : route_landmarks(*r.grid, lm, model, start, target, flag_of(cancel));
+                             ? route_landmarks_bidirectional(chart, lm, model, start, target, flag_of(cancel))
+                             : route_landmarks(chart, lm, model, start, target, flag_of(cancel));
                    return 0;
                  });
                }
@@ -75,9 +75,9 @@ void register_exact(py::module_& m) {
       .def_property_readonly("pixels", [](const Landmarks& l) { return l.pixels; })
       .def_property_readonly("bytes", &Landmarks::bytes)
       .def_property_readonly("largest", [](const Landmarks& l) { return l.largest; });
-  py::class_<Router> router = py::reinterpret_borrow<py::class_<Router>>(m.attr("Router"));
-  router.def_property_readonly("cost_range", [](const Router& r) {
-    const Passability& p = r.grid->passability();
+  ChartClass router = py::reinterpret_borrow<ChartClass>(m.attr("Router"));
+  router.def_property_readonly("cost_range", [](const PreparedChart& chart) {
+    const Passability& p = chart.passability();
     return py::make_tuple(p.passable ? p.min_cost : 0.0, p.max_cost, p.passable);
   }, "(smallest, largest passable cost, passable pixels), from the preparation");
   def_bidirectional<RasterModel<MaxCost>>(router);

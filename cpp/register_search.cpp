@@ -36,14 +36,14 @@ LandRule parse_land_rule(const std::string& s) {
 }
 
 template <class T>
-void check_shape(const Grid& g, const Raster<T>& a, const char* what) {
+void check_shape(const Geometry& g, const Raster<T>& a, const char* what) {
   if (a.rows() != g.rows || a.cols() != g.cols || a.outerStride() != g.cols)
     throw std::invalid_argument(std::string(what) + " must be a C-contiguous array of the grid's shape");
 }
 
 
 template <class T>
-Router make_router(const Raster<T>& cost, const std::optional<Mask>& land, const Grid& g, int k,
+std::unique_ptr<PreparedChart> make_router(const Raster<T>& cost, const std::optional<Mask>& land, const Geometry& g, int k,
                    const std::string& directions, const std::string& land_rule) {
   check_shape(g, cost, "cost");
   if (land) check_shape(g, *land, "land");
@@ -53,22 +53,23 @@ Router make_router(const Raster<T>& cost, const std::optional<Mask>& land, const
   const T* u = cost.data();
   const std::uint8_t* l = land ? land->data() : nullptr;
   py::gil_scoped_release release;
-  return Router{std::make_unique<PreparedGrid>(g, u, l, k, dirs, rule)};
+  return std::make_unique<PreparedChart>(g, u, l, k, dirs, rule);
 }
 
-// Router.route(model, ...) and Router.field(model, ...) for one model type.
+// Router.route(model, ...) and Router.field(model, ...) for one model type (Python calls the
+// prepared chart a Router).
 template <class M>
-void def_queries(py::class_<Router>& router) {
+void def_queries(ChartClass& router) {
   router.def("route",
-             [](Router& r, const M& m, std::int64_t start, std::int64_t target, double weight,
+             [](PreparedChart& chart, const M& m, std::int64_t start, std::int64_t target, double weight,
                 const CancelToken* cancel) {
                RouteResult out;
                StepValues steps;
                {
                  py::gil_scoped_release release;
-                 m.visit(*r.grid, [&](const auto& model) {
-                   out = r.grid->route(model, start, target, weight, flag_of(cancel));
-                   steps = m.step_values(model, *r.grid, out);
+                 m.visit(chart, [&](const auto& model) {
+                   out = chart.route(model, start, target, weight, flag_of(cancel));
+                   steps = m.step_values(model, chart, out);
                    return 0;
                  });
                }
@@ -79,15 +80,15 @@ void def_queries(py::class_<Router>& router) {
              "(cost, flat path, stats, cost to each path pixel, per-step values); weight 0: "
              "Dijkstra, 1: A*, > 1: weighted A*");
   router.def("field",
-             [](Router& r, const M& m, std::int64_t start, const CancelToken* cancel) {
-               const Grid& g = r.grid->grid();
+             [](PreparedChart& chart, const M& m, std::int64_t start, const CancelToken* cancel) {
+               const Geometry& g = chart.geometry();
                py::array_t<double> out({g.rows, g.cols});
                double* d = out.mutable_data();
                SearchStats stats;
                {
                  py::gil_scoped_release release;
-                 stats = m.visit(*r.grid, [&](const auto& model) {
-                   return r.grid->field(model, start, d, flag_of(cancel));
+                 stats = m.visit(chart, [&](const auto& model) {
+                   return chart.field(model, start, d, flag_of(cancel));
                  });
                }
                return py::make_tuple(out, stats_dict(stats));
@@ -97,25 +98,25 @@ void def_queries(py::class_<Router>& router) {
 }
 
 template <class... M>
-void def_all_queries(py::class_<Router>& router, ModelList<M...>) {
+void def_all_queries(ChartClass& router, ModelList<M...>) {
   (def_queries<M>(router), ...);
 }
 
 }  // namespace
 
 void register_search(py::module_& m) {
-  py::class_<Grid>(m, "Grid", "Raster geometry: planar (dx, dy) or regular lat/lon on a sphere")
+  py::class_<Geometry>(m, "Grid", "Raster geometry: planar (dx, dy) or regular lat/lon on a sphere")
       .def(py::init<>())
-      .def_readwrite("rows", &Grid::rows)
-      .def_readwrite("cols", &Grid::cols)
-      .def_readwrite("geographic", &Grid::geographic)
-      .def_readwrite("dx", &Grid::dx)
-      .def_readwrite("dy", &Grid::dy)
-      .def_readwrite("lat0", &Grid::lat0)
-      .def_readwrite("dlat", &Grid::dlat)
-      .def_readwrite("lon0", &Grid::lon0)
-      .def_readwrite("dlon", &Grid::dlon)
-      .def_readwrite("wrap", &Grid::wrap);
+      .def_readwrite("rows", &Geometry::rows)
+      .def_readwrite("cols", &Geometry::cols)
+      .def_readwrite("geographic", &Geometry::geographic)
+      .def_readwrite("dx", &Geometry::dx)
+      .def_readwrite("dy", &Geometry::dy)
+      .def_readwrite("lat0", &Geometry::lat0)
+      .def_readwrite("dlat", &Geometry::dlat)
+      .def_readwrite("lon0", &Geometry::lon0)
+      .def_readwrite("dlon", &Geometry::dlon)
+      .def_readwrite("wrap", &Geometry::wrap);
 
   py::class_<CancelToken>(m, "CancelToken", "Set it to stop the searches that were given it")
       .def(py::init<>())
@@ -126,9 +127,9 @@ void register_search(py::module_& m) {
           "pixels settled so far by the search given this token (updated every 4096)");
   py::register_exception<Cancelled>(m, "SearchCancelled", PyExc_KeyboardInterrupt);
 
-  py::class_<Router> router(m, "Router", "A chart prepared for routing: shared, thread-safe");
+  ChartClass router(m, "Router", "A chart prepared for routing: shared, thread-safe");
   router.def_property_readonly(
-      "workspaces", [](const Router& r) { return r.grid->workspaces_made(); },
+      "workspaces", [](const PreparedChart& chart) { return chart.workspaces_made(); },
       "search workspaces allocated so far (8-13 bytes per pixel each; reused across queries)");
   def_all_queries(router, Models{});
 

@@ -31,7 +31,7 @@ std::vector<Point> points_of(const Array& a, const char* what) {
 }
 
 Pricer make(const py::array& values, const std::optional<py::array_t<std::uint8_t, py::array::c_style>>& land,
-            const Grid& g, const std::string& rule, int half) {
+            const Geometry& g, const std::string& rule, int half) {
   auto fits = [&](const py::array& a) {
     return a.ndim() == 2 && a.shape(0) == g.rows && a.shape(1) == g.cols &&
            (a.flags() & py::array::c_style);

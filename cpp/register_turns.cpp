@@ -21,7 +21,7 @@ template <class M>
 void def_route_turns(py::module_& m) {
   m.def(
       "route_turns",
-      [](Router& r, const M& model, std::int64_t start, std::int64_t target, double weight,
+      [](PreparedChart& chart, const M& model, std::int64_t start, std::int64_t target, double weight,
          std::vector<double> angle_deg, std::vector<double> cost, int incoming,
          const CancelToken* cancel) {
         if (angle_deg.size() < 2 || angle_deg.size() != cost.size())
@@ -30,8 +30,8 @@ void def_route_turns(py::module_& m) {
         RouteResult out;
         {
           py::gil_scoped_release release;
-          model.visit(*r.grid, [&](const auto& f) {
-            out = route_with_turns(*r.grid, f, turn, start, target, incoming, weight, flag_of(cancel));
+          model.visit(chart, [&](const auto& f) {
+            out = route_with_turns(chart, f, turn, start, target, incoming, weight, flag_of(cancel));
             return 0;
           });
         }
@@ -52,6 +52,6 @@ void register_turns(py::module_& m) {
   def_route_turns<RasterModel<MeanCost>>(m);
   def_route_turns<RasterModel<IntegralCost>>(m);
   m.def(
-      "offset_index", [](Router& r, int di, int dj) { return r.grid->offset_index(di, dj); },
+      "offset_index", [](PreparedChart& chart, int di, int dj) { return chart.offset_index(di, dj); },
       py::arg("router"), py::arg("di"), py::arg("dj"), "Index of the stencil offset (di, dj), or -1.");
 }

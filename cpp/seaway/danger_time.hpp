@@ -14,8 +14,7 @@
 #include <tuple>
 #include <vector>
 
-#include "router.hpp"
-#include "steps.hpp"
+#include "prepared_chart.hpp"
 #include "timed_zones.hpp"
 #include "weather.hpp"
 
@@ -24,7 +23,7 @@ namespace seaway {
 // A step is in danger when the wind (m/s) or the significant wave height (m) at either end,
 // at the time the step starts, exceeds its threshold (inf: not used).
 struct DangerZones {
-  const Grid* g;
+  const Geometry* g;
   Forecast f;
   double wind_ms = inf, wave_m = inf;
 
@@ -52,10 +51,10 @@ struct DangerRoute {
 // `time` prices a step in hours (WeatherTime, or ZonedTime when zones close in time windows:
 // a wait for a zone counts as danger when the step it waits for is in danger).
 template <class Time>
-DangerRoute route_least_danger(const PreparedGrid& pg, const Time& time, const DangerZones& danger,
+DangerRoute route_least_danger(const PreparedChart& pg, const Time& time, const DangerZones& danger,
                                double best_speed_kn, std::int64_t start, std::int64_t target,
                                double weight, const SearchControl* control = nullptr) {
-  const Grid& g = pg.grid();
+  const Geometry& g = pg.geometry();
   const std::vector<Offset>& st = pg.stencil();
   const std::int64_t n = g.size();
   if (start < 0 || start >= n || target < 0 || target >= n)
@@ -74,16 +73,12 @@ DangerRoute route_least_danger(const PreparedGrid& pg, const Time& time, const D
     heap.pop();
     if (closed[std::size_t(v)]) continue;
     closed[std::size_t(v)] = 1;
-    if ((++stats.settled & 4095) == 0 && control) {  // progress and Ctrl-C, as search.hpp
-      control->settled.store(stats.settled, std::memory_order_relaxed);
-      if (control->cancel.load(std::memory_order_relaxed)) throw Cancelled();
-    }
+    count_settled(stats.settled, control);
     if (v == target) break;
     const double dv = dng[std::size_t(v)], tv = hrs[std::size_t(v)];
-    const double* len = pg.lengths().row(v / g.cols);
-    for_each_step(pg, v, [&](std::int64_t w, std::int64_t o, auto&& cell) {
+    pg.steps().each(v, [&](std::int64_t w, std::int64_t o, std::int64_t, std::int64_t, double r, auto&& cell) {
       if (closed[std::size_t(w)]) return;
-      const double h = time(v, w, int(o), len[o], tv, cell);
+      const double h = time(v, w, int(o), r, tv, cell);
       if (!(h < inf)) return;
       const double nd = dv + (danger(v, w, tv) ? h : 0.0), nt = tv + h;
       double& od = dng[std::size_t(w)];
@@ -103,9 +98,8 @@ DangerRoute route_least_danger(const PreparedGrid& pg, const Time& time, const D
   out.route.stats = stats;
   if (!closed[std::size_t(target)]) return out;
   out.route.cost = hrs[std::size_t(target)];
-  Workspace ws;  // trace_path reads predecessors from a Workspace
-  ws.pred = std::move(pred);
-  out.route.path = trace_path(g, st, ws, start, target, &out.route.offsets);
+  out.route.path = trace_back(g, st, start, target, [&](std::int64_t v) { return int(pred[std::size_t(v)]); },
+                              &out.route.offsets);
   for (std::size_t i = 0; i < out.route.path.size(); ++i) {
     const std::int64_t p = out.route.path[i];
     out.route.cumulative.push_back(hrs[std::size_t(p)]);

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "cost_models.hpp"
-#include "grid.hpp"
+#include "geometry.hpp"
 #include "stencil.hpp"
 
 namespace seaway {
@@ -39,7 +39,7 @@ struct IceSeries {
 
 class IceSeasonTime {
  public:
-  IceSeasonTime(const Grid& g, const std::vector<Offset>& st, const IceSeries& s)
+  IceSeasonTime(const Geometry& g, const std::vector<Offset>& st, const IceSeries& s)
       : g_(g), st_(st), s_(s) {
     corners_.resize(st.size());
     for (std::size_t o = 0; o < st.size(); ++o)
@@ -107,7 +107,7 @@ class IceSeasonTime {
     return sum * r_km;
   }
 
-  const Grid& g_;
+  const Geometry& g_;
   const std::vector<Offset>& st_;
   IceSeries s_;
   std::vector<std::vector<CellShare>> corners_;  // pixels each step meets only at a corner

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "bidirectional.hpp"
-#include "router.hpp"
+#include "prepared_chart.hpp"
 
 namespace seaway {
 
@@ -74,11 +74,11 @@ class LandmarkBound {
 // Distances from `count` landmarks picked farthest-first from `seed`. The model must be
 // symmetric (max, mean, integral).
 template <class Model>
-Landmarks build_landmarks(PreparedGrid& pg, const Model& model, int count, std::int64_t seed,
+Landmarks build_landmarks(PreparedChart& pg, const Model& model, int count, std::int64_t seed,
                           const SearchControl* cancel = nullptr) {
   pg.check(seed);
   if (count < 1 || count > 64) throw std::invalid_argument("landmark count must be 1 to 64");
-  const std::int64_t n = pg.grid().size();
+  const std::int64_t n = pg.geometry().size();
   std::vector<double> field(static_cast<std::size_t>(n)), nearest(static_cast<std::size_t>(n), inf);
   Landmarks lm;
   lm.table.resize(std::size_t(n) * std::size_t(count));
@@ -115,12 +115,12 @@ struct LandmarkQuery {
   StepBounds b;
   double eps, ulp, cheapest, rmax;
   template <class Model>
-  LandmarkQuery(const PreparedGrid& pg, const Landmarks& lm, const Model& model, std::int64_t start,
+  LandmarkQuery(const PreparedChart& pg, const Landmarks& lm, const Model& model, std::int64_t start,
                 std::int64_t target)
       : b(model.bounds(pg.passability())) {
     pg.check(start);
     pg.check(target);
-    if (lm.table.size() != std::size_t(pg.grid().size()) * lm.count())
+    if (lm.table.size() != std::size_t(pg.geometry().size()) * lm.count())
       throw std::invalid_argument("the landmarks were built for another chart");
     const double rmin = b.per_length ? pg.shortest_step() : 1.0;
     rmax = b.per_length ? pg.longest_step() : 1.0;
@@ -136,27 +136,25 @@ struct LandmarkQuery {
 // in float32 (zero-cost pixels, or steps far cheaper than the tables' rounding), it runs
 // Dijkstra instead; stats.min_cost is then reported as is.
 template <class Model>
-RouteResult route_landmarks(PreparedGrid& pg, const Landmarks& lm, const Model& model,
+RouteResult route_landmarks(PreparedChart& pg, const Landmarks& lm, const Model& model,
                             std::int64_t start, std::int64_t target,
                             const SearchControl* cancel = nullptr) {
   const LandmarkQuery sl(pg, lm, model, start, target);
   const StepBounds& b = sl.b;
   const double eps = sl.eps;
   if (!(eps < 0.5)) return pg.route(model, start, target, 0.0, cancel);
-  // Every step's reduced cost is at least eps x cheapest - ulp >= cheapest x eps / 2.
-  const double width = 0.999999 * 0.5 * eps * sl.cheapest;
-  const double span = 1.000001 * (2 * b.max_rate * sl.rmax + sl.ulp) + 1e-300;
+  // Every step's reduced cost is at least eps x cheapest - ulp >= cheapest x eps / 2; its key
+  // rises by at most twice its cost plus the rounding.
+  QueueChoice q = choose_queue(b, pg.shortest_step(), pg.longest_step(), 0.5 * eps,
+                               b.max_rate + sl.ulp / sl.rmax);
+  if (q.kind == QueueKind::buckets) q.kind = QueueKind::chunked_buckets;  // many sparse buckets
   const LandmarkBound exact_bound(lm, start, target, 1 - eps, lm.count());
-  const CachedBound<LandmarkBound> bound(exact_bound, pg.grid().size());
-  SearchSpec spec{&pg.grid(), &pg.stencil(), pg.land_rule(), 1.0, cancel};
-  PreparedGrid::Lease ws(pg);
-  SearchStats stats;
-  if (span < inf && BucketQueue::buckets_needed(width, span) < 65536)  // many sparse buckets
-    stats = search_with_bound(spec, model, pg.lengths(), pg.clearance(), b.min_rate, start,
-                              target, *ws, ChunkedBucketQueue(width, span), bound);
-  else
-    stats = search_with_bound(spec, model, pg.lengths(), pg.clearance(), b.min_rate, start,
-                              target, *ws, RadixHeap{}, bound);
+  const CachedBound<LandmarkBound> bound(exact_bound, pg.geometry().size());
+  PreparedChart::Lease ws(pg);
+  SearchStats stats = with_queue<false, true>(q, [&](auto heap) {
+    return search_with_bound(pg.steps(), model, start, target, *ws, std::move(heap), bound, cancel);
+  });
+  stats.min_cost = b.min_rate;
   stats.state_bytes += pg.clearance_bytes() + bound.resident_bytes();
   return pg.result(*ws, start, target, stats);
 }
@@ -166,7 +164,7 @@ RouteResult route_landmarks(PreparedGrid& pg, const Landmarks& lm, const Model& 
 // bound moves by at most a step's cost plus one ulp across a step, so every reduced cost lies
 // between eps x cheapest - ulp >= eps x cheapest / 2 and 2 x the step's cost + ulp.
 template <class Model>
-RouteResult route_landmarks_bidirectional(PreparedGrid& pg, const Landmarks& lm, const Model& model,
+RouteResult route_landmarks_bidirectional(PreparedChart& pg, const Landmarks& lm, const Model& model,
                                           std::int64_t start, std::int64_t target,
                                           const SearchControl* cancel = nullptr) {
   const LandmarkQuery sl(pg, lm, model, start, target);

@@ -12,21 +12,47 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <new>
 #include <vector>
 
-#include "grid.hpp"
+#include "geometry.hpp"
 
 namespace seaway {
+
+namespace detail {
+// Zero-filled memory from calloc (the turn search's states): pages are mapped when first written.
+struct FreeDeleter {
+  void operator()(void* p) const { std::free(p); }
+};
+template <class T>
+std::unique_ptr<T[], FreeDeleter> zeroed(std::size_t n) {
+  void* p = std::calloc(n, sizeof(T));
+  if (!p) throw std::bad_alloc();
+  return std::unique_ptr<T[], FreeDeleter>(static_cast<T*>(p));
+}
+// Costs are stored as bits(d) ^ bits(inf), so zero-filled memory reads as inf.
+inline std::uint64_t bits_of(double d) {
+  std::uint64_t b;
+  std::memcpy(&b, &d, 8);
+  return b;
+}
+inline double from_bits(std::uint64_t b) {
+  double d;
+  std::memcpy(&d, &b, 8);
+  return d;
+}
+}  // namespace detail
 
 class LazyLabels {
  public:
   explicit LazyLabels(std::int64_t n)
       : n_(std::size_t(n)), cost_(map(n_ * 8)), pred_(map(n_)), written_((n_ >> 9) + 1) {}
   ~LazyLabels() {
-    munmap(cost_, n_ * 8);
-    munmap(pred_, n_);
+    munmap(cost_, n_ > 0 ? n_ * 8 : 1);
+    munmap(pred_, n_ > 0 ? n_ : 1);
   }
   LazyLabels(const LazyLabels&) = delete;
   LazyLabels& operator=(const LazyLabels&) = delete;
@@ -50,7 +76,7 @@ class LazyLabels {
   int pred(std::int64_t v) const { return int(static_cast<const std::uint8_t*>(pred_)[v]) - 1; }
 
   // Back to "nothing reached" for the next search on the same chart, keeping the pages (a pool
-  // of PreparedGrid): the cost pages this search wrote are zeroed, so the next search writes
+  // of PreparedChart): the cost pages this search wrote are zeroed, so the next search writes
   // them without page faults. Predecessors are not: a search reads only those it wrote.
   void clear() {
     for (std::size_t p = 0; p < written_.size(); ++p)
@@ -62,7 +88,7 @@ class LazyLabels {
   }
   // Give every page back to the kernel (zero pages again on the next write).
   void release() {
-    madvise(cost_, n_ * 8 ? n_ * 8 : 1, MADV_DONTNEED);
+    madvise(cost_, n_ > 0 ? n_ * 8 : 1, MADV_DONTNEED);
     madvise(pred_, n_ ? n_ : 1, MADV_DONTNEED);
     std::fill(written_.begin(), written_.end(), std::uint8_t(0));
   }

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "grid.hpp"
+#include "geometry.hpp"
 
 namespace seaway {
 
@@ -32,7 +32,7 @@ class LegPricer {
   // The chart's cost per unit length, float32 (uf) or float64 (ud), read in place, and its
   // land mask (or null): a pixel is impassable where land is set or its cost is NaN, inf or
   // negative (the engine's rule).
-  LegPricer(const float* uf, const double* ud, const std::uint8_t* land, const Grid& g, LegRule rule,
+  LegPricer(const float* uf, const double* ud, const std::uint8_t* land, const Geometry& g, LegRule rule,
             int half)
       : uf_(uf), ud_(ud), land_(land), g_(g), rule_(rule), half_(half) {}
 
@@ -202,7 +202,7 @@ class LegPricer {
   const float* uf_;
   const double* ud_;
   const std::uint8_t* land_;
-  Grid g_;
+  Geometry g_;
   LegRule rule_;
   int half_;
   // Scratch reused across calls (one pricer per thread).

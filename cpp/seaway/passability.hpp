@@ -9,7 +9,7 @@
 #include <limits>
 #include <thread>
 
-#include "grid.hpp"
+#include "geometry.hpp"
 
 namespace seaway {
 
@@ -25,18 +25,18 @@ struct Passability {
 // two passes, so on a chart of a million pixels or more each pass runs on two threads (the
 // preparation is a tenth of a fresh chart's route otherwise); the result does not depend on it.
 template <class T>
-Passability compute_clearance(const Grid& g, const T* cost, const std::uint8_t* land, int cap,
+Passability compute_clearance(const Geometry& g, const T* cost, const std::uint8_t* land, int cap,
                               std::uint8_t* clearance, std::uint8_t* scratch) {
   const std::int64_t R = g.rows, C = g.cols;
   // Pass 1: distance along the row to the nearest impassable pixel of that row.
   auto rows_pass1 = [&](std::int64_t r_begin, std::int64_t r_end, Passability& out) {
     double lo = out.min_cost, hi = out.max_cost;  // locals: kept in registers (a byte store
     std::int64_t passable = 0;                    // could alias what the lambda captured)
-    const std::int64_t C = g.cols;
+    const std::int64_t cols = g.cols;  // a local: see above
     for (std::int64_t r = r_begin; r < r_end; ++r) {
-      const T* u = cost + r * C;
-      const std::uint8_t* l = land ? land + r * C : nullptr;
-      std::uint8_t* h = scratch + r * C;
+      const T* u = cost + r * cols;
+      const std::uint8_t* l = land ? land + r * cols : nullptr;
+      std::uint8_t* h = scratch + r * cols;
       auto blocked = [&](std::int64_t c) {
         const double x = double(u[c]);
         return !(x >= 0 && x < std::numeric_limits<double>::infinity()) || (l && l[c]);
@@ -45,9 +45,9 @@ Passability compute_clearance(const Grid& g, const T* cost, const std::uint8_t* 
       // blocked pixel of the row, one period back.
       std::int64_t last = -4 * std::int64_t(cap);
       if (g.wrap)
-        for (std::int64_t c = C - 1; c >= 0; --c)
-          if (blocked(c)) { last = c - C; break; }
-      for (std::int64_t c = 0; c < C; ++c) {
+        for (std::int64_t c = cols - 1; c >= 0; --c)
+          if (blocked(c)) { last = c - cols; break; }
+      for (std::int64_t c = 0; c < cols; ++c) {
         if (blocked(c)) {
           last = c;
         } else {
@@ -58,11 +58,11 @@ Passability compute_clearance(const Grid& g, const T* cost, const std::uint8_t* 
         }
         h[c] = std::uint8_t(std::min<std::int64_t>(c - last, cap));
       }
-      last = 4 * std::int64_t(cap) + C;
+      last = 4 * std::int64_t(cap) + cols;
       if (g.wrap)
-        for (std::int64_t c = 0; c < C; ++c)
-          if (h[c] == 0) { last = c + C; break; }
-      for (std::int64_t c = C - 1; c >= 0; --c) {
+        for (std::int64_t c = 0; c < cols; ++c)
+          if (h[c] == 0) { last = c + cols; break; }
+      for (std::int64_t c = cols - 1; c >= 0; --c) {
         if (h[c] == 0) last = c;
         h[c] = std::uint8_t(std::min<std::int64_t>(h[c], last - c));
       }

@@ -96,7 +96,8 @@ inline double refine(const LegPricer& seg, std::vector<Point>& w, std::vector<do
           costs[k - 1] = a;
           costs[k] = b;
           here = a + b;
-          moved = moved_any[k] = true;
+          moved_any[k] = true;
+          moved = true;
           break;
         }
       }

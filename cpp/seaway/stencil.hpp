@@ -3,6 +3,7 @@
 // between pixels (for the line-integral cost). Pure geometry in pixel-index space.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <numeric>
@@ -13,6 +14,11 @@
 namespace seaway {
 
 enum class Directions { full, unique, axis };
+
+// Which pixels a step must keep clear of. `segment`: both ends and every pixel whose closed
+// square the closed straight segment touches (the papers' rule: no leaking through diagonal
+// coastlines, no jumping over land). `ends`: only the two ends (scikit-image's rule).
+enum class LandRule { segment, ends };
 
 struct CellShare {
   int di, dj;       // pixel relative to the step's origin
@@ -76,6 +82,13 @@ inline std::vector<Offset> make_stencil(int k, Directions dirs) {
       out.push_back(std::move(off));
     }
   return out;
+}
+
+// Largest |di| or |dj| of the stencil's offsets.
+inline int half_width(const std::vector<Offset>& st) {
+  int h = 0;
+  for (const Offset& o : st) h = std::max({h, std::abs(o.di), std::abs(o.dj)});
+  return h;
 }
 
 }  // namespace seaway

@@ -1,52 +1,90 @@
-// The steps out of one pixel, for searches other than search.hpp's (the turn penalty's
-// expanded states, the least-danger labels), under the same rules as search.hpp.
+// The steps of the raster graph at one pixel, for every search (plain, bidirectional, turn
+// penalty, least danger): written once here. A step along offset o runs from pixel `from` to
+// `from + o`. It exists when both ends lie on the chart (columns wrap on 360-degree charts),
+// both are passable and, under LandRule::segment, no pixel its closed segment touches is
+// impassable. A pixel away from the border whose land clearance exceeds the stencil's
+// half-width has every step (the fast path: no test at all).
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "router.hpp"
+#include "geometry.hpp"
+#include "stencil.hpp"
 
 namespace seaway {
 
-// Calls f(w, o, cell) for every step the chart allows out of pixel v: w the pixel reached along
-// stencil offset o, cell(m) the flat index of the m-th pixel of the offset's length shares.
-// The same rules as search.hpp: inside the grid (columns wrap on global charts), both ends
-// passable and, under LandRule::segment, no touched pixel impassable.
-template <class F>
-void for_each_step(const PreparedGrid& pg, std::int64_t v, F&& f) {
-  const Grid& g = pg.grid();
-  const std::vector<Offset>& st = pg.stencil();
-  const std::uint8_t* clear = pg.clearance();
-  const std::int64_t R = g.rows, C = g.cols, K = std::int64_t(st.size());
-  const std::int64_t row = v / C, col = v - row * C;
-  const int h = pg.half_width();
-  if (row >= h && row < R - h && col >= h && col < C - h && clear[v] > h) {
+class StepEnumerator {
+ public:
+  // `clear` comes from compute_clearance() with cap = half-width + 1. The arguments are read
+  // in place and must outlive the enumerator.
+  StepEnumerator(const Geometry& g, const std::vector<Offset>& st, const Geometry::Lengths& lengths,
+                 const std::uint8_t* clear, LandRule rule)
+      : g_(&g), st_(&st), lengths_(&lengths), clear_(clear), rule_(rule), half_(half_width(st)) {
+    for (const Offset& o : st) flat_.push_back(o.di * g.cols + o.dj);
+  }
+
+  const Geometry& geometry() const { return *g_; }
+  const std::vector<Offset>& stencil() const { return *st_; }
+  const std::uint8_t* clearance() const { return clear_; }
+
+  // Calls f(w, o, from, to, r, cell) for every step with v at its start (Backward: at its end):
+  // w its other end, o its offset, from -> to the step as the model prices it, r its length and
+  // cell(m) the flat index of the m-th pixel of the offset's length shares.
+  template <bool Backward = false, class F>
+  __attribute__((always_inline)) void each(std::int64_t v, F&& f) const {
+    // Locals, not members: the callback's byte stores could alias members, locals stay in registers.
+    const std::int64_t R = g_->rows, C = g_->cols, K = std::int64_t(flat_.size());
+    const int h = half_;
+    const Offset* st = st_->data();
+    const std::int64_t* flat = flat_.data();
+    const std::uint8_t* clear = clear_;
+    const std::int64_t row = v / C, col = v - row * C;
+    if (row >= h && row < R - h && col >= h && col < C - h && clear[v] > h) {
+      const double* len = lengths_->row(row);
+      for (std::int64_t o = 0; o < K; ++o) {
+        const auto& shares = st[o].shares;
+        const std::int64_t from = Backward ? v - flat[o] : v, w = Backward ? from : v + flat[o];
+        const double r = Backward ? lengths_->row(row - st[o].di)[o] : len[o];
+        f(w, o, from, Backward ? v : w, r,
+          [&](std::size_t m) { return from + shares[m].di * C + shares[m].dj; });
+      }
+      return;
+    }
+    const bool wrap = g_->wrap;
     for (std::int64_t o = 0; o < K; ++o) {
-      const Offset& off = st[std::size_t(o)];
-      f(v + off.di * C + off.dj, o, [&](std::size_t m) { return v + off.shares[m].di * C + off.shares[m].dj; });
+      const Offset& off = st[o];
+      // The step runs from (r0, c0) to (r0 + di, c0 + dj); w is its end other than v.
+      const std::int64_t r0 = Backward ? row - off.di : row;
+      std::int64_t c0 = Backward ? col - off.dj : col;
+      const std::int64_t rw = Backward ? r0 : row + off.di;
+      std::int64_t cw = Backward ? c0 : col + off.dj;
+      if (rw < 0 || rw >= R) continue;
+      if (wrap) cw = g_->wrap_col(cw);
+      else if (cw < 0 || cw >= C) continue;
+      if (wrap) c0 = g_->wrap_col(c0);
+      const std::int64_t w = rw * C + cw;
+      if (clear[w] == 0) continue;
+      auto at = [&](int di, int dj) { return (r0 + di) * C + (wrap ? g_->wrap_col(c0 + dj) : c0 + dj); };
+      if (rule_ == LandRule::segment) {
+        bool blocked = false;
+        for (const CellShare& t : off.touched)
+          if (clear[at(t.di, t.dj)] == 0) { blocked = true; break; }
+        if (blocked) continue;
+      }
+      f(w, o, r0 * C + c0, Backward ? v : w, lengths_->row(r0)[o],
+        [&](std::size_t m) { return at(off.shares[m].di, off.shares[m].dj); });
     }
-    return;
   }
-  auto wrap_col = [&](std::int64_t c) { return c < 0 ? c + C : (c >= C ? c - C : c); };
-  for (std::int64_t o = 0; o < K; ++o) {
-    const Offset& off = st[std::size_t(o)];
-    const std::int64_t r2 = row + off.di;
-    std::int64_t c2 = col + off.dj;
-    if (r2 < 0 || r2 >= R) continue;
-    if (g.wrap) c2 = wrap_col(c2);
-    else if (c2 < 0 || c2 >= C) continue;
-    const std::int64_t w = r2 * C + c2;
-    if (clear[w] == 0) continue;
-    auto at = [&](int di, int dj) { return (row + di) * C + (g.wrap ? wrap_col(col + dj) : col + dj); };
-    if (pg.land_rule() == LandRule::segment) {
-      bool blocked = false;
-      for (const CellShare& t : off.touched)
-        if (clear[at(t.di, t.dj)] == 0) { blocked = true; break; }
-      if (blocked) continue;
-    }
-    f(w, o, [&](std::size_t m) { return at(off.shares[m].di, off.shares[m].dj); });
-  }
-}
+
+ private:
+  const Geometry* g_;
+  const std::vector<Offset>* st_;
+  const Geometry::Lengths* lengths_;
+  const std::uint8_t* clear_;
+  LandRule rule_;
+  int half_;
+  std::vector<std::int64_t> flat_;  // each offset's step in flat pixel index
+};
 
 }  // namespace seaway

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "cost_models.hpp"
-#include "grid.hpp"
+#include "geometry.hpp"
 #include "stencil.hpp"
 
 namespace seaway {
@@ -33,7 +33,7 @@ struct TimeWindows {
 template <class Inner>
 class ZonedTime {
  public:
-  ZonedTime(const Inner& inner, const TimeWindows& z, const Grid& g, const std::vector<Offset>& st)
+  ZonedTime(const Inner& inner, const TimeWindows& z, const Geometry& g, const std::vector<Offset>& st)
       : inner_(inner), z_(z), g_(g), st_(st) {}
 
   auto bounds(const Passability& p) const { return inner_.bounds(p); }
@@ -90,7 +90,7 @@ class ZonedTime {
  private:
   const Inner& inner_;
   const TimeWindows& z_;
-  const Grid& g_;
+  const Geometry& g_;
   const std::vector<Offset>& st_;
 };
 
@@ -102,10 +102,10 @@ struct Zoned {
 
   template <class G, class F>
   auto visit(const G& g, F&& f) const {
-    if (std::int64_t(zones.mask.size()) != g.grid().size() || zones.near.size() != zones.mask.size())
+    if (std::int64_t(zones.mask.size()) != g.geometry().size() || zones.near.size() != zones.mask.size())
       throw std::invalid_argument("the zone mask must have one value per pixel of the chart");
     return base.visit(g, [&](const auto& inner) {
-      return f(ZonedTime<std::decay_t<decltype(inner)>>(inner, zones, g.grid(), g.stencil()));
+      return f(ZonedTime<std::decay_t<decltype(inner)>>(inner, zones, g.geometry(), g.stencil()));
     });
   }
 
@@ -117,7 +117,7 @@ struct Zoned {
     for (std::size_t i = 0; i < out.offsets.size(); ++i) {
       const std::int64_t v = out.path[i], w = out.path[i + 1];
       const int o = out.offsets[i];
-      const double r = g.lengths().row(v / g.grid().cols)[o], t = out.cumulative[i];
+      const double r = g.lengths().row(v / g.geometry().cols)[o], t = out.cumulative[i];
       auto no_cell = [](std::size_t) { return std::int64_t(0); };
       const double h = m.inner()(v, w, o, r, t, no_cell);
       const std::uint8_t bits = m.bits(v, w, o);

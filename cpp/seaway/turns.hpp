@@ -25,121 +25,23 @@
 #include <stdexcept>
 #include <vector>
 
-#include "router.hpp"
-#include "steps.hpp"
+#include "prepared_chart.hpp"
+#include "turn_penalty.hpp"
 
 namespace seaway {
 
-// Piecewise-linear penalty of the course change: cost[i] at angle_deg[i] (ascending, from 0 to
-// 180), linear between, in the route's cost units. Per degree p: {0, 180} -> {0, 180 p}.
-struct TurnPenalty {
-  std::vector<double> angle_deg, cost;
-
-  double operator()(double a) const {
-    if (a <= angle_deg.front()) return cost.front();
-    for (std::size_t i = 1; i < angle_deg.size(); ++i)
-      if (a <= angle_deg[i]) {
-        const double slope = (cost[i] - cost[i - 1]) / (angle_deg[i] - angle_deg[i - 1]);
-        return slope * (a - angle_deg[i - 1]) + cost[i - 1];
-      }
-    return cost.back();
-  }
-};
-
-// Unit direction of every offset at every row (one row on planar grids), for turn angles.
-class TurnAngles {
- public:
-  TurnAngles(const Grid& g, const std::vector<Offset>& st) : n_(std::int64_t(st.size())) {
-    rows_ = g.geographic ? g.rows : 1;
-    dir_.resize(std::size_t(rows_ * n_ * 2));
-    for (std::int64_t r = 0; r < rows_; ++r)
-      for (std::int64_t o = 0; o < n_; ++o) {
-        const Offset& s = st[std::size_t(o)];
-        const double y = g.geographic ? s.di * g.dlat : s.di * g.dy;
-        const double x = g.geographic ? s.dj * g.dlon * std::cos(g.lat(r) * deg) : s.dj * g.dx;
-        const double len = std::hypot(y, x);
-        dir_[std::size_t((r * n_ + o) * 2)] = y / len;
-        dir_[std::size_t((r * n_ + o) * 2 + 1)] = x / len;
-      }
-  }
-  // Degrees between offsets o1 and o2 at row r.
-  double operator()(std::int64_t r, std::int64_t o1, std::int64_t o2) const {
-    if (o1 == o2) return 0;
-    const double* a = &dir_[std::size_t(((rows_ == 1 ? 0 : r) * n_ + o1) * 2)];
-    const double* b = &dir_[std::size_t(((rows_ == 1 ? 0 : r) * n_ + o2) * 2)];
-    return std::acos(std::clamp(a[0] * b[0] + a[1] * b[1], -1.0, 1.0)) / deg;
-  }
-  std::size_t bytes() const { return dir_.capacity() * sizeof(double); }
-
- private:
-  std::int64_t n_, rows_;
-  std::vector<double> dir_;
-};
-
-// The penalty of every (incoming, outgoing) offset pair per row (one row on planar grids), so
-// a relaxation reads a number instead of taking an arccosine; computed on the fly when the
-// table would pass 64 MB (lat/lon grids with wide stencils).
-class TurnCosts {
- public:
-  TurnCosts(const Grid& g, const std::vector<Offset>& st, const TurnPenalty& p)
-      : angles_(g, st), p_(p), k_(std::int64_t(st.size())), rows_(g.geographic ? g.rows : 1) {
-    if (double(rows_) * double(k_ * k_) * sizeof(double) > 64e6) return;
-    table_.resize(std::size_t(rows_ * k_ * k_));
-    for (std::int64_t r = 0; r < rows_; ++r)
-      for (std::int64_t a = 0; a < k_; ++a)
-        for (std::int64_t b = 0; b < k_; ++b) table_[std::size_t((r * k_ + a) * k_ + b)] = p(angles_(r, a, b));
-  }
-  double operator()(std::int64_t row, std::int64_t in, std::int64_t o) const {
-    if (table_.empty()) return p_(angles_(row, in, o));
-    return table_[std::size_t(((rows_ == 1 ? 0 : row) * k_ + in) * k_ + o)];
-  }
-  double largest() const { return *std::max_element(p_.cost.begin(), p_.cost.end()); }
-  std::size_t bytes() const { return angles_.bytes() + table_.capacity() * sizeof(double); }
-
- private:
-  TurnAngles angles_;
-  const TurnPenalty& p_;
-  std::int64_t k_, rows_;
-  std::vector<double> table_;
-};
-
-namespace detail {
-struct FreeDeleter {
-  void operator()(void* p) const { std::free(p); }
-};
-template <class T>
-std::unique_ptr<T[], FreeDeleter> zeroed(std::size_t n) {
-  void* p = std::calloc(n, sizeof(T));
-  if (!p) throw std::bad_alloc();
-  return std::unique_ptr<T[], FreeDeleter>(static_cast<T*>(p));
-}
-// Costs are stored as bits(d) ^ bits(inf), so zero-filled memory reads as inf.
-inline std::uint64_t bits_of(double d) {
-  std::uint64_t b;
-  std::memcpy(&b, &d, 8);
-  return b;
-}
-inline double from_bits(std::uint64_t b) {
-  double d;
-  std::memcpy(&d, &b, 8);
-  return d;
-}
-}  // namespace detail
-
 // Least-cost route from `start` to `target` with turn penalties under `model`. `incoming`: the
 // offset of the step that reached the start (charged at the first turn), or -1 for none.
-// weight 0: Dijkstra, 1: A*, > 1: weighted A*. The queue is chosen as in PreparedGrid::run:
-// buckets when every step (and so every step plus a penalty >= 0) costs at least a bucket's
-// width, exact A* then with its bound scaled by 0.95; a radix heap for other monotone keys; a
-// 4-ary heap for weighted A*.
+// weight 0: Dijkstra, 1: A*, > 1: weighted A*. The queue is chosen as in PreparedChart::run
+// (every step plus a penalty >= 0 costs at least a step): exact A* in buckets with its bound
+// scaled by 1 - astar_bucket_eps.
 template <class Model>
-RouteResult route_with_turns(PreparedGrid& pg, const Model& model, const TurnPenalty& turn,
+RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPenalty& turn,
                              std::int64_t start, std::int64_t target, int incoming, double weight,
                              const SearchControl* control = nullptr) {
-  const Grid& g = pg.grid();
+  const Geometry& g = pg.geometry();
   const std::vector<Offset>& st = pg.stencil();
-  const Grid::Lengths& lengths = pg.lengths();
-  const std::int64_t C = g.cols, K = std::int64_t(st.size()), n = g.size();
+  const std::int64_t K = std::int64_t(st.size()), n = g.size();
   if (start < 0 || start >= n || target < 0 || target >= n)
     throw std::out_of_range("pixel index outside the grid");
   if (incoming >= K) throw std::invalid_argument("incoming step is not a stencil offset");
@@ -147,15 +49,14 @@ RouteResult route_with_turns(PreparedGrid& pg, const Model& model, const TurnPen
     throw std::invalid_argument("pixels x stencil offsets must stay below 2**32 for the turn penalty");
   const TurnCosts penalty(g, st, turn);
   const StepBounds b = model.bounds(pg.passability());
-  const auto [rmin_it, rmax_it] = std::minmax_element(lengths.table.begin(), lengths.table.end());
-  const double rmin = b.per_length ? *rmin_it : 1.0, rmax = b.per_length ? *rmax_it : 1.0;
   const bool astar = weight == 1 && b.per_length;
-  const double eps = astar ? 0.05 : 1.0;
-  const double width = 0.999999 * eps * b.min_rate * rmin;
+  const double eps = astar ? astar_bucket_eps : 1.0;
   // The largest key increase of one step: its cost and penalty, plus the bound's largest drop
   // (exact A*'s bound below drops by at most a step's cost).
-  const double span = 1.000001 * (b.max_rate + (astar ? b.max_rate : 0.0)) * rmax + penalty.largest() + 1e-300;
-  const bool buckets = weight <= 1 && width > 0 && span < inf && BucketQueue::buckets_needed(width, span) < 65536;
+  QueueChoice q = choose_queue(b, pg.shortest_step(), pg.longest_step(), eps, astar ? b.max_rate : 0.0,
+                               penalty.largest());
+  if (weight > 1) q.kind = QueueKind::quaternary;
+  const bool buckets = q.kind == QueueKind::buckets;
   const bool use_bound = weight > 0 && b.per_length;
   // A* in a heap: the bound is consistent; shave it by 1e-9 against rounding. In buckets: 0.95.
   const double scale = weight != 1 ? weight : (buckets ? 1 - eps : 1 - 1e-9);
@@ -167,7 +68,7 @@ RouteResult route_with_turns(PreparedGrid& pg, const Model& model, const TurnPen
   // consistent (penalties are >= 0), far tighter than the straight-line bound in ice (the
   // default chart: 40 s -> 6 s), and costs a short search for a short leg. It holds one more
   // workspace while the search runs.
-  std::optional<PreparedGrid::Lease> field;
+  std::optional<PreparedChart::Lease> field;
   const double* to_go = nullptr;
   double radius = 0;
   std::size_t field_bytes = 0;
@@ -204,10 +105,9 @@ RouteResult route_with_turns(PreparedGrid& pg, const Model& model, const TurnPen
   // the new states record as their predecessor (0 from the start, else 1 + in).
   auto run = [&](auto heap) {
     auto expand = [&](std::int64_t v, std::int64_t in, double dv, std::uint8_t code) {
-      const std::int64_t row = v / C;
-      const double* len = lengths.row(row);
-      for_each_step(pg, v, [&](std::int64_t w, std::int64_t o, auto&& cell) {
-        const double c = model(v, w, int(o), len[o], dv, cell);
+      const std::int64_t row = v / g.cols;
+      pg.steps().each(v, [&](std::int64_t w, std::int64_t o, std::int64_t, std::int64_t, double r, auto&& cell) {
+        const double c = model(v, w, int(o), r, dv, cell);
         if (!(c < inf)) return;
         const double nd = dv + c + (in >= 0 ? penalty(row, in, o) : 0.0);
         const std::int64_t s = w * K + o;
@@ -230,10 +130,7 @@ RouteResult route_with_turns(PreparedGrid& pg, const Model& model, const TurnPen
       const double ds = dist(s);
       if (std::signbit(ds)) continue;
       set(s, -ds);
-      if ((++stats.settled & 4095) == 0 && control) {  // progress and Ctrl-C, as search.hpp
-        control->settled.store(stats.settled, std::memory_order_relaxed);
-        if (control->cancel.load(std::memory_order_relaxed)) throw Cancelled();
-      }
+      count_settled(stats.settled, control);
       const std::int64_t v = s / K;
       if (v == target) { reached = s; break; }
       expand(v, s - v * K, ds, std::uint8_t(s - v * K + 1));
@@ -249,9 +146,7 @@ RouteResult route_with_turns(PreparedGrid& pg, const Model& model, const TurnPen
     out.cumulative = {0.0};
     return out;
   }
-  if (weight > 1) run(QuaternaryHeap{});
-  else if (buckets) run(BucketQueue(width, span));
-  else run(RadixHeap{});
+  with_queue<true, false>(q, run);
   stats.state_bytes = states * 9 + queue_bytes + penalty.bytes() + field_bytes;
   out.stats = stats;
   if (reached < 0) return out;
@@ -268,9 +163,7 @@ RouteResult route_with_turns(PreparedGrid& pg, const Model& model, const TurnPen
     out.path.push_back(v);
     out.cumulative.push_back(std::fabs(dist(s)));
     out.offsets.push_back(int(o));
-    std::int64_t r = v / C - st[std::size_t(o)].di, c = v % C - st[std::size_t(o)].dj;
-    if (g.wrap) c = (c + C) % C;
-    const std::int64_t u = r * C + c;
+    const std::int64_t u = g.step(v, st[std::size_t(o)], -1);
     const int p = pred[std::size_t(s)];
     if (p == 0) { out.path.push_back(u); out.cumulative.push_back(0.0); break; }
     s = u * K + (p - 1);

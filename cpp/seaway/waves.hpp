@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "cost_models.hpp"
-#include "grid.hpp"
+#include "geometry.hpp"
 
 namespace seaway {
 
@@ -25,12 +25,12 @@ inline double ramp08(double x) { return std::clamp((x - 0.8) / 0.2, 0.0, 1.0); }
 // The danger u in [1, 10]; alpha in radians.
 inline double wave_danger(double hs_m, double length_m, double alpha, double ship_length_m,
                           double speed_kn) {
-  const double off = std::fabs(std::fabs(std::remainder(alpha, 2 * 3.14159265358979323846)) -
-                               3.14159265358979323846) / deg;  // degrees away from following
+  const double off = std::fabs(std::fabs(std::remainder(alpha, 2 * pi)) -
+                               pi) / deg;  // degrees away from following
   const double sector = std::clamp((55.0 - off) / 10.0, 0.0, 1.0);
   if (sector == 0) return 1;
   const double high = ramp08(length_m / (0.8 * ship_length_m)) * ramp08(hs_m / (0.04 * ship_length_m));
-  const double surf = ramp08(speed_kn * std::cos(3.14159265358979323846 - alpha) /
+  const double surf = ramp08(speed_kn * std::cos(pi - alpha) /
                              (1.8 * std::sqrt(ship_length_m)));
   return 1 + 9 * sector * std::max(high, surf);
 }
@@ -39,7 +39,7 @@ class WaveDangerCost {
  public:
   // Fields (rows x cols, float32): significant height (m), direction the waves come from
   // (degrees true), mean period (s).
-  WaveDangerCost(const Grid& g, const std::vector<Offset>& st, const float* hs,
+  WaveDangerCost(const Geometry& g, const std::vector<Offset>& st, const float* hs,
                  const float* from, const float* period, double ship_length_m, double speed_kn)
       : g_(g), course_(g.step_courses(st)), n_off_(std::int64_t(st.size())), hs_(hs),
         from_(from), period_(period), L_(ship_length_m), v_(speed_kn) {}
@@ -54,11 +54,11 @@ class WaveDangerCost {
 
  private:
   double danger(std::int64_t p, double course) const {
-    const double length = 9.80665 * period_[p] * period_[p] / (2 * 3.14159265358979323846);
+    const double length = 9.80665 * period_[p] * period_[p] / (2 * pi);
     return wave_danger(hs_[p], length, from_[p] * deg - course, L_, v_);
   }
 
-  const Grid& g_;
+  const Geometry& g_;
   std::vector<double> course_;
   std::int64_t n_off_;
   const float *hs_, *from_, *period_;

@@ -11,14 +11,10 @@
 #include <vector>
 
 #include "cost_models.hpp"
-#include "grid.hpp"
+#include "geometry.hpp"
 #include "stencil.hpp"
 
 namespace seaway {
-
-constexpr double km_per_nm = 1.852;
-constexpr double knots_per_ms = 3600.0 / 1852.0;
-constexpr double pi = 3.14159265358979323846;
 
 // Fields on the chart grid, frames of rows x cols each (C order), float32; any may be null.
 struct Forecast {
@@ -71,7 +67,7 @@ inline double speed_over_ground_kn(double v, double vt, double q) {
 
 class WeatherTime {
  public:
-  WeatherTime(const Grid& g, const std::vector<Offset>& st, const Forecast& f, const Vessel& v,
+  WeatherTime(const Geometry& g, const std::vector<Offset>& st, const Forecast& f, const Vessel& v,
               double best_speed_kn)
       : g_(g), f_(f), v_(v), n_off_(std::int64_t(st.size())), best_kn_(best_speed_kn) {
     course_ = g.step_courses(st);
@@ -130,7 +126,7 @@ class WeatherTime {
   }
 
  private:
-  const Grid& g_;
+  const Geometry& g_;
   Forecast f_;
   Vessel v_;
   std::int64_t n_off_;

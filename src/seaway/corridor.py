@@ -14,14 +14,15 @@ Two graphs:
   chart with dx = the layer spacing and dy = the row spacing. Off-track rows are longer or
   shorter than the layer spacing (rows converge and diverge), so the engine's step lengths are
   approximate; the route it picks is then re-costed with exact great-circle lengths, and
-  stats["planar_length_error"] gives the largest relative error of the engine's step lengths on
-  that route (~(row offset / R)^2 and the track's curvature: below 1 % for corridors a few hundred
-  nm wide).
+  stats.corridor.planar_length_error gives the largest relative error of the engine's step
+  lengths on that route (~(row offset / R)^2 and the track's curvature: below 1 % for corridors
+  a few hundred nm wide); stats.corridor.planar_cost is the engine's cost on the planar grid.
 Edge cost: edge_cost="max": max(u_a, u_b) x km; "mean": (u_a + u_b)/2 x km (Grinyak et al. 2022 and Grinyak et al. 2018),
 priced by the engine's models (seaway.models.EdgeCost.pair_costs)."""
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -33,6 +34,7 @@ from .engine.api import route as engine_route
 from .errors import NoRouteError
 from .models.base import EdgeCost
 from .result.route import Route
+from .result.stats import CorridorStencil, RouteStats
 
 
 @dataclass
@@ -91,12 +93,11 @@ class Corridor:
         rows, layers = u.shape
         if steps == "forward":
             path = self._forward(u, env, max_shift or rows, model, checks)
-            extra = {}
+            stats = RouteStats()  # dynamic programming: no search figures
         elif steps == "stencil":
             r = engine_route(u, (self.m, 0), (self.m, layers - 1), dx=self.leg_km, dy=self.row_km,
                              neighbourhood=neighbourhood, edge_cost=edge_cost)
-            path = r.pixels
-            extra = dict(r.stats, planar_cost=r.cost)
+            path, stats = r.pixels, r.stats
         else:
             raise ValueError(f"steps must be 'forward' or 'stencil', got {steps!r}")
         chart = as_chart(u, dx=self.leg_km, dy=self.row_km)
@@ -106,9 +107,10 @@ class Corridor:
         if steps == "stencil":
             d = np.diff(path, axis=0)
             planar = np.hypot(d[:, 0] * self.row_km, d[:, 1] * self.leg_km)
-            extra["planar_length_error"] = float(np.max(np.abs(planar / km - 1))) if len(km) else 0.0
+            error = float(np.max(np.abs(planar / km - 1))) if len(km) else 0.0
+            stats = dataclasses.replace(stats, corridor=CorridorStencil(r.cost, error))
         return Route(chart=chart, cost=float(costs.sum()), pixels=path, method=f"corridor-{steps}",
-                     neighbourhood=neighbourhood, model=model, stats=extra, latlon=ll,
+                     neighbourhood=neighbourhood, model=model, stats=stats, latlon=ll,
                      step_costs=costs, speed_kn=speed_kn, name="great-circle corridor route")
 
     def _forward(self, u, env, max_shift, model, checks):

@@ -152,7 +152,13 @@ def test_via_points_each_leg_optimal():
     legs = [chart.route(p, q, method="dijkstra") for p, q in [(a, v1), (v1, v2), (v2, b)]]
     assert r.cost == pytest.approx(sum(leg.cost for leg in legs), rel=1e-12)
     assert r.pixels.tolist() == legs[0].pixels.tolist() + legs[1].pixels[1:].tolist() + legs[2].pixels[1:].tolist()
-    assert r.stats["via_pixels"] == [v1, v2]
+    assert list(r.stats.constraints.via_pixels) == [v1, v2]
+    assert r.stats.constraints.turn_penalty is None
+    # the legs' search figures combined: settled adds up, the peaks take the larger
+    figures = [leg.stats.search for leg in legs]
+    assert r.stats.search.settled == sum(f.settled for f in figures)
+    assert r.stats.search.heap_peak == max(f.heap_peak for f in figures)
+    assert r.stats.search.state_bytes == max(f.state_bytes for f in figures)
     assert r.cost > chart.route(a, b).cost
 
 

@@ -59,9 +59,14 @@ def test_storm_detour(pacific, steps):
     assert 4445 < r.length / 1.852 < 4500
     assert np.all(np.isfinite(_storm(r.coords[:, 0], r.coords[:, 1])))
     if steps == "stencil":
-        assert r.stats["planar_length_error"] < 0.01
+        fit = r.stats.corridor
+        assert fit.planar_length_error < 0.01
+        # the same path priced with planar lengths: each step off by at most that error
+        assert abs(fit.planar_cost - r.cost) <= fit.planar_length_error * r.cost
+        assert fit.planar_cost != r.cost and r.stats.search.settled > 0
     else:
         assert np.all(np.abs(np.diff(r.pixels[:, 1])) == 1)  # layer to next layer only
+        assert r.stats.search is None and r.stats.corridor is None  # dynamic programming
 
 
 def test_environment_from_a_dataarray(pacific):

@@ -40,13 +40,25 @@ def test_closed_wall_makes_the_ship_wait_until_it_opens():
                    zones=[Zone(WALL, active=(0.0, 10.0), name="wall")])
     rest = min(km_route((LAT[row], LON[14]), B).cost for row in range(21)) / KMH
     assert r.cost == pytest.approx(10.0 + rest, rel=1e-9)
-    wait = r.stats["wait_h"]
+    wait = r.stats.voyage.wait_h
     (i,) = np.nonzero(wait > 0)[0]  # one wait, on the step into the wall's column
     assert r.pixels[i, 1] == 14 and r.pixels[i + 1, 1] == 15
     elapsed = np.concatenate([[0.0], np.cumsum(r.step_costs)])
     assert elapsed[i] + wait[i] == pytest.approx(10.0, rel=1e-12)  # it leaves when the wall opens
+    # The voyage lists that wait: where, from when (the forecast's first time + the hours to
+    # the wall), how long; the hours split into waiting and under way.
+    voyage = r.stats.voyage
+    (stop,) = voyage.waits
+    assert stop.pixel == tuple(r.pixels[i]) and stop.position == tuple(r.coords[i])
+    assert stop.hours == wait[i]
+    assert stop.since == FC.time.values[0] + np.timedelta64(int(round(elapsed[i] * 3600)), "s")
+    assert voyage.hours_waiting == pytest.approx(wait[i], rel=1e-12)
+    assert voyage.hours_under_way == pytest.approx(r.cost - wait[i], rel=1e-12)
     plain = route_time(FC, A, B, vessel=SHIP, neighbourhood=3)
     assert plain.cost == pytest.approx(km_route(A, B).cost / KMH, rel=1e-9)
+    # Without zones nothing is waited for: zeros per step, no waits, every hour under way.
+    assert plain.stats.voyage.wait_h.tolist() == [0.0] * (len(plain.pixels) - 1)
+    assert plain.stats.voyage.waits == () and plain.stats.voyage.hours_under_way == plain.cost
     assert r.cost > plain.cost + 3
 
 
@@ -59,7 +71,7 @@ def test_zone_closed_only_when_the_ship_is_elsewhere_changes_nothing(window):
     r = route_time(FC, A, B, vessel=SHIP, neighbourhood=3, zones=[Zone(WALL, active=window)])
     assert r.cost == pytest.approx(plain.cost, rel=1e-12)
     assert r.pixels.tolist() == plain.pixels.tolist()
-    assert not r.stats["wait_h"].any()
+    assert not r.stats.voyage.wait_h.any()
 
 
 def test_closed_block_is_detoured_while_closed():
@@ -71,7 +83,7 @@ def test_closed_block_is_detoured_while_closed():
     detour = km_route(A, B, land=block).cost / KMH
     r = route_time(FC, A, B, vessel=SHIP, neighbourhood=3, zones=[Zone(BLOCK, active=(0, 48))])
     assert r.cost == pytest.approx(detour, rel=1e-9)
-    assert not block[tuple(r.pixels.T)].any() and not r.stats["wait_h"].any()
+    assert not block[tuple(r.pixels.T)].any() and not r.stats.voyage.wait_h.any()
     always = route_time(FC, A, B, vessel=SHIP, neighbourhood=3, zones=[Zone(BLOCK)])
     assert always.cost == pytest.approx(detour, rel=1e-9)
     early = route_time(FC, A, B, vessel=SHIP, neighbourhood=3, zones=[Zone(BLOCK, active=(0, 2))])
@@ -97,7 +109,7 @@ def test_via_point_legs_depart_on_arrival():
     first = km_route(A, via).cost / KMH
     rest = min(km_route((LAT[row], LON[14]), B).cost for row in range(21)) / KMH
     assert r.cost == pytest.approx(12.0 + rest, rel=1e-9)
-    assert r.stats["via_pixels"] == [(10, 10)]
+    assert list(r.stats.constraints.via_pixels) == [(10, 10)]
     assert r.pixels[8].tolist() == [10, 10]  # eight steps east to the via point
     assert np.cumsum(r.step_costs)[7] == pytest.approx(first, rel=1e-9)
     fc = ForecastGrid(FC)

@@ -41,7 +41,7 @@ def _answer(route_fn, q):
         r = route_fn(a, b, method=method, weight=w)
     except seaway.NoRouteError as e:
         return ("no route", str(e))
-    return (r.cost, r.pixels.tobytes(), r.stats["settled"], r.step_costs.tobytes())
+    return (r.cost, r.pixels.tobytes(), r.stats.search.settled, r.step_costs.tobytes())
 
 
 def _threaded(fn, items):

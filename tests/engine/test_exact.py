@@ -53,7 +53,7 @@ def test_exact_methods_match_reference(edge_cost, k, directions, grid, potential
                     r = chart.route(point(geo, start), point(geo, end), method=method)
                     assert r.cost == pytest.approx(expect[end], rel=RTOL, abs=1e-12), (method, start, end)
                     check_path(ref, r, start, end, geo)
-                    assert r.stats["settled"] >= (0 if start == end else 1)
+                    assert r.stats.search.settled >= (0 if start == end else 1)
         for end in cut:
             for method in METHODS:
                 with pytest.raises(seaway.NoRouteError):
@@ -80,7 +80,7 @@ def test_auto_picks_landmarks_then_bidirectional():
     light = seaway.prepare(1.0 + u / (10 * np.nanmax(u[np.isfinite(u)])), **opts)  # within 1.1x
     a = light.route(s, e)  # a small chart, low contrast: one-thread A*, whose bound prunes
     assert a.method == "astar"
-    assert a.stats["settled"] < light.route(s, e, method="dijkstra").stats["settled"]
+    assert a.stats.search.settled < light.route(s, e, method="dijkstra").stats.search.settled
 
 
 def test_landmarks_prune_and_bidirectional_splits_the_work(monkeypatch):
@@ -93,11 +93,11 @@ def test_landmarks_prune_and_bidirectional_splits_the_work(monkeypatch):
     for method, share in (("bidirectional", 0.5), ("landmarks", 0.5)):  # uniform: low contrast
         r = chart.route((100, 40), (100, 160), method=method)
         assert r.cost == pytest.approx(d.cost, rel=RTOL)
-        assert r.stats["settled"] < share * d.stats["settled"], method
+        assert r.stats.search.settled < share * d.stats.search.settled, method
     monkeypatch.setattr(seaway.engine.methods, "ASTAR_CONTRAST", 0.0)
     plain = seaway.prepare(u, edge_cost="mean").route((100, 40), (100, 160), method="bidirectional")
     assert plain.cost == pytest.approx(d.cost, rel=RTOL)
-    assert r.stats["settled"] < plain.stats["settled"] < 0.85 * d.stats["settled"]
+    assert r.stats.search.settled < plain.stats.search.settled < 0.85 * d.stats.search.settled
 
 
 def test_entered_pixel_model_bidirectional():
@@ -198,7 +198,7 @@ def test_bidirectional_is_the_same_bit_for_bit_on_one_core_and_on_two():
     u[5, 5] = u[290, 390] = 2.0
     chart = seaway.prepare(u, edge_cost="mean")
     free = chart.route((5, 5), (290, 390), method="bidirectional")
-    assert free.stats["settled"] > 10 * 4096  # many rounds
+    assert free.stats.search.settled > 10 * 4096  # many rounds
     runs = [chart.route((5, 5), (290, 390), method="bidirectional") for _ in range(3)]
     if hasattr(os, "sched_setaffinity") and len(os.sched_getaffinity(0)) > 1:
         cores = os.sched_getaffinity(0)
@@ -210,7 +210,7 @@ def test_bidirectional_is_the_same_bit_for_bit_on_one_core_and_on_two():
     for r in runs:
         assert r.cost == free.cost  # exactly: same meeting pixel, same sums
         np.testing.assert_array_equal(r.pixels, free.pixels)
-        assert r.stats["settled"] == free.stats["settled"]
+        assert r.stats.search.settled == free.stats.search.settled
     assert free.cost == pytest.approx(chart.route((5, 5), (290, 390), method="dijkstra").cost, rel=RTOL)
 
 

@@ -146,8 +146,8 @@ def test_astar_settles_no_more_than_dijkstra(geographic):
         d = seaway.route(u, a_pt, b_pt, method="dijkstra", **kw)
         a = seaway.route(u, a_pt, b_pt, method="astar", **kw)
         assert a.cost == pytest.approx(d.cost, rel=RTOL)
-        assert 0 < a.stats["settled"] <= d.stats["settled"] <= u.size
-        assert a.stats["settled"] < d.stats["settled"] // 2  # the heuristic actually prunes
+        assert 0 < a.stats.search.settled <= d.stats.search.settled <= u.size
+        assert a.stats.search.settled < d.stats.search.settled // 2  # the heuristic actually prunes
 
 
 def test_stencil_of_reference_is_the_contract():

@@ -73,7 +73,10 @@ def test_zero_penalty_equals_plain_search():
     s, e = (60.0, 10.0), (69.5, 33.2)
     plain, zero = chart.route(s, e, method="dijkstra"), chart.route(s, e, turn_penalty=0)
     assert zero.cost == pytest.approx(plain.cost, rel=1e-12)
-    assert zero.stats["settled"] > plain.stats["settled"]  # states, not pixels
+    assert zero.stats.search.settled > plain.stats.search.settled  # states, not pixels
+    # the penalty is recorded as its table {degrees: cost}: 0 per degree, 0 to 180
+    assert zero.stats.constraints.turn_penalty == {0.0: 0.0, 180.0: 0.0}
+    assert zero.stats.constraints.via_pixels == () and plain.stats.constraints is None
 
 
 def test_hand_worked_dogleg():
@@ -141,7 +144,7 @@ def test_astar_bound_is_the_cost_to_go_without_penalties():
     d = chart.route((2, 2), (57, 77), method="dijkstra", turn_penalty=0.05)
     a = chart.route((2, 2), (57, 77), method="astar", turn_penalty=0.05)
     assert a.cost == pytest.approx(d.cost, rel=1e-9)
-    assert a.stats["settled"] < 0.5 * d.stats["settled"]
+    assert a.stats.search.settled < 0.5 * d.stats.search.settled
     walled = u.copy()
     walled[55:60, 74] = walled[55, 74:80] = np.inf  # the end's corner is cut off
     with pytest.raises(seaway.NoRouteError):

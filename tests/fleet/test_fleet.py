@@ -50,7 +50,7 @@ def test_threads_equal_serial_and_single_routes(sea):
         r = seaway.route(cost, s, e, neighbourhood=5, edge_cost="mean")
         assert (row.voyage, row.start, row.end) == (vid, s, e)
         assert row.cost == r.cost and row.length == r.length
-        assert row.settled == r.stats["settled"] and row.time_s > 0
+        assert row.settled == r.stats.search.settled and row.time_s > 0
     assert serial.cost.iloc[-1] > 100  # the corner-to-corner voyage is long
 
 

@@ -70,8 +70,8 @@ def test_season_route_equals_brute_force_over_all_paths(seed, k, shape, waits):
         path = [tuple(p) for p in r.pixels]
         assert season_path_arrival(table_hours(stage), hours, path, planar_length(10.0)) == \
             pytest.approx(r.cost, rel=1e-9)
-        assert r.stats["hours_under_way"] + r.stats["hours_waiting"] == pytest.approx(r.cost)
-        assert (r.stats["hours_waiting"] > 0.1) == waits
+        assert r.stats.voyage.hours_under_way + r.stats.voyage.hours_waiting == pytest.approx(r.cost)
+        assert (r.stats.voyage.hours_waiting > 0.1) == waits
 
 
 @pytest.mark.parametrize("seed", [6, 7, 13, 21, 24])
@@ -127,11 +127,11 @@ def test_waiting_for_the_ice_to_clear_beats_the_detour():
     # (hours per km as the engine reads them, in float32).
     h = float(np.float32(1 / (12 * KN)))
     assert r.cost == pytest.approx(6.0 + 280 * h, rel=1e-12)
-    (pixel, coords, since, waited), = r.stats["waits"]
+    (pixel, coords, since, waited), = r.stats.voyage.waits
     assert pixel == (35, 1) and coords == (40.0, 10.0)
     assert waited == pytest.approx(6.0 - 10 * h, rel=1e-12)
-    assert r.stats["hours_waiting"] == pytest.approx(waited)
-    assert r.stats["arrival"] == DAY0 + np.timedelta64(int(round(r.cost * 3.6e6)), "ms")
+    assert r.stats.voyage.hours_waiting == pytest.approx(waited)
+    assert r.stats.voyage.arrival == DAY0 + np.timedelta64(int(round(r.cost * 3.6e6)), "ms")
     # If the band never cleared, the route is the detour through rows 0-1: the static route
     # through the first chart's hours per km (line integral, the engine's static model).
     shut = stage.copy()
@@ -140,7 +140,7 @@ def test_waiting_for_the_ice_to_clear_beats_the_detour():
                           speed=TABLE, concentration_limit=False)
     static = seaway.route(table_hours(shut[0]), (35, 0), (35, 29), dx=10.0, dy=10.0,
                           edge_cost="integral")
-    assert detour.stats["hours_waiting"] == 0 and detour.pixels[:, 0].min() <= 1
+    assert detour.stats.voyage.hours_waiting == 0 and detour.pixels[:, 0].min() <= 1
     assert detour.cost == pytest.approx(static.cost, rel=1e-12)
     # The detour is at least the continuous shortest path round the band's corners (pixel
     # edges at row 1.5, x 15 and 35 km): 10 km x (hypot(33.5, 1.5) + 2 + hypot(33.5, 25.5)).
@@ -167,11 +167,11 @@ def test_a_week_of_daily_charts_with_a_retreating_ice_edge():
     # Arc4 (0.8 m, open ice to 6/10) may not enter the 7/10 band and crawls through thin
     # first-year ice (f2 = 1 - 0.7/0.8): it takes the 4/10 band as it moves north, waiting
     # at its edge where the next chart opens the way.
-    assert arc4.stats["hours_waiting"] > 0 and arc4.cost > 2 * arc7.cost
+    assert arc4.stats.voyage.hours_waiting > 0 and arc4.cost > 2 * arc7.cost
     # FIFO: leaving two days later never arrives earlier, and the passage is quicker.
-    assert late.stats["arrival"] >= arc7.stats["arrival"] and late.cost < arc7.cost
+    assert late.stats.voyage.arrival >= arc7.stats.voyage.arrival and late.cost < arc7.cost
     late4 = route_season(ds, a, b, ice_class="Arc4", v0_kn=14, departure="2026-07-03")
-    assert late4.stats["arrival"] >= arc4.stats["arrival"] and late4.cost < arc4.cost
+    assert late4.stats.voyage.arrival >= arc4.stats.voyage.arrival and late4.cost < arc4.cost
     # The reported time is the route's own path sailed through the charts by the reference.
     hours = np.array([(t - DAY0) / np.timedelta64(1, "h") for t in ds.time.values])
     speed = seaway.ice.season.andreeva_speed_kn
@@ -293,10 +293,10 @@ def test_sigrid3_files_with_their_dates(tmp_path):
     assert ds.sizes["time"] == 3 and float(ds.CT.sel(lat=71, lon=14.5, method="nearest")[0]) == 10
     r = route_season(ds, (71.05, 6.05), (71.05, 24.05), ice_class="Arc7", v0_kn=12)
     # The ship sails to the ice edge and waits there for the chart of 3 July.
-    (pixel, (lat, lon), since, waited), = r.stats["waits"]
+    (pixel, (lat, lon), since, waited), = r.stats.voyage.waits
     assert lon == pytest.approx(12.95) and since + np.timedelta64(int(round(waited * 3.6e6)), "ms") \
         == np.datetime64("2026-07-03T00:00:00")
-    assert [str(t)[:10] for t in r.stats["charts_used"]] == ["2026-07-01", "2026-07-03"]
+    assert [str(t)[:10] for t in r.stats.voyage.charts_used] == ["2026-07-01", "2026-07-03"]
     # From there it is the quickest route on the open chart: 48 h + that passage.
     rest = route_season(ds.isel(time=[2]), (lat, lon), (71.05, 24.05), ice_class="Arc7", v0_kn=12)
     assert r.cost == pytest.approx(48.0 + rest.cost, rel=1e-12)
@@ -315,9 +315,9 @@ def test_later_departures_never_arrive_earlier_and_threads_agree():
     days = [DAY0 + np.timedelta64(6 * i, "h") for i in range(12)]
     models = [IceSeasonTime(grid, "Arc4", 14, departure=d) for d in days]
     serial = [chart.route((71.0, 64.0), (76.0, 78.0), model=m) for m in models]
-    arrivals = [r.stats["arrival"] for r in serial]
+    arrivals = [r.stats.voyage.arrival for r in serial]
     assert all(a <= b for a, b in zip(arrivals[:-1], arrivals[1:]))
-    assert any(r.stats["hours_waiting"] > 0 for r in serial)
+    assert any(r.stats.voyage.hours_waiting > 0 for r in serial)
     with ThreadPoolExecutor(4) as pool:
         threaded = list(pool.map(lambda m: chart.route((71.0, 64.0), (76.0, 78.0), model=m), models * 2))
     assert [r.cost for r in threaded] == [r.cost for r in serial] * 2

@@ -76,18 +76,20 @@ def test_a_week_of_daily_sigrid3_charts_arc4_and_arc7_on_two_departures(week):
     # waiting for it to break up (3 days).
     arc7 = run["Arc7", "2026-07-01"]
     assert arc7.cost == pytest.approx(hours_along_row(speeds(14, 7, 2), 0, 39), rel=1e-9)
-    assert arc7.stats["hours_waiting"] == 0
+    assert arc7.stats.voyage.hours_waiting == 0
     assert run["Arc7", "2026-07-05"].cost == pytest.approx(hours_along_row(speeds(14, 7, 14), 0, 39),
                                                            rel=1e-9)
     # Arc4 (0.8 m, open ice to 6/10) crawls through the thin ice at 14 x (1 - 0.7/0.8) = 1.75 kn
     # and may not enter the 7/10 plug: it waits at its edge (column 24) for the chart of 4 July.
     arc4 = run["Arc4", "2026-07-01"]
     assert arc4.cost == pytest.approx(72.0 + hours_along_row(speeds(14, 1.75, 14), 24, 39), rel=1e-9)
-    (pixel, (lat, lon), since, waited), = arc4.stats["waits"]
+    (pixel, (lat, lon), since, waited), = arc4.stats.voyage.waits
     assert pixel == (1, 24) and lon == pytest.approx(62.45)
+    assert arc4.stats.voyage.ice_class == "Arc4"
+    assert arc4.stats.voyage.hours_waiting == pytest.approx(waited, rel=1e-12)
     assert waited == pytest.approx(72.0 - hours_along_row(speeds(14, 1.75, 14), 0, 24), rel=1e-9)
-    assert str(arc4.stats["arrival"])[:13] == "2026-07-04T01"
-    assert [str(t)[:10] for t in arc4.stats["charts_used"]] == ["2026-07-01", "2026-07-04"]
+    assert str(arc4.stats.voyage.arrival)[:13] == "2026-07-04T01"
+    assert [str(t)[:10] for t in arc4.stats.voyage.charts_used] == ["2026-07-01", "2026-07-04"]
     late4 = run["Arc4", "2026-07-05"]
     assert late4.cost == pytest.approx(hours_along_row(speeds(14, 1.75, 14), 0, 39), rel=1e-9)
     # Its cost is hours with waits: legs cannot be re-priced, so smoothing is refused.
@@ -95,7 +97,7 @@ def test_a_week_of_daily_sigrid3_charts_arc4_and_arc7_on_two_departures(week):
         arc4.smoothed()
     # FIFO: the later departure never arrives earlier (hours: Arc4 74.0 and 9.7, Arc7 9.7, 5.8).
     for cls in ("Arc4", "Arc7"):
-        assert run[cls, "2026-07-05"].stats["arrival"] > run[cls, "2026-07-01"].stats["arrival"]
+        assert run[cls, "2026-07-05"].stats.voyage.arrival > run[cls, "2026-07-01"].stats.voyage.arrival
 
 
 def test_a_netcdf_season_routes_as_the_dataset(week, tmp_path):

@@ -68,7 +68,7 @@ def test_time_route_is_in_hours_and_refuses_smoothing():
     # hours, reporting a "smoothed" route that was not.
     r = route_time(forecast(), (60.2, 0.3), (61.7, 2.6), vessel=CALM, neighbourhood=5)
     assert r.edge_cost == "time" and r.unit == "h" and isinstance(r.model, TravelTime)
-    assert r.stats["hours"] == r.cost
+    assert r.stats.voyage.hours == r.cost
     # the leg table is in hours: the legs' costs sum to the passage time, each = distance / speed
     legs = r.legs()
     assert sum(leg.cost for leg in legs) == pytest.approx(r.cost, rel=1e-12)

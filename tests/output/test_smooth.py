@@ -49,8 +49,15 @@ def test_uniform_chart_becomes_the_straight_line():
     assert r.cost > np.hypot(180, 285) * 1.001  # the raster route zig-zags
     assert s.cost == pytest.approx(np.hypot(180, 285), rel=1e-12)
     assert s.points.tolist() == [[10, 5], [190, 290]]
-    assert s.stats["course_changes_before"] == r.course_changes > 0
-    assert s.stats["course_changes_after"] == 0 and s.course_changes == 0
+    assert s.stats.smoothing.course_changes_before == r.course_changes > 0
+    assert s.stats.smoothing.course_changes_after == 0 and s.course_changes == 0
+    assert s.stats.smoothing.cost_before == r.cost and s.stats.smoothing.shortcut_legs == 1
+    assert s.stats.search == r.stats.search  # the search's figures are kept
+    # A route of one step has nothing to smooth, and says so (the CLI prints these figures).
+    one = seaway.route(np.ones((5, 5)), (0, 0), (1, 1)).smoothed()
+    assert one.cost == pytest.approx(np.sqrt(2)) and len(one.points) == 2
+    assert (one.stats.smoothing.cost_before, one.stats.smoothing.course_changes_after,
+            one.stats.smoothing.shortcut_legs) == (one.cost, 0, 1)
 
 
 def test_island_is_rounded_at_its_corners_without_touching_it():
@@ -86,7 +93,7 @@ def test_smoothing_never_raises_cost(edge_cost):
         s = r.smoothed()
         assert s.cost <= r.cost * (1 + 1e-12)
         assert s.costs().sum() == pytest.approx(s.cost)
-        assert s.stats["course_changes_after"] == s.course_changes
+        assert s.stats.smoothing.course_changes_after == s.course_changes
         # the smoothed waypoints re-priced from scratch give the same cost
         assert Segments(r.chart, edge_cost, k).cost(s.points) == pytest.approx(s.cost, rel=1e-12)
 

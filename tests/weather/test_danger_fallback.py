@@ -58,10 +58,10 @@ def test_least_danger_matches_lexicographic_brute_force(seed):
     for method in ("dijkstra", "astar"):
         r = route_time(fc, (lat[start[0]], lon[0]), (lat[end[0]], lon[8]), vessel=SHIP,
                        neighbourhood=3, method=method)
-        assert r.stats["through_danger"] is True
-        assert r.stats["danger_h"] == pytest.approx(want_d, rel=1e-9)
+        assert r.stats.through_danger is True
+        assert r.stats.danger.hours == pytest.approx(want_d, rel=1e-9)
         assert r.cost == pytest.approx(want_t, rel=1e-9)
-        assert sum(leg["hours"] for leg in r.stats["danger_legs"]) == pytest.approx(want_d, rel=1e-9)
+        assert sum(leg.hours for leg in r.stats.danger.legs) == pytest.approx(want_d, rel=1e-9)
     with pytest.raises(seaway.NoRouteError):
         route_time(fc, (lat[start[0]], lon[0]), (lat[end[0]], lon[8]), vessel=SHIP,
                    neighbourhood=3, if_no_safe_route="raise")
@@ -77,11 +77,30 @@ def test_storm_wall_crossed_where_it_is_narrowest_in_time():
     r = route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=SHIP, neighbourhood=3)
     lat_top = 62.0
     step = _core.haversine_km(lat_top, 0.0, lat_top, 0.1) / 1.852 / 12.0
-    assert r.stats["danger_h"] == pytest.approx(2 * step, rel=1e-9)  # 14->15, 15->16
-    (leg,) = r.stats["danger_legs"]
-    assert leg["from"] == pytest.approx((lat_top, 1.4)) and leg["to"] == pytest.approx((lat_top, 1.6))
-    assert leg["hours"] == pytest.approx(2 * step, rel=1e-9)
+    assert r.stats.danger.hours == pytest.approx(2 * step, rel=1e-9)  # 14->15, 15->16
+    (leg,) = r.stats.danger.legs
+    assert leg.start == pytest.approx((lat_top, 1.4)) and leg.end == pytest.approx((lat_top, 1.6))
+    assert leg.hours == pytest.approx(2 * step, rel=1e-9)
+    assert leg.start_h == pytest.approx(float(np.sum(r.step_costs[:leg.steps[0]])), rel=1e-12)
     assert "through danger" in r.name
+    assert r.stats.voyage.hours == r.cost and r.stats.voyage.wait_h.tolist() == [0.0] * len(r.step_costs)
+
+
+def test_danger_fallback_through_timed_zones_does_not_claim_its_waits():
+    """With zones closed in time windows the least-danger search may wait for them but reports
+    no per-step values: the voyage says its waits are unknown (None), not zero."""
+    shapely = pytest.importorskip("shapely")
+    wind = np.zeros((21, 31))
+    wind[:, 15] = 20.0
+    fc = forecast(wind=wind, ce=0.0, cn=0.0)
+    zone = seaway.constraints.Zone(shapely.geometry.box(0.45, 59.0, 0.55, 60.45), active=(0.0, 1.0))
+    r = route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=SHIP, neighbourhood=3, zones=[zone])
+    plain = route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=SHIP, neighbourhood=3)
+    assert r.stats.through_danger and r.cost == pytest.approx(plain.cost, rel=1e-12)
+    assert r.stats.danger.hours == pytest.approx(plain.stats.danger.hours, rel=1e-12)
+    voyage = r.stats.voyage
+    assert voyage.hours == r.cost and voyage.wait_h is None and voyage.waits == ()
+    assert voyage.hours_waiting is None and voyage.hours_under_way is None
 
 
 def test_moving_storm_danger_hours_re_walked():
@@ -94,11 +113,11 @@ def test_moving_storm_danger_hours_re_walked():
     r = route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=SHIP, neighbourhood=5)
     elapsed = np.concatenate([[0.0], np.cumsum(r.step_costs)])
     strong = np.interp(elapsed[:-1], [0, 6, 12, 18], [20, 20, 0, 0]) > 11.0
-    np.testing.assert_array_equal(r.stats["danger_step_h"] > 0, strong)
-    assert r.stats["danger_h"] == pytest.approx(float(np.sum(r.step_costs[strong])), rel=1e-12)
+    np.testing.assert_array_equal(r.stats.danger.step_h > 0, strong)
+    assert r.stats.danger.hours == pytest.approx(float(np.sum(r.step_costs[strong])), rel=1e-12)
     calm = route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=SHIP, neighbourhood=5,
                       departure="2026-01-01T12")
-    assert "through_danger" not in calm.stats
+    assert not calm.stats.through_danger and calm.stats.danger is None
 
 
 def test_hard_limits_are_never_crossed():
@@ -121,10 +140,10 @@ def test_wave_danger_zone_fallback():
     fc = forecast(hs=hs, ce=0.0, cn=0.0)
     r = route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=ship, neighbourhood=3)
     step = _core.haversine_km(62.0, 0.0, 62.0, 0.1) / 1.852 / 12.0
-    assert r.stats["through_danger"] is True
-    assert r.stats["danger_h"] == pytest.approx(2 * step, rel=1e-9)
-    (leg,) = r.stats["danger_legs"]
-    assert leg["from"] == pytest.approx((62.0, 1.4)) and leg["to"] == pytest.approx((62.0, 1.6))
+    assert r.stats.through_danger is True
+    assert r.stats.danger.hours == pytest.approx(2 * step, rel=1e-9)
+    (leg,) = r.stats.danger.legs
+    assert leg.start == pytest.approx((62.0, 1.4)) and leg.end == pytest.approx((62.0, 1.6))
     calm = route_time(forecast(hs=np.full((21, 31), 2.0), ce=0.0, cn=0.0), (61.0, 0.2),
                       (61.0, 2.8), vessel=ship, neighbourhood=3)
-    assert "through_danger" not in calm.stats
+    assert not calm.stats.through_danger and calm.stats.danger is None

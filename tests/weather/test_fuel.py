@@ -32,17 +32,17 @@ def test_each_step_takes_the_cheapest_setting(time_value):
     best = v[np.argmin((q + time_value) / v)]
     r = route_fuel(forecast(), A, B, vessel=SHIP, fuel=CURVE, time_value_t_per_h=time_value,
                    neighbourhood=3)
-    assert np.all(r.stats["speeds_kn"] == best)
+    assert np.all(r.stats.fuel.speeds_kn == best)
     hours = KM / 1.852 / best
-    assert r.stats["hours"] == pytest.approx(hours, rel=1e-9)
-    assert r.stats["fuel_t"] == pytest.approx(q[v == best][0] * hours, rel=1e-9)
-    assert r.cost == pytest.approx(r.stats["fuel_t"] + time_value * hours, rel=1e-9)
+    assert r.stats.fuel.hours == pytest.approx(hours, rel=1e-9)
+    assert r.stats.fuel.fuel_t == pytest.approx(q[v == best][0] * hours, rel=1e-9)
+    assert r.cost == pytest.approx(r.stats.fuel.fuel_t + time_value * hours, rel=1e-9)
 
 
 def test_tradeoff_runs_from_full_speed_to_least_fuel():
     front = tradeoff(forecast(), A, B, vessel=SHIP, fuel=CURVE, neighbourhood=3)
-    hours = [r.stats["hours"] for r in front]
-    fuel = [r.stats["fuel_t"] for r in front]
+    hours = [r.stats.fuel.hours for r in front]
+    fuel = [r.stats.fuel.fuel_t for r in front]
     assert hours == sorted(hours) and fuel == sorted(fuel, reverse=True)
     assert hours[0] == pytest.approx(KM / 1.852 / 24.0, rel=1e-9)  # quickest: full speed
     assert hours[-1] == pytest.approx(KM / 1.852 / 8.0, rel=1e-9)  # least fuel: slowest
@@ -56,11 +56,11 @@ def test_least_fuel_within_a_deadline():
     for deadline in (1.1 * full, 1.5 * full, 2.2 * full):
         r = route_min_fuel(forecast(), A, B, deadline_h=deadline, vessel=SHIP, fuel=CURVE,
                            neighbourhood=3)
-        assert r.stats["hours"] <= deadline
+        assert r.stats.fuel.hours <= deadline
         # No setting slower than the one chosen would still arrive in time.
-        slower = [v for v in CURVE.speeds_kn if v < r.stats["speeds_kn"][0]]
+        slower = [v for v in CURVE.speeds_kn if v < r.stats.fuel.speeds_kn[0]]
         assert all(KM / 1.852 / v > deadline for v in slower)
-        fuels.append(r.stats["fuel_t"])
+        fuels.append(r.stats.fuel.fuel_t)
     assert fuels[0] > fuels[1] > fuels[2]
 
 
@@ -71,7 +71,7 @@ def test_a_head_current_makes_slow_steaming_dearer():
     r = route_fuel(against, A, B, vessel=SHIP, fuel=CURVE, neighbourhood=3)
     v, q = np.array(CURVE.speeds_kn), np.array(CURVE.rates_t_per_h)
     expected = v[np.argmin(np.where(v > 7.0, q / (v - 7.0), np.inf))]
-    assert expected > 8.0 and np.all(r.stats["speeds_kn"] == expected)
+    assert expected > 8.0 and np.all(r.stats.fuel.speeds_kn == expected)
 
 
 def test_a_deadline_no_speed_meets_is_a_no_route_error():

@@ -73,7 +73,7 @@ def test_storm_is_avoided_only_while_forecast():
     inside = [(6 <= r <= 14) and (10 <= c <= 19) for r, c in early.pixels]
     assert not any(inside)
     assert late.cost == pytest.approx(straight.cost, rel=1e-12)
-    assert late.stats["arrival"] == np.datetime64("2026-01-01T18") + np.timedelta64(
+    assert late.stats.voyage.arrival == np.datetime64("2026-01-01T18") + np.timedelta64(
         int(round(late.cost * 3600)), "s")
 
 
@@ -208,7 +208,7 @@ def test_route_on_the_roms_currents():
     # Currents of a few tenths of a knot change a ~1000 km passage by a few per cent at most.
     assert gc_h < r.cost < 1.1 * gc_h and gc_h < back.cost < 1.1 * gc_h
     assert r.cost != pytest.approx(back.cost, rel=1e-6)  # the currents make the two differ
-    assert r.stats["departure"] == ds["time"].values[0]
+    assert r.stats.voyage.departure == ds["time"].values[0]
 
 
 def test_replanning_with_the_same_forecast_keeps_the_tail():

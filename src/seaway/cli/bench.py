@@ -31,7 +31,7 @@ def run_bench(args) -> int:
                 r = route(cost, start, end, neighbourhood=k, method=method, edge_cost="mean")
                 times.append(time.perf_counter() - t)
             print(f"{method:10s} {k:3d} {statistics.median(times):9.3f} {min(times):8.3f} "
-                  f"{r.stats['settled']:11,d} {r.stats['state_bytes'] / cost.size:8.1f} "
+                  f"{r.stats.search.settled:11,d} {r.stats.search.state_bytes / cost.size:8.1f} "
                   f"{r.cost:12.2f}", flush=True)
     return 0
 

@@ -82,7 +82,7 @@ def demo(args) -> int:
     print(f"length:       {km:.1f} km = {km / KM_PER_NM:.1f} nm")
     print(f"waypoints:    {len(r.pixels)}")
     print(f"search:       {r.method}, {args.neighbourhood}x{args.neighbourhood} neighbourhood, "
-          f"{t_search:.2f} s, {r.stats['settled']} pixels settled")
+          f"{t_search:.2f} s, {r.stats.search.settled} pixels settled")
     t2 = time.perf_counter()
     sm = r.smoothed()
     print(f"smoothed:     cost {sm.cost:.1f} ({100 * (sm.cost / r.cost - 1):+.2f} %), "

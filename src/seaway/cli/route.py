@@ -69,14 +69,15 @@ def run_route(args) -> int:
             raise
         why = why_no_route(chart_cost, data.land, depth, start, end, args.draft, args.ukc)
         raise NoRouteError(f"{exc}; {why}") from None
-    say(f"found: cost {r.cost:.6g}, {len(r.pixels)} pixels, {r.stats['settled']} settled")
+    say(f"found: cost {r.cost:.6g}, {len(r.pixels)} pixels, {r.stats.search.settled} settled")
     if constraints["via"] or constraints["turn_penalty"] is not None:
         say("not smoothed: smoothing would cut the via-points or ignore the turn penalty")
     elif not args.no_smooth:
         say(f"smoothing {r.course_changes} course changes")
         r = r.smoothed()
-        say(f"smoothed: cost {r.stats['cost_before']:.6g} -> {r.cost:.6g}, course changes "
-            f"{r.stats['course_changes_before']} -> {r.stats['course_changes_after']}")
+        done = r.stats.smoothing
+        say(f"smoothed: cost {done.cost_before:.6g} -> {r.cost:.6g}, course changes "
+            f"{done.course_changes_before} -> {done.course_changes_after}")
     r.name = args.name
     r.speed_kn = args.speed
     if data.environment:

@@ -113,13 +113,13 @@ def run_season(args) -> int:
         f"({args.neighbourhood}x{args.neighbourhood} stencil, waiting allowed)")
     r = season.prepare(args.neighbourhood).route(args.start, args.end, model=model, method=args.method)
     r.name = args.name
-    st = r.stats
+    st = r.stats.voyage
     print(r)
-    print(f"departure {st['departure']}, arrival {str(st['arrival'])[:16]}: {r.cost:.2f} h "
-          f"({r.cost / 24:.2f} days), {st['hours_under_way']:.2f} h under way, "
-          f"{st['hours_waiting']:.2f} h waiting; charts used: "
-          + ", ".join(str(d)[:16] for d in st["charts_used"]))
-    for _, (a, b), since, hours in st["waits"]:
+    print(f"departure {st.departure}, arrival {str(st.arrival)[:16]}: {r.cost:.2f} h "
+          f"({r.cost / 24:.2f} days), {st.hours_under_way:.2f} h under way, "
+          f"{st.hours_waiting:.2f} h waiting; charts used: "
+          + ", ".join(str(d)[:16] for d in st.charts_used))
+    for _, (a, b), since, hours in st.waits:
         print(f"  wait {hours:.2f} h at {a:.4f}, {b:.4f} from {str(since)[:16]}")
     for path in args.out or []:
         say(f"wrote {path} ({export.write(r, path)})")

@@ -12,8 +12,9 @@ from ..base.interrupt import interruptible
 from ..chart.locate import locate
 from ..models.base import TurnPenalised
 from ..result.route import Route
+from ..result.stats import Constraints, RouteStats, SearchStats
 from .methods import EDGE_COST_NAMES
-from .result import Search, SearchStats, no_route
+from .result import Search, no_route
 
 
 def turn_table(turn_penalty) -> tuple[list[float], list[float]] | None:
@@ -131,11 +132,9 @@ def route_constrained(prepared, start, end, model, method, weight, via, turn_pen
         for k, v in found.per_step.items():
             per_step[k] = np.concatenate([per_step[k], v]) if k in per_step else np.asarray(v)
         figures = found.stats if i == 0 else figures.plus(found.stats)
-    stats = figures.as_dict()
-    if len(located) > 2:
-        stats["via_pixels"] = [tuple(p) for p in located[1:-1]]
-    if turns is not None:
-        stats["turn_penalty"] = dict(zip(*turns))
+    asked = Constraints(via_pixels=tuple((int(p[0]), int(p[1])) for p in located[1:-1]),
+                        turn_penalty=None if turns is None else dict(zip(*turns)))
+    stats = RouteStats(search=figures, constraints=asked)
     step_costs = np.concatenate(steps)
     route = Route(chart=chart, cost=float(step_costs.sum()), pixels=pixels, method=method,
                   neighbourhood=prepared.neighbourhood,

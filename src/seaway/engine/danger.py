@@ -5,18 +5,21 @@ listed. Called by seaway.weather.route_time (cpp/seaway/danger_time.hpp searches
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from .. import _core
 from ..base.interrupt import interruptible
 from ..chart.locate import locate
 from ..constraints import timed_zone_engine
+from ..result.stats import Danger, DangerLeg
 from .methods import heuristic_weight
 from .result import Search, to_route
 
 
-def danger_stretches(route, danger_h, start_h) -> list[dict]:
-    """Consecutive steps in danger merged: where (from, to as lat/lon), when (hours after
+def danger_stretches(route, danger_h, start_h) -> tuple[DangerLeg, ...]:
+    """Consecutive steps in danger merged: where (start, end as lat/lon), when (hours after
     departure) and for how long (hours)."""
     coords = route.coords
     elapsed = np.concatenate([[0.0], np.cumsum(route.step_costs)]) + start_h
@@ -28,11 +31,12 @@ def danger_stretches(route, danger_h, start_h) -> list[dict]:
         j = i
         while j + 1 < n and danger_h[j + 1] > 0:
             j += 1
-        out.append({"from": tuple(map(float, coords[i])), "to": tuple(map(float, coords[j + 1])),
-                    "start_h": float(elapsed[i]), "hours": float(np.sum(danger_h[i:j + 1])),
-                    "steps": (i, j + 1)})
+        out.append(DangerLeg(start=(float(coords[i][0]), float(coords[i][1])),
+                             end=(float(coords[j + 1][0]), float(coords[j + 1][1])),
+                             start_h=float(elapsed[i]), hours=float(np.sum(danger_h[i:j + 1])),
+                             steps=(i, j + 1)))
         i = j + 1
-    return out
+    return tuple(out)
 
 
 def least_danger_route(prepared, model, start, end, method):
@@ -56,7 +60,7 @@ def least_danger_route(prepared, model, start, end, method):
     r = to_route(prepared, found, model, method)
     r = model.finish(r, {})
     danger_h = np.asarray(danger_h, dtype=float)
-    r.stats.update(through_danger=True, danger_h=float(danger_h.sum()), danger_step_h=danger_h,
-                   danger_legs=danger_stretches(r, danger_h, 0.0))
+    r.stats = dataclasses.replace(r.stats, danger=Danger(
+        hours=float(danger_h.sum()), step_h=danger_h, legs=danger_stretches(r, danger_h, 0.0)))
     r.name = "seaway route (through danger: no route avoids the danger zones)"
     return r

@@ -10,30 +10,7 @@ import numpy as np
 from ..chart.locate import check_overflow, describe
 from ..errors import NoRouteError
 from ..result.route import Route
-
-
-@dataclass(frozen=True)
-class SearchStats:
-    """The search's own figures (cpp/seaway/search.hpp SearchStats)."""
-
-    settled: int = 0  #: pixels (or states) taken off the queue
-    heap_peak: int = 0  #: the largest frontier
-    state_bytes: int = 0  #: the search's own memory at its peak
-    min_cost: float = float("inf")  #: the smallest passable cost (the A* bound's factor)
-
-    @classmethod
-    def from_core(cls, d: dict) -> SearchStats:
-        return cls(settled=int(d["settled"]), heap_peak=int(d["heap_peak"]),
-                   state_bytes=int(d["state_bytes"]), min_cost=float(d["min_cost"]))
-
-    def as_dict(self) -> dict:
-        return {"settled": self.settled, "heap_peak": self.heap_peak,
-                "state_bytes": self.state_bytes, "min_cost": self.min_cost}
-
-    def plus(self, other: SearchStats) -> SearchStats:
-        """Two legs' figures: settled adds up, the peaks take the larger."""
-        return SearchStats(self.settled + other.settled, max(self.heap_peak, other.heap_peak),
-                           max(self.state_bytes, other.state_bytes), min(self.min_cost, other.min_cost))
+from ..result.stats import RouteStats, SearchStats
 
 
 @dataclass(frozen=True)
@@ -73,10 +50,9 @@ def no_route(prepared, model, ends) -> NoRouteError:
     return NoRouteError(model.no_route(where, prepared))
 
 
-def to_route(prepared, found: Search, model, method: str, stats: dict | None = None) -> Route:
+def to_route(prepared, found: Search, model, method: str) -> Route:
     """The Route of a found search, before the model adds its own results (model.finish)."""
     chart = prepared.chart
     return Route(chart=chart, cost=float(found.cost), pixels=found.pixels(chart.shape[1]),
                  method=method, neighbourhood=prepared.neighbourhood, model=model,
-                 stats=found.stats.as_dict() if stats is None else stats,
-                 step_costs=np.diff(found.cumulative))
+                 stats=RouteStats(search=found.stats), step_costs=np.diff(found.cumulative))

@@ -63,7 +63,8 @@ def _route_one(get_target, voyage, keep):
         t0 = time.perf_counter()
         route = target(start, end, via) if len(via) else target(start, end)
         row.update(cost=float(route.cost), length=float(route.length),
-                   settled=route.stats.get("settled"), status="ok", error="")
+                   settled=None if route.stats.search is None else route.stats.search.settled,
+                   status="ok", error="")
     except Exception as exc:  # noqa: BLE001 - a failing route is reported in its row
         status = _status(exc)
         row.update(status=status, error=f"{type(exc).__name__}: {exc}" if status == "error" else str(exc))

@@ -17,7 +17,7 @@ segment touches a pixel closed in that chart.
 Waiting is allowed, anywhere the ship has reached (including its start: a later departure),
 and it is not optional: without it the graph is not FIFO — leaving just before a chart that
 clears the ice would arrive later than leaving with it — and no label-setting search is exact
-(cpp/seaway/ice_time.hpp). Routes report every wait (route.stats["waits"]); a ship waits where
+(cpp/seaway/ice_time.hpp). Routes report every wait (route.stats.voyage.waits); a ship waits where
 it is, also in ice its class may not enter meanwhile: the charts are not drift forecasts.
 
 Speed of a class in a chart's ice (knots), `speed=`:

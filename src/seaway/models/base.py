@@ -66,7 +66,9 @@ class CostModel:
         never use, naming why and the fix; the chart has checked land already."""
 
     def finish(self, route, per_step: dict):
-        """The Route with what this model adds (stats from the per-step values, speed)."""
+        """The Route with what this model adds: its typed result built from the per-step values
+        (seaway.models.results: a Voyage or FuelUse, put in route.stats with
+        dataclasses.replace) and its speed."""
         return route
 
     def no_route(self, where: str, prepared) -> str:

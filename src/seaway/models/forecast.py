@@ -3,6 +3,8 @@ and wave danger (Olovyannikov 2025, Grinyak et al. 2018 and Sotnikova 2009)."""
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from .. import _core
@@ -11,6 +13,7 @@ from ..chart.cf import STANDARD_NAMES
 from ..constraints import timed_zone_engine
 from ..vessel import Vessel
 from .base import CostModel
+from .results import FuelUse, Voyage
 
 
 class _OnForecast(CostModel):
@@ -57,15 +60,16 @@ class TravelTime(_OnForecast):
         return self._engine
 
     def finish(self, route, per_step):
-        hours = route.cost
-        route.stats["hours"] = hours
-        if self.forecast.departure is not None:
-            dep = self.forecast.departure
-            route.stats["departure"] = dep
-            route.stats["arrival"] = dep + np.timedelta64(int(round(hours * 3600)), "s")
+        """The route's Voyage (departure and arrival when the forecast has a time axis; waits
+        for zones to open, per step: none without zones, unreported by the least-danger
+        fallback, which gives no per-step values) and the vessel's speed."""
+        wait_h = per_step.get("wait_h")
+        if wait_h is None and not self.zones:
+            wait_h = np.zeros(len(route.costs()))
+        voyage = Voyage.along(route.cost, route.costs(), wait_h, self.forecast.departure,
+                              pixels=route.pixels, coords=route.coords)
+        route.stats = dataclasses.replace(route.stats, voyage=voyage)
         route.speed_kn = self.vessel.speed_kn
-        if "wait_h" in per_step:  # hours waited for zones to open, per step
-            route.stats["wait_h"] = per_step["wait_h"]
         return route
 
     def no_route(self, where, prepared):
@@ -99,11 +103,12 @@ class Fuel(_OnForecast):
         return self._engine
 
     def finish(self, route, per_step):
+        """The route's FuelUse: fuel, hours and the engine setting of each step."""
         setting = per_step["setting"].astype(np.int64)
-        route.stats.update(fuel_t=float(np.sum(per_step["fuel_t"])),
-                           hours=float(np.sum(per_step["hours"])),
-                           speeds_kn=np.asarray(self.fuel.speeds_kn)[setting],
-                           time_value_t_per_h=self.time_value_t_per_h)
+        use = FuelUse(fuel_t=float(np.sum(per_step["fuel_t"])), hours=float(np.sum(per_step["hours"])),
+                      speeds_kn=np.asarray(self.fuel.speeds_kn, dtype=np.float64)[setting],
+                      time_value_t_per_h=self.time_value_t_per_h)
+        route.stats = dataclasses.replace(route.stats, fuel=use)
         return route
 
     def no_route(self, where, prepared):

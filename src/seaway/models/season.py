@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import warnings
 
 import numpy as np
@@ -11,6 +12,7 @@ from ..base.validate import number
 from ..chart.locate import describe
 from ..ice.classes import get_class
 from .base import CostModel
+from .results import Voyage
 
 
 class IceSeasonTime(CostModel):
@@ -21,8 +23,9 @@ class IceSeasonTime(CostModel):
     list their waits. `season` is a seaway.ice.season.SeasonGrid (or what it takes); departure
     a date within the season (default its first chart); see seaway.ice.season for the speeds.
 
-    Route stats: hours, departure, arrival, hours_under_way, hours_waiting, waits (pixel,
-    (lat, lon) or (y, x), arrival there, hours waited), charts_used (dates), ice_class."""
+    Route.stats.voyage (seaway.models.results.Voyage): hours, departure, arrival, wait_h per
+    step, hours_under_way, hours_waiting, waits (pixel, (lat, lon) or (y, x), arrival there,
+    hours waited), charts_used (dates), ice_class."""
 
     name = "ice season time"
     time_dependent = True
@@ -71,21 +74,19 @@ class IceSeasonTime(CostModel):
                              f"{near}")
 
     def finish(self, route, per_step):
+        """The route's Voyage: every wait, the charts its steps crossed (the one valid when each
+        step departs) and the ice class."""
         hours, cum = route.cost, np.concatenate([[0.0], np.cumsum(route.step_costs)])
         depart = per_step["depart_h"]
-        wait = depart - cum[:-1]
-        at = lambda h: self.departure + np.timedelta64(int(round(h * 3.6e6)), "ms")  # noqa: E731
-        coords = route.coords
-        waits = [(tuple(int(x) for x in route.pixels[i]), tuple(float(x) for x in coords[i]),
-                  at(cum[i]), float(wait[i])) for i in np.flatnonzero(wait > 1e-9)]
         used = np.unique(np.searchsorted(self.valid_from_h, depart, side="right") - 1)
         times = self.season.times[self.season.times.size - self.valid_from_h.size:]
-        route.stats.update(hours=hours, departure=self.departure, arrival=at(hours),
-                           hours_waiting=float(wait.sum()), hours_under_way=float(hours - wait.sum()),
-                           waits=waits, charts_used=[times[k] for k in used], ice_class=self.ice_class)
+        voyage = Voyage.along(hours, route.step_costs, depart - cum[:-1], self.departure,
+                              pixels=route.pixels, coords=route.coords, tick="ms",
+                              charts_used=tuple(times[k] for k in used), ice_class=self.ice_class)
+        route.stats = dataclasses.replace(route.stats, voyage=voyage)
         # No route.speed_kn: legs at one speed would contradict the per-step times and waits.
         if hours > self.valid_from_h[-1] + self.season.last_valid_h:
-            warnings.warn(f"the voyage arrives at {route.stats['arrival']}, beyond the last chart "
+            warnings.warn(f"the voyage arrives at {voyage.arrival}, beyond the last chart "
                           f"({times[-1]}) and its usual validity; the last chart was assumed to hold",
                           stacklevel=3)
         return route

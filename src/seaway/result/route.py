@@ -23,6 +23,7 @@ from .environment import (  # noqa: F401 - extreme_name: part of this API
     summarise,
     values_at,
 )
+from .stats import RouteStats
 from .table import route_table
 
 
@@ -50,10 +51,8 @@ class Route:
     """A route a search returned: its pixels, cost and model, and what a navigator reads from it.
 
     cost: the sum of the step costs, in the model's unit (``unit``: cost x km, h, t, ...).
-    pixels: (n, 2) (row, col) of the route's pixels, both ends included; ``coords`` gives the
-        vertices as lat/lon (geographic charts) or y/x, ``length`` the length (km or grid units).
-    method, stats: the search that found it ("bidirectional", "astar", ...) and its figures
-        (``stats["settled"]``: pixels settled) with the model's own (arrival, waits, ...).
+    pixels: (n, 2) (row, col) of its pixels, both ends included (``coords``: lat/lon or y/x).
+    method, stats: the search that found it and its figures (seaway.result.stats).
     model, speed_kn: the cost model (seaway.models) and the speed of the leg table's times.
 
     Waypoints are the ends and every course change: ``legs()``, ``summary()`` and ``str()`` give
@@ -67,7 +66,8 @@ class Route:
     neighbourhood: int = 5
     #: What the route minimises (seaway.models); its unit is .unit.
     model: CostModel = field(default_factory=EdgeCost)
-    stats: dict = field(default_factory=dict, repr=False)
+    #: The search's figures and what the model, constraints and smoothing add (seaway.result.stats).
+    stats: RouteStats = field(default_factory=RouteStats, repr=False)
     #: (n, 2) fractional (row, col) of the vertices when they are not pixel centres (smoothed).
     points: np.ndarray | None = field(default=None, repr=False)
     #: (n, 2) lat/lon of the vertices when the chart is not a lat/lon grid (corridor routes).

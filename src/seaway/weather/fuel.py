@@ -49,7 +49,8 @@ class FuelCurve:
 def route_fuel(forecast, start, end, *, vessel: Vessel, fuel: FuelCurve, time_value_t_per_h=0.0,
                at_hours=0.0, land=None, neighbourhood=5, method="astar", variables=None) -> Route:
     """The route and settings minimising fuel + time_value x hours. Route.cost is that sum;
-    stats hold fuel_t, hours and speeds_kn (the setting of each step)."""
+    stats.fuel (seaway.models.results.FuelUse) holds fuel_t, hours and speeds_kn (the setting
+    of each step)."""
     heuristic_weight(method, None)
     fc = ForecastGrid(forecast, variables)
     model = Fuel(fc, vessel, fuel, time_value_t_per_h, at_hours)
@@ -65,10 +66,10 @@ def tradeoff(forecast, start, end, *, vessel: Vessel, fuel: FuelCurve, time_valu
         time_values = np.concatenate([[0.0], np.geomspace(top / 100, 10 * top, 24)])
     routes = [route_fuel(forecast, start, end, vessel=vessel, fuel=fuel, time_value_t_per_h=t,
                          **kwargs) for t in time_values]
-    routes.sort(key=lambda r: (r.stats["hours"], r.stats["fuel_t"]))
+    routes.sort(key=lambda r: (r.stats.fuel.hours, r.stats.fuel.fuel_t))
     front = []
     for r in routes:
-        if not front or r.stats["fuel_t"] < front[-1].stats["fuel_t"] - 1e-12:
+        if not front or r.stats.fuel.fuel_t < front[-1].stats.fuel.fuel_t - 1e-12:
             front.append(r)
     return front
 
@@ -81,10 +82,10 @@ def route_min_fuel(forecast, start, end, *, deadline_h, vessel: Vessel, fuel: Fu
         return route_fuel(forecast, start, end, vessel=vessel, fuel=fuel, time_value_t_per_h=t, **kwargs)
 
     slowest = run(0.0)
-    if slowest.stats["hours"] <= deadline_h:
+    if slowest.stats.fuel.hours <= deadline_h:
         return slowest
     lo, hi = 0.0, max(fuel.rates_t_per_h)
-    while run(hi).stats["hours"] > deadline_h:
+    while run(hi).stats.fuel.hours > deadline_h:
         hi *= 4
         if hi > 1e9:
             raise NoRouteError(f"no route arrives within {deadline_h:g} h even at full speed")
@@ -92,7 +93,7 @@ def route_min_fuel(forecast, start, end, *, deadline_h, vessel: Vessel, fuel: Fu
     while hi - lo > tolerance * hi:
         mid = 0.5 * (lo + hi)
         r = run(mid)
-        if r.stats["hours"] <= deadline_h:
+        if r.stats.fuel.hours <= deadline_h:
             hi, best = mid, r
         else:
             lo = mid

@@ -50,10 +50,12 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
     via: points to pass in order; each leg departs when the previous one arrives.
     if_no_safe_route: when no route avoids the vessel's danger zones (danger_wind_ms,
         danger_wave_m), "least_danger" returns the route with the least hours in danger, then
-        the least hours (Sotnikova 2009), flagged stats["through_danger"] = True with
-        stats["danger_h"] and stats["danger_legs"] (where, when and how long); "raise" raises
-        NoRouteError. The hard limits (max_wind_ms, max_wave_m) are never crossed.
-    Returns a Route whose cost is the passage time in hours (stats hold departure and arrival).
+        the least hours (Sotnikova 2009), flagged stats.through_danger with stats.danger
+        (seaway.result.stats.Danger: hours in danger, per step, and the stretches in danger:
+        where, when and how long); "raise" raises NoRouteError. The hard limits (max_wind_ms,
+        max_wave_m) are never crossed.
+    Returns a Route whose cost is the passage time in hours (stats.voyage holds departure,
+    arrival and waits: seaway.models.results.Voyage).
     The same as ForecastGrid(forecast).prepare().route(start, end, model=TravelTime(...)).
     """
     if if_no_safe_route not in ("least_danger", "raise"):
@@ -99,9 +101,10 @@ def position_at(route: Route, hours: float) -> tuple[int, tuple[float, float]]:
 def replan(route: Route, hours: float, forecast, end, **kwargs) -> Route:
     """Grinyak et al. 2018's re-planning: route again from where the ship is `hours` after departure,
     with a newer `forecast`, leaving at that time. kwargs go to route_time()."""
-    if "departure" not in route.stats:
+    voyage = route.stats.voyage
+    if voyage is None or voyage.departure is None:
         raise ValueError("re-planning needs a route found through a forecast with a time axis")
     i, here = position_at(route, hours)
     reached = float(np.sum(route.costs()[:i]))
-    departure = route.stats["departure"] + np.timedelta64(int(round(reached * 3.6e12)), "ns")
+    departure = voyage.departure + np.timedelta64(int(round(reached * 3.6e12)), "ns")
     return route_time(forecast, here, end, departure=departure, **kwargs)

@@ -1,6 +1,7 @@
-// A chart prepared for many queries: the stencil, step lengths and land clearance are built
-// once and shared (read-only) by every query; each query borrows a Workspace from a pool, so
-// threads route on one chart at once and a repeated query allocates nothing large.
+// A chart prepared for many queries (bound to Python as _core.Router; seaway.PreparedChart holds
+// one): the stencil, step lengths, land clearance and step enumerator are built once and shared
+// (read-only) by every query; each query borrows a Workspace from a pool, so threads route on
+// one chart at once and a repeated query allocates nothing large.
 // Queries take an edge-cost model (cost_models.hpp, weather.hpp): one prepared chart serves
 // every model.
 #pragma once
@@ -8,33 +9,27 @@
 #include <algorithm>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cost_models.hpp"
-#include "heap.hpp"
 #include "lazy_labels.hpp"
 #include "passability.hpp"
+#include "queue_choice.hpp"
 #include "search.hpp"
 
 namespace seaway {
 
-struct RouteResult {
-  double cost = inf;               // inf when the target was not reached
-  std::vector<std::int64_t> path;  // flat pixel indices, start first
-  std::vector<double> cumulative;  // the cost from the start to each pixel of the path
-  std::vector<int> offsets;        // the stencil offset of each step (path.size() - 1)
-  SearchStats stats;
-};
-
-class PreparedGrid {
+class PreparedChart {
  public:
   // `cost` marks impassable pixels (NaN, inf, negative) and gives the static cost range.
   template <class T>
-  PreparedGrid(const Grid& g, const T* cost, const std::uint8_t* land, int k, Directions dirs,
+  PreparedChart(const Geometry& g, const T* cost, const std::uint8_t* land, int k, Directions dirs,
                LandRule rule)
-      : g_(g), stencil_(make_stencil(k, dirs)), lengths_(g.step_lengths(stencil_)), rule_(rule) {
+      : g_(g), stencil_(make_stencil(k, dirs)), lengths_(g.step_lengths(stencil_)), rule_(rule),
+        half_(seaway::half_width(stencil_)) {
     if (g.wrap && g.cols <= k - 1)
       throw std::invalid_argument("a wrapping grid needs more columns than the neighbourhood size");
     clearance_.resize(std::size_t(g.size()));
@@ -43,17 +38,19 @@ class PreparedGrid {
     const auto [rmin, rmax] = std::minmax_element(lengths_.table.begin(), lengths_.table.end());
     rmin_ = *rmin;
     rmax_ = *rmax;
-    for (const Offset& o : stencil_) half_ = std::max({half_, std::abs(o.di), std::abs(o.dj)});
+    steps_.emplace(g_, stencil_, lengths_, clearance_.data(), rule_);
   }
+  PreparedChart(const PreparedChart&) = delete;  // the enumerator points into it
+  PreparedChart& operator=(const PreparedChart&) = delete;
 
-  const Grid& grid() const { return g_; }
+  const Geometry& geometry() const { return g_; }
   // How many search workspaces this chart has allocated (one per concurrent query at most).
   std::size_t workspaces_made() const {
     std::lock_guard<std::mutex> lock(pool_mutex_);
     return workspaces_made_;
   }
   const std::vector<Offset>& stencil() const { return stencil_; }
-  const Grid::Lengths& lengths() const { return lengths_; }
+  const Geometry::Lengths& lengths() const { return lengths_; }
   int half_width() const { return half_; }  // largest |di| or |dj| of the stencil
   // Index of the stencil offset (di, dj), or -1.
   int offset_index(int di, int dj) const {
@@ -75,14 +72,7 @@ class PreparedGrid {
   // The route to `target` a search from `start` left in `ws`.
   RouteResult result(const Workspace& ws, std::int64_t start, std::int64_t target,
                      const SearchStats& stats) const {
-    RouteResult out;
-    out.stats = stats;
-    out.cost = ws.cost(target);
-    if (out.cost < inf) {
-      out.path = trace_path(g_, stencil_, ws, start, target, &out.offsets);
-      for (std::int64_t p : out.path) out.cumulative.push_back(ws.cost(p));
-    }
-    return out;
+    return route_from(*steps_, ws, start, target, stats);
   }
 
   // Accumulated cost from start to every pixel (inf where unreachable) into out[size].
@@ -105,7 +95,8 @@ class PreparedGrid {
     return run(model, from, stop, 0.0, ws, control);
   }
 
-  // What the searches in bidirectional.hpp and landmarks.hpp need besides the above.
+  // What the other searches (bidirectional, landmarks, turns, least danger) need.
+  const StepEnumerator& steps() const { return *steps_; }
   const std::uint8_t* clearance() const { return clearance_.data(); }
   std::size_t clearance_bytes() const { return clearance_.capacity(); }
   const Passability& passability() const { return pass_; }
@@ -122,7 +113,7 @@ class PreparedGrid {
   // beyond that their pages go back to the kernel (the next search faults them in again).
   class LabelLease {
    public:
-    explicit LabelLease(PreparedGrid& p) : p_(p) {
+    explicit LabelLease(PreparedChart& p) : p_(p) {
       std::lock_guard<std::mutex> lock(p_.pool_mutex_);
       if (p_.label_pool_.empty()) {
         labels_ = std::make_unique<LazyLabels>(p_.g_.size());
@@ -139,14 +130,14 @@ class PreparedGrid {
     LazyLabels& operator*() { return *labels_; }
 
    private:
-    PreparedGrid& p_;
+    PreparedChart& p_;
     std::unique_ptr<LazyLabels> labels_;
   };
 
   // A workspace borrowed from the pool for one query, returned when the query ends.
   class Lease {
    public:
-    explicit Lease(PreparedGrid& p) : p_(p) {
+    explicit Lease(PreparedChart& p) : p_(p) {
       std::lock_guard<std::mutex> lock(p_.pool_mutex_);
       if (p_.pool_.empty()) {
         ws_ = std::make_unique<Workspace>();
@@ -164,54 +155,41 @@ class PreparedGrid {
     Workspace* operator->() { return ws_.get(); }
 
    private:
-    PreparedGrid& p_;
+    PreparedChart& p_;
     std::unique_ptr<Workspace> ws_;
   };
 
  private:
-  // Pick the queue from the model's bounds on a step's cost (Model::bounds()): buckets when
-  // every step's (reduced) cost has a positive floor and the range needs few buckets; a radix
-  // heap otherwise; a 4-ary heap for weighted A*, whose keys are not monotone.
+  // Weight 0: Dijkstra, 1: A* (exact: in buckets with the bound scaled by 1 - astar_bucket_eps,
+  // so that every step's reduced cost keeps that share of the cheapest step), > 1: weighted A*.
   template <class Model>
   SearchStats run(const Model& model, std::int64_t start, std::int64_t target, double weight,
                   Workspace& ws, const SearchControl* control) const {
     const StepBounds b = model.bounds(pass_);
-    const double rmin = b.per_length ? rmin_ : 1.0, rmax = b.per_length ? rmax_ : 1.0;
     const bool astar = weight == 1 && target >= 0 && b.per_length;
-    // Exact A* in buckets: with the bound scaled by (1 - eps), every step's reduced cost
-    // c + h(w) - h(v) is at least eps x the cheapest step, which then serves as bucket width.
     const double eps = astar ? astar_bucket_eps : 1.0;
-    const double width = 0.999999 * eps * b.min_rate * rmin;
     // The largest key increase of one step: its cost, plus for A* the bound's largest drop.
-    const double span = 1.000001 * (b.max_rate + (astar ? b.min_rate : 0.0)) * rmax + 1e-300;
-    const bool buckets = weight <= 1 && width > 0 && span < inf &&
-                         BucketQueue::buckets_needed(width, span) < 65536;
-    SearchSpec spec{&g_, &stencil_, rule_, target >= 0 && b.per_length ? weight : 0.0, control};
-    if (buckets && astar) spec.heuristic_weight = 1 - eps;
-    const std::uint8_t* clear = clearance_.data();
-    SearchStats stats;
-    if (weight > 1)
-      stats = search(spec, model, lengths_, clear, b.min_rate, start, target, ws, QuaternaryHeap{});
-    else if (buckets)
-      stats = search(spec, model, lengths_, clear, b.min_rate, start, target, ws, BucketQueue(width, span));
-    else
-      stats = search(spec, model, lengths_, clear, b.min_rate, start, target, ws, RadixHeap{});
+    QueueChoice q = choose_queue(b, rmin_, rmax_, eps, astar ? b.min_rate : 0.0);
+    if (weight > 1) q.kind = QueueKind::quaternary;
+    double hw = target >= 0 && b.per_length ? weight : 0.0;
+    if (q.kind == QueueKind::buckets && astar) hw = 1 - eps;
+    SearchStats stats = with_queue<true, false>(q, [&](auto heap) {
+      return search(*steps_, model, start, target, ws, std::move(heap), hw * b.min_rate, control);
+    });
+    stats.min_cost = b.min_rate;
     stats.state_bytes += clearance_.capacity();
     return stats;
   }
 
-  // Share of the A* bound given up so that A* can use the bucket queue; 0.05 settled the
-  // fewest pixels per second on the benchmark charts (0.02 to 0.25 tried).
-  static constexpr double astar_bucket_eps = 0.05;
-
-  Grid g_;
+  Geometry g_;
   std::vector<Offset> stencil_;
-  Grid::Lengths lengths_;
+  Geometry::Lengths lengths_;
   LandRule rule_;
   std::vector<std::uint8_t> clearance_;
   Passability pass_;
   double rmin_ = 0, rmax_ = 0;
   int half_ = 0;
+  std::optional<StepEnumerator> steps_;  // built once the clearance is
   mutable std::mutex pool_mutex_;
   std::vector<std::unique_ptr<Workspace>> pool_;
   std::vector<std::unique_ptr<LazyLabels>> label_pool_;

@@ -1,5 +1,5 @@
-// Raster geometry: a planar grid (cell sizes dx, dy) or a regular lat/lon grid on a sphere,
-// optionally wrapping at the antimeridian. Gives each stencil step's length and the
+// Raster geometry (bound to Python as _core.Grid): a planar grid (cell sizes dx, dy) or a
+// regular lat/lon grid on a sphere, optionally wrapping at the antimeridian. Gives each stencil step's length and the
 // straight-line (or great-circle) lower bound that A* uses.
 #pragma once
 
@@ -9,13 +9,10 @@
 #include <limits>
 #include <vector>
 
+#include "constants.hpp"
 #include "stencil.hpp"
 
 namespace seaway {
-
-constexpr double inf = std::numeric_limits<double>::infinity();
-constexpr double earth_radius_km = 6371.0088;  // IUGG mean Earth radius
-constexpr double deg = 3.14159265358979323846 / 180.0;
 
 // Great-circle distance in km between two points given in degrees (haversine form).
 inline double haversine_km(double lat1, double lon1, double lat2, double lon2) {
@@ -24,7 +21,7 @@ inline double haversine_km(double lat1, double lon1, double lat2, double lon2) {
   return 2 * earth_radius_km * std::asin(std::min(1.0, std::sqrt(a)));
 }
 
-struct Grid {
+struct Geometry {
   std::int64_t rows = 0, cols = 0;
   bool geographic = false;
   double dx = 1, dy = 1;                    // planar cell sizes (columns, rows)
@@ -32,6 +29,15 @@ struct Grid {
   bool wrap = false;                        // columns are periodic (360 degrees of longitude)
 
   std::int64_t size() const { return rows * cols; }
+  // A column index one period off (c in [-cols, 2 cols)) brought back onto the chart.
+  std::int64_t wrap_col(std::int64_t c) const { return c < 0 ? c + cols : (c >= cols ? c - cols : c); }
+  // The pixel one stencil step from v: along the offset (sign +1) or back along it (sign -1).
+  std::int64_t step(std::int64_t v, const Offset& o, int sign) const {
+    const std::int64_t r = v / cols + sign * o.di;
+    std::int64_t c = v % cols + sign * o.dj;
+    if (wrap) c = (c + cols) % cols;
+    return r * cols + c;
+  }
   double lat(std::int64_t r) const { return lat0 + double(r) * dlat; }
 
   // Length of every step from every row: table[row * stride + o]; stride 0 on planar grids,
@@ -78,7 +84,7 @@ struct Grid {
 // the target times a factor (the smallest cost per unit length, times the A* inflation).
 class DistanceBound {
  public:
-  DistanceBound(const Grid& g, std::int64_t target, double factor) : g_(g), factor_(factor) {
+  DistanceBound(const Geometry& g, std::int64_t target, double factor) : g_(g), factor_(factor) {
     tr_ = target / g.cols;
     tc_ = target % g.cols;
     if (!g.geographic || factor == 0) return;
@@ -110,7 +116,7 @@ class DistanceBound {
   }
 
  private:
-  const Grid& g_;
+  const Geometry& g_;
   double factor_;
   std::int64_t tr_ = 0, tc_ = 0;
   std::vector<double> row_a_, row_c_, col_b_;

@@ -1,0 +1,87 @@
+// The turn penalty's prices (turns.hpp): a piecewise-linear cost of the course change, the
+// angle between two stencil steps in the local metric, and their table per row.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "geometry.hpp"
+
+namespace seaway {
+
+// Piecewise-linear penalty of the course change: cost[i] at angle_deg[i] (ascending, from 0 to
+// 180), linear between, in the route's cost units. Per degree p: {0, 180} -> {0, 180 p}.
+struct TurnPenalty {
+  std::vector<double> angle_deg, cost;
+
+  double operator()(double a) const {
+    if (a <= angle_deg.front()) return cost.front();
+    for (std::size_t i = 1; i < angle_deg.size(); ++i)
+      if (a <= angle_deg[i]) {
+        const double slope = (cost[i] - cost[i - 1]) / (angle_deg[i] - angle_deg[i - 1]);
+        return slope * (a - angle_deg[i - 1]) + cost[i - 1];
+      }
+    return cost.back();
+  }
+};
+
+// Unit direction of every offset at every row (one row on planar grids), for turn angles.
+class TurnAngles {
+ public:
+  TurnAngles(const Geometry& g, const std::vector<Offset>& st) : n_(std::int64_t(st.size())) {
+    rows_ = g.geographic ? g.rows : 1;
+    dir_.resize(std::size_t(rows_ * n_ * 2));
+    for (std::int64_t r = 0; r < rows_; ++r)
+      for (std::int64_t o = 0; o < n_; ++o) {
+        const Offset& s = st[std::size_t(o)];
+        const double y = g.geographic ? s.di * g.dlat : s.di * g.dy;
+        const double x = g.geographic ? s.dj * g.dlon * std::cos(g.lat(r) * deg) : s.dj * g.dx;
+        const double len = std::hypot(y, x);
+        dir_[std::size_t((r * n_ + o) * 2)] = y / len;
+        dir_[std::size_t((r * n_ + o) * 2 + 1)] = x / len;
+      }
+  }
+  // Degrees between offsets o1 and o2 at row r.
+  double operator()(std::int64_t r, std::int64_t o1, std::int64_t o2) const {
+    if (o1 == o2) return 0;
+    const double* a = &dir_[std::size_t(((rows_ == 1 ? 0 : r) * n_ + o1) * 2)];
+    const double* b = &dir_[std::size_t(((rows_ == 1 ? 0 : r) * n_ + o2) * 2)];
+    return std::acos(std::clamp(a[0] * b[0] + a[1] * b[1], -1.0, 1.0)) / deg;
+  }
+  std::size_t bytes() const { return dir_.capacity() * sizeof(double); }
+
+ private:
+  std::int64_t n_, rows_;
+  std::vector<double> dir_;
+};
+
+// The penalty of every (incoming, outgoing) offset pair per row (one row on planar grids), so
+// a relaxation reads a number instead of taking an arccosine; computed on the fly when the
+// table would pass 64 MB (lat/lon grids with wide stencils).
+class TurnCosts {
+ public:
+  TurnCosts(const Geometry& g, const std::vector<Offset>& st, const TurnPenalty& p)
+      : angles_(g, st), p_(p), k_(std::int64_t(st.size())), rows_(g.geographic ? g.rows : 1) {
+    if (double(rows_) * double(k_ * k_) * sizeof(double) > 64e6) return;
+    table_.resize(std::size_t(rows_ * k_ * k_));
+    for (std::int64_t r = 0; r < rows_; ++r)
+      for (std::int64_t a = 0; a < k_; ++a)
+        for (std::int64_t b = 0; b < k_; ++b) table_[std::size_t((r * k_ + a) * k_ + b)] = p(angles_(r, a, b));
+  }
+  double operator()(std::int64_t row, std::int64_t in, std::int64_t o) const {
+    if (table_.empty()) return p_(angles_(row, in, o));
+    return table_[std::size_t(((rows_ == 1 ? 0 : row) * k_ + in) * k_ + o)];
+  }
+  double largest() const { return *std::max_element(p_.cost.begin(), p_.cost.end()); }
+  std::size_t bytes() const { return angles_.bytes() + table_.capacity() * sizeof(double); }
+
+ private:
+  TurnAngles angles_;
+  const TurnPenalty& p_;
+  std::int64_t k_, rows_;
+  std::vector<double> table_;
+};
+
+}  // namespace seaway
