@@ -9,8 +9,7 @@ import pytest
 import xarray as xr
 
 import seaway
-from seaway.weather import Vessel, open_forecast, route_time
-from seaway.weather.forecast import grib_times
+from seaway.weather import Vessel, grib_times, open_forecast, route_time
 
 eccodes = pytest.importorskip("eccodes")
 pytest.importorskip("cfgrib")

@@ -53,7 +53,7 @@ def grib_times(ds: xr.Dataset, path="the GRIB forecast") -> xr.Dataset:
         return ds
     if "time" in ds.dims:
         raise ValueError(f"{path} holds {ds.sizes['time']} analyses of {ds.sizes['step']} steps; "
-                         f"route on one: seaway.weather.forecast.grib_times(xr.open_dataset("
+                         f"route on one: seaway.weather.grib_times(xr.open_dataset("
                          f"path, engine='cfgrib').isel(time=0))")
     return ds.drop_vars("time", errors="ignore").swap_dims(step="valid_time").rename(valid_time="time")
 
