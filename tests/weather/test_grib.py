@@ -58,7 +58,7 @@ def test_grib_forecast_reads_valid_times_and_routes_as_the_same_forecast_in_memo
     twin = route_time(_in_memory(), (71.0, 21.0), (72.0, 24.0), vessel=vessel)
     assert short.cost == pytest.approx(twin.cost, rel=1e-12) and short.cost < 10.8
     assert short.pixels.tolist() == twin.pixels.tolist()
-    assert short.stats["arrival"] == twin.stats["arrival"]
+    assert short.stats.voyage.arrival == twin.stats.voyage.arrival == np.datetime64("2016-02-01T19:28:19")
     # 71 N 21 E -> 74.5 N 29.5 E takes about 20 h: the wind closes the whole chart before then.
     for forecast in (fc, _in_memory()):
         with pytest.raises(seaway.NoRouteError):
