@@ -5,14 +5,15 @@
 //   template <class Fn> StepValues step_values(const Fn&, const PreparedChart&,
 //                                              const RouteResult&) const;  // per-step extras
 // visit() runs without the GIL: it must not touch Python objects.
-// Adding a model: a functor in cpp/seaway/, a struct here, its name in the Models list below,
-// its class in register_models.cpp, and a Python class in seaway/models.py.
+// Adding a model: a functor in cpp/seaway/ (with its Capabilities), a struct here, its name in
+// the Models list below, its class in register_models.cpp, and a Python class in seaway.models.
 #pragma once
 
 #include <pybind11/pybind11.h>
 
 #include <atomic>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -35,8 +36,22 @@ inline const SearchControl* flag_of(const CancelToken* t) { return t; }
 // The prepared chart's Python class, _core.Router (one chart serves every model).
 using ChartClass = pybind11::class_<PreparedChart, std::unique_ptr<PreparedChart>>;
 
-// Named per-step values a model reports beside the route (e.g. fuel's engine setting).
-using StepValues = std::vector<std::pair<std::string, std::vector<double>>>;
+// What a model reports per step beside the route, one typed slot each (unset when the model
+// reports none): bound as _core.StepValues, read by the Python model's finish().
+struct StepValues {
+  std::optional<std::vector<double>> setting;   // FuelModel: the engine setting's index
+  std::optional<std::vector<double>> hours;     // FuelModel: hours of the step
+  std::optional<std::vector<double>> fuel_t;    // FuelModel: tonnes burnt on the step
+  std::optional<std::vector<double>> depart_h;  // IceSeasonModel: when the step leaves its first pixel
+  std::optional<std::vector<double>> wait_h;    // Zoned: hours waited for a zone to open
+};
+
+// A query's answer, bound as _core.QueryResult: the route with the search's figures, and the
+// model's values per step.
+struct QueryResult {
+  RouteResult route;
+  StepValues steps;
+};
 
 struct NoStepValues {
   template <class Fn>
@@ -55,6 +70,9 @@ inline void check_on_grid(const PreparedChart& p, std::int64_t rows, std::int64_
 // integral, entered pixel).
 template <template <class> class Functor>
 struct RasterModel : NoStepValues {
+  static constexpr Capabilities caps = Functor<double>::caps;
+  template <class T>
+  using Rule = Functor<T>;
   pybind11::object keep;  // the raster
   const void* u = nullptr;
   bool single = false;
@@ -86,6 +104,7 @@ using ForecastPtr = std::shared_ptr<const ForecastFields>;
 
 // Hours through a forecast (Olovyannikov 2025 and Sotnikova 2009).
 struct TravelTimeModel : NoStepValues {
+  static constexpr Capabilities caps = WeatherTime::caps;
   ForecastPtr forecast;
   Vessel vessel;
   double best_speed_kn;
@@ -99,6 +118,7 @@ struct TravelTimeModel : NoStepValues {
 
 // Fuel + lambda x time with an engine setting per step (Sotnikova 2009), on the forecast's first frame.
 struct FuelModel {
+  static constexpr Capabilities caps = FuelLagrangian::caps;
   ForecastPtr forecast;
   Vessel vessel;
   std::vector<double> settings_kn, rate_t_per_h;
@@ -121,12 +141,17 @@ struct FuelModel {
       hours.push_back(c.hours);
       fuel.push_back(c.fuel_t);
     }
-    return {{"setting", setting}, {"hours", hours}, {"fuel_t", fuel}};
+    StepValues out_values;
+    out_values.setting = std::move(setting);
+    out_values.hours = std::move(hours);
+    out_values.fuel_t = std::move(fuel);
+    return out_values;
   }
 };
 
 // Wave danger by heading (Grinyak et al. 2018, MSC.1/Circ.1228) on the forecast's first frame.
 struct WaveDangerModel : NoStepValues {
+  static constexpr Capabilities caps = WaveDangerCost::caps;
   ForecastPtr forecast;
   double ship_length_m, speed_kn;
 
@@ -142,6 +167,7 @@ struct WaveDangerModel : NoStepValues {
 // Hours through a season of ice charts: hours per km, float32 (frames, rows, cols),
 // frame k valid from valid_from_h[k] hours after departure; waiting allowed (ice_time.hpp).
 struct IceSeasonModel {
+  static constexpr Capabilities caps = IceSeasonTime::caps;
   pybind11::object keep;  // the hours-per-km frames
   IceSeries series;
   std::vector<double> valid_from_h;
@@ -162,15 +188,25 @@ struct IceSeasonModel {
       const int o = out.offsets[i];
       depart.push_back(m.step(a, o, g.lengths().row(row)[o], out.cumulative[i]).depart_h);
     }
-    return {{"depart_h", depart}};
+    StepValues values;
+    values.depart_h = std::move(depart);
+    return values;
   }
 };
 
-// Every model a query takes: Router.route and Router.field get one overload each.
+// Every model a query takes: Router.route and Router.field get one overload each; the other
+// searches one for each model whose capabilities they need (for_each_model).
 template <class... M>
 struct ModelList {};
 using Models = ModelList<RasterModel<MaxCost>, RasterModel<MeanCost>, RasterModel<IntegralCost>,
-                         RasterModel<EnteredPixelCost>, TravelTimeModel, FuelModel, WaveDangerModel,
+                         RasterModel<LengthCost>, RasterModel<EnteredPixelCost>, TravelTimeModel, FuelModel, WaveDangerModel,
                          IceSeasonModel, Zoned<TravelTimeModel>>;
+
+// Calls f(static_cast<M*>(nullptr)) for every model M of the list: a binding folds over the
+// models and keeps those whose M::caps have what its search needs (if constexpr).
+template <class F, class... M>
+void for_each_model(ModelList<M...>, F&& f) {
+  (f(static_cast<M*>(nullptr)), ...);
+}
 
 }  // namespace seaway

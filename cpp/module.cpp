@@ -10,6 +10,7 @@ void register_exact(py::module_& m);
 void register_smooth(py::module_& m);
 void register_turns(py::module_& m);
 void register_constraints(py::module_& m);
+void register_capabilities(py::module_& m);
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "seaway's C++ engine (private: use the seaway package)";
@@ -20,4 +21,5 @@ PYBIND11_MODULE(_core, m) {
   register_smooth(m);
   register_turns(m);
   register_constraints(m);
+  register_capabilities(m);  // last: every model class is registered
 }

@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <utility>
 #include <vector>
 
 #include "results.hpp"
@@ -52,13 +53,12 @@ void def_least_danger(py::module_& m) {
             return 0;
           });
         }
-        return py::make_tuple(route_tuple(out.route, {}),
-                              py::array_t<double>(py::ssize_t(out.danger_h.size()), out.danger_h.data()));
+        return py::make_tuple(answer(std::move(out.route)), as_array(out.danger_h));
       },
       py::arg("router"), py::arg("model"), py::arg("danger_wind_ms"), py::arg("danger_wave_m"),
       py::arg("start"), py::arg("target"), py::arg("heuristic_weight"), py::arg("cancel") = nullptr,
       "Least hours in danger, then least hours (Sotnikova 2009, when no route avoids the danger "
-      "zones): (Router.route's tuple, danger hours per step). The model's vessel carries the "
+      "zones): (Router.route's QueryResult, danger hours per step). The model's vessel carries the "
       "hard limits only.");
 }
 

@@ -1,9 +1,12 @@
 // Bindings for the faster exact searches on a Router: bidirectional Dijkstra on two threads
-// (any static raster model), and A* with landmark tables built once per chart and model
-// (the symmetric models max, mean, integral). Python (seaway/_exact.py) picks and validates.
+// (the models with caps.is_static), and A* with landmark tables built once per chart and model
+// (static and symmetric models). Python (seaway.engine.methods) picks and validates.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+
+#include <type_traits>
+#include <utility>
 
 #include "results.hpp"
 #include "seaway/bidirectional.hpp"
@@ -28,7 +31,7 @@ void def_bidirectional(ChartClass& router) {
                    return 0;
                  });
                }
-               return route_tuple(out, {});
+               return answer(std::move(out));
              },
              py::arg("model"), py::arg("start"), py::arg("target"), py::arg("astar"),
              py::arg("cancel") = nullptr,
@@ -60,7 +63,7 @@ void def_landmarks(ChartClass& router) {
                    return 0;
                  });
                }
-               return route_tuple(out, {});
+               return answer(std::move(out));
              },
              py::arg("model"), py::arg("landmarks"), py::arg("start"), py::arg("target"),
              py::arg("bidirectional"), py::arg("cancel") = nullptr,
@@ -80,11 +83,9 @@ void register_exact(py::module_& m) {
     const Passability& p = chart.passability();
     return py::make_tuple(p.passable ? p.min_cost : 0.0, p.max_cost, p.passable);
   }, "(smallest, largest passable cost, passable pixels), from the preparation");
-  def_bidirectional<RasterModel<MaxCost>>(router);
-  def_bidirectional<RasterModel<MeanCost>>(router);
-  def_bidirectional<RasterModel<IntegralCost>>(router);
-  def_bidirectional<RasterModel<EnteredPixelCost>>(router);
-  def_landmarks<RasterModel<MaxCost>>(router);
-  def_landmarks<RasterModel<MeanCost>>(router);
-  def_landmarks<RasterModel<IntegralCost>>(router);
+  for_each_model(Models{}, [&](auto* tag) {
+    using M = std::remove_pointer_t<decltype(tag)>;
+    if constexpr (M::caps.is_static) def_bidirectional<M>(router);  // the backward side prices steps
+    if constexpr (M::caps.is_static && M::caps.symmetric) def_landmarks<M>(router);
+  });
 }

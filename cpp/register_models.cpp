@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "models.hpp"
@@ -121,9 +122,11 @@ void register_models(py::module_& m) {
   bind_raster_model<MaxCost>(m, "MaxCost", "Grinyak et al. 2022: a step costs max(u_i, u_j) x length");
   bind_raster_model<MeanCost>(m, "MeanCost", "Grinyak et al. 2018: a step costs (u_i + u_j) / 2 x length");
   bind_raster_model<IntegralCost>(m, "IntegralCost", "A step costs the line integral of u");
+  bind_raster_model<LengthCost>(m, "LengthCost", "A step costs its length (the raster: passability)");
   bind_raster_model<EnteredPixelCost>(m, "EnteredPixelCost", "skimage's MCP: the pixel entered");
   m.def("max_pair_costs", &pair_costs<MaxCost>, py::arg("a"), py::arg("b"), py::arg("length"));
   m.def("mean_pair_costs", &pair_costs<MeanCost>, py::arg("a"), py::arg("b"), py::arg("length"));
+  m.def("length_pair_costs", &pair_costs<LengthCost>, py::arg("a"), py::arg("b"), py::arg("length"));
 
   py::enum_<SpeedLoss>(m, "SpeedLoss")
       .value("none", SpeedLoss::none)
@@ -167,4 +170,20 @@ void register_models(py::module_& m) {
   py::class_<IceSeasonModel>(m, "IceSeasonModel", "Hours through a season of ice charts (waiting allowed)")
       .def(py::init(&ice_season), py::arg("hours_per_km").noconvert(), py::arg("valid_from_h"),
            py::arg("min_hours_per_km"));
+}
+
+// Each bound model class's `capabilities` (a dict of its Capabilities), once every model class
+// is registered: seaway.models' flags are tested against them.
+void register_capabilities(py::module_&) {
+  for_each_model(Models{}, [](auto* tag) {
+    using M = std::remove_pointer_t<decltype(tag)>;
+    constexpr Capabilities c = M::caps;
+    py::dict d;
+    d["static"] = c.is_static;
+    d["symmetric"] = c.symmetric;
+    d["turn_penalty"] = c.turn_penalty;
+    d["time_dependent"] = c.time_dependent;
+    d["smoothable"] = c.smoothable;
+    py::type::of<M>().attr("capabilities") = d;
+  });
 }

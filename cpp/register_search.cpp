@@ -63,22 +63,21 @@ void def_queries(ChartClass& router) {
   router.def("route",
              [](PreparedChart& chart, const M& m, std::int64_t start, std::int64_t target, double weight,
                 const CancelToken* cancel) {
-               RouteResult out;
-               StepValues steps;
+               QueryResult out;
                {
                  py::gil_scoped_release release;
                  m.visit(chart, [&](const auto& model) {
-                   out = chart.route(model, start, target, weight, flag_of(cancel));
-                   steps = m.step_values(model, chart, out);
+                   out.route = chart.route(model, start, target, weight, flag_of(cancel));
+                   out.steps = m.step_values(model, chart, out.route);
                    return 0;
                  });
                }
-               return route_tuple(out, steps);
+               return out;
              },
              py::arg("model"), py::arg("start"), py::arg("target"), py::arg("heuristic_weight"),
              py::arg("cancel") = nullptr,
-             "(cost, flat path, stats, cost to each path pixel, per-step values); weight 0: "
-             "Dijkstra, 1: A*, > 1: weighted A*");
+             "The QueryResult (cost, path, figures, values per step); weight 0: Dijkstra, 1: A*, "
+             "> 1: weighted A*");
   router.def("field",
              [](PreparedChart& chart, const M& m, std::int64_t start, const CancelToken* cancel) {
                const Geometry& g = chart.geometry();
@@ -91,7 +90,7 @@ void def_queries(ChartClass& router) {
                    return chart.field(model, start, d, flag_of(cancel));
                  });
                }
-               return py::make_tuple(out, stats_dict(stats));
+               return py::make_tuple(out, stats);
              },
              py::arg("model"), py::arg("start"), py::arg("cancel") = nullptr,
              "(accumulated cost from start to every pixel, stats)");
@@ -105,6 +104,7 @@ void def_all_queries(ChartClass& router, ModelList<M...>) {
 }  // namespace
 
 void register_search(py::module_& m) {
+  register_results(m);
   py::class_<Geometry>(m, "Grid", "Raster geometry: planar (dx, dy) or regular lat/lon on a sphere")
       .def(py::init<>())
       .def_readwrite("rows", &Geometry::rows)

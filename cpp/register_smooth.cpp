@@ -1,13 +1,16 @@
-// Bindings for leg pricing and smoothing (seaway/_segments.py, seaway/smooth.py): the chart's
-// cost raster and land mask (read in place, kept alive here) and its grid.
+// Bindings for leg pricing and smoothing (seaway.chart.legs, seaway.smoothing): a smoothable
+// model (caps.smoothable: its raster, read in place and kept alive here, and its own rule), the
+// chart's land mask and its grid.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
+#include "models.hpp"
 #include "seaway/smooth.hpp"
 
 namespace py = pybind11;
@@ -18,7 +21,8 @@ namespace {
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 struct Pricer {
-  py::array keep_values, keep_land;
+  py::object keep_values;
+  py::array keep_land;
   LegPricer pricer;
 };
 
@@ -30,33 +34,31 @@ std::vector<Point> points_of(const Array& a, const char* what) {
   return out;
 }
 
-Pricer make(const py::array& values, const std::optional<py::array_t<std::uint8_t, py::array::c_style>>& land,
-            const Geometry& g, const std::string& rule, int half) {
-  auto fits = [&](const py::array& a) {
-    return a.ndim() == 2 && a.shape(0) == g.rows && a.shape(1) == g.cols &&
-           (a.flags() & py::array::c_style);
-  };
-  const bool single = py::isinstance<py::array_t<float>>(values);
-  if (!fits(values) || !(single || py::isinstance<py::array_t<double>>(values)))
-    throw std::invalid_argument("the cost raster must be a C-contiguous float32 or float64 array of the grid's shape");
-  if (land && !fits(*land)) throw std::invalid_argument("the land mask must have the grid's shape");
-  LegRule r;
-  if (rule == "integral") r = LegRule::integral;
-  else if (rule == "max") r = LegRule::max;
-  else if (rule == "mean") r = LegRule::mean;
-  else throw std::invalid_argument("rule must be 'integral', 'max' or 'mean', got '" + rule + "'");
-  const float* uf = single ? static_cast<const float*>(values.data()) : nullptr;
-  const double* ud = single ? nullptr : static_cast<const double*>(values.data());
+template <class M>
+Pricer make(const M& model, const std::optional<py::array_t<std::uint8_t, py::array::c_style>>& land,
+            const Geometry& g, int half) {
+  if (model.rows != g.rows || model.cols != g.cols)
+    throw std::invalid_argument("the model's cost raster must have the grid's shape");
+  if (land && (land->ndim() != 2 || land->shape(0) != g.rows || land->shape(1) != g.cols))
+    throw std::invalid_argument("the land mask must have the grid's shape");
+  const float* uf = model.single ? static_cast<const float*>(model.u) : nullptr;
+  const double* ud = model.single ? nullptr : static_cast<const double*>(model.u);
   const std::uint8_t* l = land ? land->data() : nullptr;
-  return Pricer{values, land ? py::array(*land) : py::array(), LegPricer(uf, ud, l, g, r, half)};
+  const LegRule rule = LegRule::of<typename M::template Rule<double>>();
+  return Pricer{model.keep, land ? py::array(*land) : py::array(), LegPricer(uf, ud, l, g, rule, half)};
 }
 
 }  // namespace
 
 void register_smooth(py::module_& m) {
-  py::class_<Pricer>(m, "LegPricer", "Cost and land test of arbitrary straight legs (legs.hpp)")
-      .def(py::init(&make), py::arg("values"), py::arg("land"), py::arg("grid"), py::arg("rule"),
-           py::arg("half"))
+  py::class_<Pricer> cls(m, "LegPricer", "Cost and land test of arbitrary straight legs (legs.hpp)");
+  for_each_model(Models{}, [&](auto* tag) {
+    using M = std::remove_pointer_t<decltype(tag)>;
+    if constexpr (M::caps.smoothable)
+      cls.def(py::init(&make<M>), py::arg("model"), py::arg("land"), py::arg("grid"), py::arg("half"),
+                 "Legs priced by the model's own rule (a smoothable model of seaway._core)");
+  });
+  cls
       .def("leg", [](const Pricer& s, double r0, double c0, double r1, double c1) {
              const auto [cost, length] = s.pricer.leg({r0, c0}, {r1, c1});
              return py::make_tuple(cost, length);

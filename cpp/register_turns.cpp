@@ -1,12 +1,14 @@
 // Bindings for the turn-penalty search (seaway/turns.hpp): route_turns(router, model, ...) for
-// the static edge-cost models. The time, fuel and wave-danger models are not offered: their
-// cost is not in the penalty's units and the time model's label is a clock (seaway._via says so).
-// Python (seaway/_via.py) validates the penalty table first; errors here are last-line guards.
+// the models with caps.turn_penalty (a cost per unit length in the penalty's units; not a
+// clock). Python (seaway.engine.constrained) validates the penalty table first; errors here are
+// last-line guards.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "results.hpp"
@@ -35,7 +37,7 @@ void def_route_turns(py::module_& m) {
             return 0;
           });
         }
-        return route_tuple(out, {});
+        return answer(std::move(out));
       },
       py::arg("router"), py::arg("model"), py::arg("start"), py::arg("target"),
       py::arg("heuristic_weight"), py::arg("angle_deg"), py::arg("cost"), py::arg("incoming") = -1,
@@ -48,9 +50,10 @@ void def_route_turns(py::module_& m) {
 }  // namespace
 
 void register_turns(py::module_& m) {
-  def_route_turns<RasterModel<MaxCost>>(m);
-  def_route_turns<RasterModel<MeanCost>>(m);
-  def_route_turns<RasterModel<IntegralCost>>(m);
+  for_each_model(Models{}, [&](auto* tag) {
+    using M = std::remove_pointer_t<decltype(tag)>;
+    if constexpr (M::caps.turn_penalty) def_route_turns<M>(m);
+  });
   m.def(
       "offset_index", [](PreparedChart& chart, int di, int dj) { return chart.offset_index(di, dj); },
       py::arg("router"), py::arg("di"), py::arg("dj"), "Index of the stencil offset (di, dj), or -1.");

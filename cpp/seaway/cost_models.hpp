@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "capabilities.hpp"
 #include "passability.hpp"
 #include "stencil.hpp"
 
@@ -29,28 +30,36 @@ inline StepBounds raster_bounds(const Passability& p, bool per_length = true) {
 // Grinyak et al. 2022: d = max(u_i, u_j) * r.
 template <class T>
 struct MaxCost {
+  static constexpr Capabilities caps = raster_rule;
+  // The rule per unit length between two pixels of costs a and b (also along legs: legs.hpp).
+  static double pair(double a, double b) { return std::max(a, b); }
   const T* u;
   StepBounds bounds(const Passability& p) const { return raster_bounds(p); }
   template <class Cell>
   double operator()(std::int64_t v, std::int64_t w, int, double r, double, Cell&&) const {
-    return std::max(double(u[v]), double(u[w])) * r;
+    return pair(double(u[v]), double(u[w])) * r;
   }
 };
 
 // Grinyak et al. 2018: d = (u_i + u_j) / 2 * r.
 template <class T>
 struct MeanCost {
+  static constexpr Capabilities caps = raster_rule;
+  static double pair(double a, double b) { return 0.5 * (a + b); }
   const T* u;
   StepBounds bounds(const Passability& p) const { return raster_bounds(p); }
   template <class Cell>
   double operator()(std::int64_t v, std::int64_t w, int, double r, double, Cell&&) const {
-    return 0.5 * (double(u[v]) + double(u[w])) * r;
+    return pair(double(u[v]), double(u[w])) * r;
   }
 };
 
 // The exact line integral of the piecewise-constant field along the straight step.
 template <class T>
 struct IntegralCost {
+  static constexpr Capabilities caps = raster_rule;
+  // Legs are priced by the same rule: the sum of length x cost over the pixels crossed.
+  static constexpr bool line_integral = true;
   const T* u;
   const std::vector<Offset>* stencil;
   StepBounds bounds(const Passability& p) const { return raster_bounds(p); }
@@ -63,9 +72,27 @@ struct IntegralCost {
   }
 };
 
+// The step's length alone: the shortest route through the passable pixels (the raster decides
+// only where the ship may go). The smallest complete model, the worked example of
+// docs/dev/cost-models.md: the search, the bidirectional and landmark searches, the turn
+// penalty and smoothing all take it because of its caps.
+template <class T>
+struct LengthCost {
+  static constexpr Capabilities caps = raster_rule;
+  static double pair(double, double) { return 1.0; }
+  const T* u;
+  StepBounds bounds(const Passability& p) const { return {p.passable ? 1.0 : 0.0, 1.0, true}; }
+  template <class Cell>
+  double operator()(std::int64_t, std::int64_t, int, double r, double, Cell&&) const {
+    return r;
+  }
+};
+
 // scikit-image's MCP (non-geometric): the cost of the pixel entered, whatever the step.
 template <class T>
 struct EnteredPixelCost {
+  // Static, but a step costs the pixel it enters: not symmetric, not per unit length.
+  static constexpr Capabilities caps{true, false, false, false, false};
   const T* u;
   StepBounds bounds(const Passability& p) const { return raster_bounds(p, false); }
   template <class Cell>

@@ -39,6 +39,7 @@ struct IceSeries {
 
 class IceSeasonTime {
  public:
+  static constexpr Capabilities caps = on_the_clock;
   IceSeasonTime(const Geometry& g, const std::vector<Offset>& st, const IceSeries& s)
       : g_(g), st_(st), s_(s) {
     corners_.resize(st.size());

@@ -1,14 +1,15 @@
 // The cost and land test of an arbitrary straight leg on a chart, consistent with the engine
-// (the rules are documented in seaway/_segments.py, which binds this class).
+// (the rules are documented in seaway.chart.legs, which binds this class).
 // Points are fractional (row, col) pixel indices; pixel (i, j) is the closed square
 // [i - 1/2, i + 1/2] x [j - 1/2, j + 1/2]. A leg is forbidden when its closed path touches the
 // closed square of an impassable pixel or leaves the chart. On geographic charts the path is
 // the great circle, followed through index space as a polyline with a vertex every <= 4
 // pixels; a leg that is one of the engine's stencil steps is the engine's straight segment.
 // Cost: split the path at pixel borders into pieces (length l_k in pixel of cost u_k);
-// integral: sum l_k u_k; max / mean: the engine's rule on the chain of pixels crossed, each
-// move between consecutive pixels of length (l_k + l_k+1) / 2 (the end half-pieces go to the
-// end moves); a stencil step costs exactly what the engine charges.
+// the model's own rule prices them (LegRule::of<Functor>, from cost_models.hpp): a line integral
+// sums l_k u_k; a pair rule (max, mean) is applied to the chain of pixels crossed, each move
+// between consecutive pixels of length (l_k + l_k+1) / 2 (the end half-pieces go to the end
+// moves); a stencil step costs exactly what the engine charges.
 #pragma once
 
 #include <algorithm>
@@ -17,15 +18,9 @@
 #include <utility>
 #include <vector>
 
-#include "geometry.hpp"
+#include "leg_path.hpp"
 
 namespace seaway {
-
-enum class LegRule { integral, max, mean };
-
-struct Point {
-  double r, c;
-};
 
 class LegPricer {
  public:
@@ -48,15 +43,14 @@ class LegPricer {
     }
     double total = 0;
     for (const Piece& k : pieces_) total += k.len;
-    if (rule_ == LegRule::integral) {
+    if (!rule_.pair) {
       double s = 0;
       for (const Piece& k : pieces_) s += k.len * k.u;
       return {s, total};
     }
     if (step) {
       const double a = at(std::int64_t(p.r), std::int64_t(p.c)), b = at(std::int64_t(q.r), std::int64_t(q.c));
-      const double f = rule_ == LegRule::max ? std::max(a, b) : (a + b) / 2;
-      return {f * total, total};
+      return {rule_.pair(a, b) * total, total};
     }
     // One entry per pixel crossed (consecutive pieces in the same pixel merged).
     merged_.clear();
@@ -65,14 +59,14 @@ class LegPricer {
       else merged_.push_back(pieces_[i]);
     }
     const std::size_t n = merged_.size();
-    if (n == 1) return {merged_[0].len * merged_[0].u, total};
+    if (n == 1) return {merged_[0].len * rule_.pair(merged_[0].u, merged_[0].u), total};
     double s = 0;
     for (std::size_t i = 0; i + 1 < n; ++i) {
       double move = (merged_[i].len + merged_[i + 1].len) / 2;
       if (i == 0) move += merged_[0].len / 2;
       if (i + 2 == n) move += merged_[n - 1].len / 2;
       const double a = merged_[i].u, b = merged_[i + 1].u;
-      s += move * (rule_ == LegRule::max ? std::max(a, b) : (a + b) / 2);
+      s += move * rule_.pair(a, b);
     }
     return {s, total};
   }
@@ -85,7 +79,6 @@ class LegPricer {
 
  private:
   static constexpr double eps = 1e-9;
-  static constexpr double subdivide = 4.0;  // index-space length of a great-circle leg's pieces
   struct Piece {
     double len, u;
     std::int64_t id;
@@ -96,51 +89,9 @@ class LegPricer {
            q.c == std::round(q.c) && std::max(std::fabs(q.r - p.r), std::fabs(q.c - p.c)) <= half_;
   }
 
-  double lat(double r) const { return g_.lat0 + r * g_.dlat; }
-  double lon(double c) const { return g_.lon0 + c * g_.dlon; }
-
-  double length(Point a, Point b) const {
-    if (!g_.geographic) return std::hypot((b.r - a.r) * g_.dy, (b.c - a.c) * g_.dx);
-    const double p1 = lat(a.r) * deg, p2 = lat(b.r) * deg, dl = (lon(b.c) - lon(a.c)) * deg;
-    const double s1 = std::sin((p2 - p1) / 2), s2 = std::sin(dl / 2);
-    const double x = std::clamp(s1 * s1 + std::cos(p1) * std::cos(p2) * s2 * s2, 0.0, 1.0);
-    return 2 * earth_radius_km * std::asin(std::sqrt(x));
-  }
-
-  // The path's vertices in index space: the segment, or the great circle as a polyline.
+  double length(Point a, Point b) const { return leg_length(g_, a, b); }
   void make_path(Point p, Point q, bool straight, std::vector<Point>& path) const {
-    path.clear();
-    const double n_index = std::hypot(q.r - p.r, q.c - p.c);
-    if (!g_.geographic || straight || n_index <= subdivide) {
-      path = {p, q};
-      return;
-    }
-    const int m = int(std::ceil(n_index / subdivide));
-    const double la1 = lat(p.r) * deg, lo1 = lon(p.c) * deg, la2 = lat(q.r) * deg, lo2 = lon(q.c) * deg;
-    const double a[3] = {std::cos(la1) * std::cos(lo1), std::cos(la1) * std::sin(lo1), std::sin(la1)};
-    const double b[3] = {std::cos(la2) * std::cos(lo2), std::cos(la2) * std::sin(lo2), std::sin(la2)};
-    const double cx = a[1] * b[2] - a[2] * b[1], cy = a[2] * b[0] - a[0] * b[2], cz = a[0] * b[1] - a[1] * b[0];
-    const double omega = std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
-    double prev = lon(p.c), unwrapped = prev, first = 0;
-    for (int i = 0; i <= m; ++i) {
-      const double f = double(i) / m;
-      double v[3];
-      for (int k = 0; k < 3; ++k)
-        v[k] = omega < 1e-12 ? a[k] : (std::sin((1 - f) * omega) * a[k] + std::sin(f * omega) * b[k]) / std::sin(omega);
-      const double la = std::atan2(v[2], std::hypot(v[0], v[1])) / deg;
-      const double lo = std::atan2(v[1], v[0]) / deg;
-      // Continuous longitudes (no jump over 180 degrees), then shifted so the first is lon(p).
-      double d = std::fmod(lo - prev + 180.0, 360.0);
-      if (d < 0) d += 360.0;
-      unwrapped += d - 180.0;
-      prev = lo;
-      if (i == 0) first = unwrapped;
-      path.push_back({(la - g_.lat0) / g_.dlat, (unwrapped + (lon(p.c) - first) - g_.lon0) / g_.dlon});
-    }
-    path.front() = p;
-    // Across the seam of a 360-degree chart the path ends at q's column plus a whole turn.
-    const double turns = g_.wrap ? std::round((path.back().c - q.c) / double(g_.cols)) : 0.0;
-    path.back() = {q.r, q.c + turns * double(g_.cols)};
+    leg_path(g_, p, q, straight, path);
   }
 
   // Cost of pixel (r, c): inf outside the chart; columns wrap on a 360-degree chart.

@@ -33,6 +33,7 @@ struct TimeWindows {
 template <class Inner>
 class ZonedTime {
  public:
+  static constexpr Capabilities caps = Inner::caps;
   ZonedTime(const Inner& inner, const TimeWindows& z, const Geometry& g, const std::vector<Offset>& st)
       : inner_(inner), z_(z), g_(g), st_(st) {}
 
@@ -97,6 +98,7 @@ class ZonedTime {
 // Base (a time model struct of models.hpp) with zones closed in time windows on its grid.
 template <class Base>
 struct Zoned {
+  static constexpr Capabilities caps = Base::caps;
   Base base;
   TimeWindows zones;
 
@@ -123,7 +125,7 @@ struct Zoned {
       const std::uint8_t bits = m.bits(v, w, o);
       wait.push_back(bits && h < inf ? m.departure(v, w, o, r, t, h, bits, no_cell) - t : 0.0);
     }
-    values.emplace_back("wait_h", std::move(wait));
+    values.wait_h = std::move(wait);
     return values;
   }
 };

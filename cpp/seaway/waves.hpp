@@ -37,6 +37,7 @@ inline double wave_danger(double hs_m, double length_m, double alpha, double shi
 
 class WaveDangerCost {
  public:
+  static constexpr Capabilities caps = on_one_frame;
   // Fields (rows x cols, float32): significant height (m), direction the waves come from
   // (degrees true), mean period (s).
   WaveDangerCost(const Geometry& g, const std::vector<Offset>& st, const float* hs,

@@ -67,6 +67,7 @@ inline double speed_over_ground_kn(double v, double vt, double q) {
 
 class WeatherTime {
  public:
+  static constexpr Capabilities caps = on_the_clock;
   WeatherTime(const Geometry& g, const std::vector<Offset>& st, const Forecast& f, const Vessel& v,
               double best_speed_kn)
       : g_(g), f_(f), v_(v), n_off_(std::int64_t(st.size())), best_kn_(best_speed_kn) {
@@ -141,6 +142,7 @@ class WeatherTime {
 // so the time a step starts is not known during the search).
 class FuelLagrangian {
  public:
+  static constexpr Capabilities caps = on_one_frame;
   FuelLagrangian(const WeatherTime& physics, std::vector<double> settings_kn,
                  std::vector<double> rate_t_per_h, double lambda, double best_extra_kn)
       : physics_(physics), settings_(std::move(settings_kn)), rate_(std::move(rate_t_per_h)),

@@ -191,7 +191,7 @@ def test_numpy_int_neighbourhood_is_fine():
 
 
 @pytest.mark.parametrize("kw, match", [
-    ({"edge_cost": "min"}, r"edge_cost must be one of \('max', 'mean', 'integral'\), got 'min'"),
+    ({"edge_cost": "min"}, r"edge_cost must be one of \('max', 'mean', 'integral', 'length'\), got 'min'"),
     ({"edge_cost": "entered"}, "edge_cost must be one of"),
     ({"directions": "diag"}, r"directions must be one of \('full', 'unique'\)"),
     ({"directions": "axis"}, "directions must be one of"),

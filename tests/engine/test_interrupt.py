@@ -66,7 +66,7 @@ def test_a_cancel_token_stops_the_engine_from_any_thread(big):
         chart.router.route(chart.model.engine(chart), 0, big.size - 1, 0.0, token)
     assert token.is_set
     fresh = seaway.route(big, (0, 0), (0, 5), neighbourhood=5, method="dijkstra").cost
-    assert chart.router.route(chart.model.engine(chart), 0, 5, 0.0)[0] == fresh
+    assert chart.router.route(chart.model.engine(chart), 0, 5, 0.0).cost == fresh
 
 
 # -- workspace reuse after Ctrl-C and progress of long searches (issue 13) --------------------
@@ -110,7 +110,7 @@ def test_settled_counter_is_published_every_4096_expansions():
     token = _core.CancelToken()
     assert token.settled == 0
     _, stats = chart.router.field(chart.model.engine(chart), 0, token)
-    assert stats["settled"] == 200 * 150
+    assert stats.settled == 200 * 150
     assert token.settled == (200 * 150) // 4096 * 4096  # the last multiple of 4096 reached
 
 

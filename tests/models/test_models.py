@@ -32,7 +32,7 @@ def test_unknown_model_names_raise_with_the_list():
     for call in (lambda: seaway.route(cost, (0, 0), (4, 4), edge_cost="maximum"),
                  lambda: seaway.prepare(cost).route((0, 0), (4, 4), model="time"),
                  lambda: seaway.prepare(cost, edge_cost="entered")):
-        with pytest.raises(ValueError, match=r"edge_cost must be one of \('max', 'mean', 'integral'\)"):
+        with pytest.raises(ValueError, match=r"edge_cost must be one of \('max', 'mean', 'integral', 'length'\)"):
             call()
     with pytest.raises(TypeError, match="CostModel"):
         seaway.prepare(cost).route((0, 0), (4, 4), model=3)

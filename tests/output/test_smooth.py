@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import seaway
-from seaway.chart.legs import Segments
+from seaway.models import EdgeCost
 from seaway import smooth
 
 from support.reference import refraction_optimum
@@ -18,7 +18,7 @@ def test_leg_model_reproduces_engine_cost(edge_cost, k):
     cost = rng.uniform(1, 5, (40, 50))
     cost[10:30, 20:23] = np.inf
     r = seaway.route(cost, (20, 2), (18, 45), neighbourhood=k, edge_cost=edge_cost)
-    assert Segments(r.chart, edge_cost, k).cost(r.vertices) == pytest.approx(r.cost, rel=1e-12)
+    assert EdgeCost(edge_cost).segments(r.chart, k).cost(r.vertices) == pytest.approx(r.cost, rel=1e-12)
     assert r.costs().sum() == pytest.approx(r.cost, rel=1e-12)
 
 
@@ -34,7 +34,7 @@ def test_long_geographic_leg_follows_the_great_circle():
     uniform chart, and its path bulges poleward (rows decrease) as a great circle does."""
     lat, lon = np.linspace(70, 60, 101), np.linspace(170, 190, 201)
     r = seaway.route(np.ones((101, 201)), (69, 171), (61, 189), lat=lat, lon=lon)
-    seg = Segments(r.chart, "integral", 5)
+    seg = EdgeCost("integral").segments(r.chart, 5)
     c, km = seg.leg(np.array([10.0, 2.0]), np.array([10.0, 190.0]))
     assert c == pytest.approx(seaway._core.haversine_km(69, 170.2, 69, 189.0), rel=1e-12)
     assert km == pytest.approx(c)
@@ -95,7 +95,7 @@ def test_smoothing_never_raises_cost(edge_cost):
         assert s.costs().sum() == pytest.approx(s.cost)
         assert s.stats.smoothing.course_changes_after == s.course_changes
         # the smoothed waypoints re-priced from scratch give the same cost
-        assert Segments(r.chart, edge_cost, k).cost(s.points) == pytest.approx(s.cost, rel=1e-12)
+        assert EdgeCost(edge_cost).segments(r.chart, k).cost(s.points) == pytest.approx(s.cost, rel=1e-12)
 
 
 def test_smoothed_geographic_route_has_coords_and_length():
@@ -119,7 +119,7 @@ def test_cpp_legs_match_the_numpy_reference(grid, edge_cost):
     u = np.where(np.isfinite(u), u, 1.0)  # keep most legs open: land comes from the mask only
     land = land & (np.random.default_rng(1).random(u.shape) < 0.3)
     chart = seaway.prepare(u, land=land, **geo).chart
-    ours, ref = Segments(chart, edge_cost, 5), NumpySegments(chart, edge_cost, 5)
+    ours, ref = EdgeCost(edge_cost).segments(chart, 5), NumpySegments(chart, edge_cost, 5)
     rng = np.random.default_rng(2)
     rows, cols = u.shape
     pts = np.column_stack([rng.uniform(-0.4, rows - 0.6, 600), rng.uniform(-0.4, cols - 0.6, 600)])

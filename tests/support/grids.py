@@ -12,7 +12,7 @@ import pytest
 from support.reference import RefGraph, haversine
 
 
-EDGE_COSTS = ("max", "mean", "integral")
+EDGE_COSTS = ("max", "mean", "integral", "length")
 
 
 KS = (3, 5, 7)

@@ -128,6 +128,8 @@ class RefGraph:
                     w = np.maximum(u[I, J], u[I2, J2]) * r
                 elif edge_cost == "mean":
                     w = (u[I, J] + u[I2, J2]) / 2 * r
+                elif edge_cost == "length":
+                    w = r
                 else:
                     s = np.zeros(I.shape)
                     for (a, b), f in pieces(di, dj):

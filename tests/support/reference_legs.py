@@ -140,6 +140,8 @@ class Segments:
         total = float(ell.sum())
         if self.edge_cost == "integral":
             return float(ell @ u), total
+        if self.edge_cost == "length":
+            return total, total
         if step:
             ue = self._u_at(np.array([p[0], q[0]], np.int64), np.array([p[1], q[1]], np.int64))
             f = max(ue) if self.edge_cost == "max" else (ue[0] + ue[1]) / 2

@@ -12,7 +12,7 @@ one of the engine's stencil steps (pixel centres, offset within the k x k square
 engine's straight segment in index space, so it costs exactly what the engine charges.
 
 Cost of a leg: split the path at pixel boundaries into pieces of lengths l_k (great-circle km or
-planar units) inside pixels of cost u_k.
+planar units) inside pixels of cost u_k, priced by the model's own rule (the C++ functor's):
 * "integral": sum l_k u_k (the engine's exact line integral).
 * "max" / "mean": the engine's edge rule applied to the chain of pixels the leg crosses: the
   move between consecutive pixels k, k+1 has length (l_k + l_(k+1))/2 (the first and last
@@ -33,15 +33,19 @@ SUBDIVIDE = 4.0  # index-space length of the pieces a great-circle leg is follow
 
 
 class Segments:
-    def __init__(self, chart, edge_cost: str = "integral", neighbourhood: int = 3):
-        self.chart, self.edge_cost, self.half = chart, edge_cost, (neighbourhood - 1) // 2
+    """Legs on `chart` priced under `model`, a smoothable engine model of seaway._core built on
+    the chart's cost raster (e.g. _core.MaxCost(chart.values); seaway.models.EdgeCost.segments
+    builds it), with the land rule of a k x k stencil (`neighbourhood`)."""
+
+    def __init__(self, chart, model, neighbourhood: int = 3):
+        self.chart, self.half = chart, (neighbourhood - 1) // 2
         g = chart.grid
         grid = _core.Grid()
         for name in ("rows", "cols", "geographic", "dx", "dy", "lat0", "dlat", "lon0", "dlon"):
             setattr(grid, name, getattr(g, name))
         grid.wrap = bool(chart.geographic and g.wrap)
         # reads chart.values and chart.land in place: NaN, inf, negative and land are impassable
-        self.pricer = _core.LegPricer(chart.values, chart.land, grid, edge_cost, self.half)
+        self.pricer = _core.LegPricer(model, chart.land, grid, self.half)
 
     def coords(self, pts) -> np.ndarray:
         return index_coords(self.chart, pts)

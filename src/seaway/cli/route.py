@@ -159,8 +159,8 @@ def add_route_command(commands) -> None:
     rp.add_argument("--neighbourhood", type=neighbourhood, default=5, metavar="K",
                     help="k of the k x k stencil: odd, 3 to 15 (default 5, as in Grinyak et al. 2022)")
     rp.add_argument("--edge-cost", default="max", choices=tuple(EDGE_COSTS),
-                    help="step cost: max (Grinyak et al. 2022), mean (Grinyak et al. 2018) or integral (exact line "
-                         "integral); default max")
+                    help="step cost: max (Grinyak et al. 2022), mean (Grinyak et al. 2018), integral (exact line "
+                         "integral) or length (the shortest route through passable water); default max")
     rp.add_argument("--method", default="auto", choices=CLI_METHODS,
                     help="search algorithm (all exact; default auto: the fastest for the query)")
     rp.add_argument("--no-smooth", action="store_true",

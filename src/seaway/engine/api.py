@@ -33,8 +33,9 @@ def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, ne
     neighbourhood: k of the k x k stencil (odd, 3..15).
     directions: "full" (every offset of the square) or "unique" (only offsets with
         gcd(|di|, |dj|) = 1).
-    edge_cost: one of seaway.models.EDGE_COSTS: "max" (Grinyak et al. 2022), "mean" (Grinyak et al. 2018) or
-        "integral" (exact line integral).
+    edge_cost: one of seaway.models.EDGE_COSTS: "max" (Grinyak et al. 2022), "mean" (Grinyak et al. 2018),
+        "integral" (exact line integral) or "length" (the shortest route through passable pixels:
+        the costs only decide where the ship may go).
     method: "auto" (default: the fastest exact method for the query), "dijkstra", "astar",
         "bidirectional" or "landmarks" (exact; see seaway.engine.methods); "astar" with weight=w > 1
         is weighted A* (cost <= w x optimum).

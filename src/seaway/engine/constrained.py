@@ -11,6 +11,7 @@ from .. import _core
 from ..base.interrupt import interruptible
 from ..chart.locate import locate
 from ..models.base import TurnPenalised
+from ..models.results import StepValues
 from ..result.route import Route
 from ..result.stats import Constraints, RouteStats, SearchStats
 from .methods import EDGE_COST_NAMES
@@ -114,7 +115,7 @@ def route_constrained(prepared, start, end, model, method, weight, via, turn_pen
         raise ValueError(f"via points on a {model.name!r} route need each leg to depart when the "
                          "last one arrives, which this model cannot do yet; route the legs one by "
                          "one with their departures")
-    pixels, steps, per_step = np.zeros((0, 2), np.int64), [], {}
+    pixels, steps, per_step = np.zeros((0, 2), np.int64), [], StepValues()
     figures = SearchStats()
     leg_model, elapsed = model, 0.0
     for i, (s, e) in enumerate(zip(located[:-1], located[1:])):
@@ -129,8 +130,7 @@ def route_constrained(prepared, start, end, model, method, weight, via, turn_pen
         leg = found.pixels(chart.shape[1])
         pixels = leg if i == 0 else np.concatenate([pixels, leg[1:]])
         steps.append(np.diff(found.cumulative))
-        for k, v in found.per_step.items():
-            per_step[k] = np.concatenate([per_step[k], v]) if k in per_step else np.asarray(v)
+        per_step = per_step.then(found.per_step)
         figures = found.stats if i == 0 else figures.plus(found.stats)
     asked = Constraints(via_pixels=tuple((int(p[0]), int(p[1])) for p in located[1:-1]),
                         turn_penalty=None if turns is None else dict(zip(*turns)))

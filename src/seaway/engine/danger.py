@@ -13,6 +13,7 @@ from .. import _core
 from ..base.interrupt import interruptible
 from ..chart.locate import locate
 from ..constraints import timed_zone_engine
+from ..models.results import StepValues
 from ..result.stats import Danger, DangerLeg
 from .methods import heuristic_weight
 from .result import Search, to_route
@@ -58,7 +59,7 @@ def least_danger_route(prepared, model, start, end, method):
     if not found.found:
         return None
     r = to_route(prepared, found, model, method)
-    r = model.finish(r, {})
+    r = model.finish(r, StepValues())
     danger_h = np.asarray(danger_h, dtype=float)
     r.stats = dataclasses.replace(r.stats, danger=Danger(
         hours=float(danger_h.sum()), step_h=danger_h, legs=danger_stretches(r, danger_h, 0.0)))

@@ -9,6 +9,7 @@ import numpy as np
 
 from ..chart.locate import check_overflow, describe
 from ..errors import NoRouteError
+from ..models.results import StepValues
 from ..result.route import Route
 from ..result.stats import RouteStats, SearchStats
 
@@ -16,20 +17,19 @@ from ..result.stats import RouteStats, SearchStats
 @dataclass(frozen=True)
 class Search:
     """One search between two pixels: cost (inf when unreachable), the flat pixel path, the
-    figures, the cost to each path pixel and the model's values per step ({name: array})."""
+    figures, the cost to each path pixel and the model's values per step."""
 
     cost: float
     path: np.ndarray
     stats: SearchStats
     cumulative: np.ndarray
-    per_step: dict = field(default_factory=dict)
+    per_step: StepValues = field(default_factory=StepValues)
 
     @classmethod
     def from_core(cls, result) -> Search:
-        """From the C++ result tuple (cpp/results.hpp route_tuple)."""
-        cost, path, stats, cumulative, per_step = result
-        return cls(float(cost), np.asarray(path), SearchStats.from_core(stats),
-                   np.asarray(cumulative, float), dict(per_step))
+        """From the C++ search's answer (_core.QueryResult, cpp/results.hpp)."""
+        return cls(float(result.cost), np.asarray(result.path), SearchStats.from_core(result.stats),
+                   np.asarray(result.cumulative, float), StepValues.from_core(result.steps))
 
     @property
     def found(self) -> bool:

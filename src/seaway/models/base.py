@@ -16,6 +16,7 @@ import numpy as np
 
 from .. import _core
 from ..chart.legs import Segments
+from .results import StepValues
 
 #: The static edge costs over a raster of cost per unit length: name -> engine class. The
 #: public list: the API, the CLI choices and the error texts come from it.
@@ -23,8 +24,10 @@ EDGE_COSTS = {
     "max": _core.MaxCost,  # Grinyak et al. 2022: max(u_i, u_j) x length
     "mean": _core.MeanCost,  # Grinyak et al. 2018: (u_i + u_j) / 2 x length
     "integral": _core.IntegralCost,  # the exact line integral along the step
+    "length": _core.LengthCost,  # the step's length: the shortest route through passable pixels
 }
-_PAIR_COSTS = {"max": _core.max_pair_costs, "mean": _core.mean_pair_costs}
+_PAIR_COSTS = {"max": _core.max_pair_costs, "mean": _core.mean_pair_costs,
+               "length": _core.length_pair_costs}
 
 
 class CostModel:
@@ -65,7 +68,7 @@ class CostModel:
         """Refuse a start or end pixel (row, col; end None for a cost field) this model can
         never use, naming why and the fix; the chart has checked land already."""
 
-    def finish(self, route, per_step: dict):
+    def finish(self, route, per_step: StepValues):
         """The Route with what this model adds: its typed result built from the per-step values
         (seaway.models.results: a Voyage or FuelUse, put in route.stats with
         dataclasses.replace) and its speed."""
@@ -98,7 +101,8 @@ class EdgeCost(CostModel):
         self.name = rule
 
     def unit(self, geographic):
-        return "cost x km" if geographic else "cost x grid unit"
+        length = "km" if geographic else "grid unit"
+        return length if self.name == "length" else f"cost x {length}"  # length: r alone
 
     def engine(self, prepared):
         return EDGE_COSTS[self.name](prepared.chart.values)
@@ -110,7 +114,7 @@ class EdgeCost(CostModel):
                 "larger neighbourhood, check the land mask, or choose another end point")
 
     def segments(self, chart, neighbourhood):
-        return Segments(chart, self.name, neighbourhood)
+        return Segments(chart, EDGE_COSTS[self.name](chart.values), neighbourhood)
 
     def pair_costs(self, a, b, length) -> np.ndarray:
         """Cost of steps of `length` between pixels of costs a and b, from the engine's rule

@@ -63,7 +63,7 @@ class TravelTime(_OnForecast):
         """The route's Voyage (departure and arrival when the forecast has a time axis; waits
         for zones to open, per step: none without zones, unreported by the least-danger
         fallback, which gives no per-step values) and the vessel's speed."""
-        wait_h = per_step.get("wait_h")
+        wait_h = per_step.wait_h
         if wait_h is None and not self.zones:
             wait_h = np.zeros(len(route.costs()))
         voyage = Voyage.along(route.cost, route.costs(), wait_h, self.forecast.departure,
@@ -104,8 +104,8 @@ class Fuel(_OnForecast):
 
     def finish(self, route, per_step):
         """The route's FuelUse: fuel, hours and the engine setting of each step."""
-        setting = per_step["setting"].astype(np.int64)
-        use = FuelUse(fuel_t=float(np.sum(per_step["fuel_t"])), hours=float(np.sum(per_step["hours"])),
+        setting = per_step.setting.astype(np.int64)
+        use = FuelUse(fuel_t=float(np.sum(per_step.fuel_t)), hours=float(np.sum(per_step.hours)),
                       speeds_kn=np.asarray(self.fuel.speeds_kn, dtype=np.float64)[setting],
                       time_value_t_per_h=self.time_value_t_per_h)
         route.stats = dataclasses.replace(route.stats, fuel=use)

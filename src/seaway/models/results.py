@@ -6,7 +6,7 @@ sits below the route's."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Literal, NamedTuple
+from typing import Any, Literal, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
@@ -102,3 +102,41 @@ class FuelUse:
     #: The time value the route was priced with, tonnes of fuel per hour (cost = fuel_t +
     #: time_value_t_per_h x hours).
     time_value_t_per_h: float
+
+
+_Steps = npt.NDArray[np.float64] | None
+
+
+@dataclass(frozen=True, eq=False)
+class StepValues:
+    """What a model's search reports per step beside the route (one value per step; None where
+    the model reports nothing), from the C++ search's typed StepValues; CostModel.finish reads it."""
+
+    #: The fuel model: the engine setting of each step (an index into the fuel curve).
+    setting: _Steps = None
+    #: The fuel model: hours of each step.
+    hours: _Steps = None
+    #: The fuel model: fuel burnt on each step, tonnes.
+    fuel_t: _Steps = None
+    #: A season of ice charts: the hour each step leaves its first pixel (after any wait).
+    depart_h: _Steps = None
+    #: Zones closed in time windows: hours waited before each step for a zone to open.
+    wait_h: _Steps = None
+
+    @classmethod
+    def from_core(cls, s: Any) -> StepValues:
+        """From the C++ search's values (_core.StepValues)."""
+        return cls(**{f: _floats(getattr(s, f)) for f in _FIELDS})
+
+    def then(self, other: StepValues) -> StepValues:
+        """These steps followed by `other`'s (the legs of a route through via points)."""
+        def join(a: _Steps, b: _Steps) -> _Steps:
+            return a if b is None else b if a is None else np.concatenate([a, b])
+        return StepValues(**{f: join(getattr(self, f), getattr(other, f)) for f in _FIELDS})
+
+
+_FIELDS = ("setting", "hours", "fuel_t", "depart_h", "wait_h")
+
+
+def _floats(x: Any) -> _Steps:
+    return None if x is None else np.asarray(x, dtype=np.float64)

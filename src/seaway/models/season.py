@@ -77,7 +77,7 @@ class IceSeasonTime(CostModel):
         """The route's Voyage: every wait, the charts its steps crossed (the one valid when each
         step departs) and the ice class."""
         hours, cum = route.cost, np.concatenate([[0.0], np.cumsum(route.step_costs)])
-        depart = per_step["depart_h"]
+        depart = per_step.depart_h
         used = np.unique(np.searchsorted(self.valid_from_h, depart, side="right") - 1)
         times = self.season.times[self.season.times.size - self.valid_from_h.size:]
         voyage = Voyage.along(hours, route.step_costs, depart - cum[:-1], self.departure,

@@ -7,8 +7,8 @@ dataclasses.replace(route.stats, part=...)."""
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -35,10 +35,10 @@ class SearchStats:
     min_cost: float = float("inf")
 
     @classmethod
-    def from_core(cls, d: Mapping[str, float]) -> SearchStats:
-        """From the C++ search's figures."""
-        return cls(settled=int(d["settled"]), heap_peak=int(d["heap_peak"]),
-                   state_bytes=int(d["state_bytes"]), min_cost=float(d["min_cost"]))
+    def from_core(cls, s: Any) -> SearchStats:
+        """From the C++ search's figures (_core.SearchStats)."""
+        return cls(settled=int(s.settled), heap_peak=int(s.heap_peak), state_bytes=int(s.state_bytes),
+                   min_cost=float(s.min_cost))
 
     def plus(self, other: SearchStats) -> SearchStats:
         """Two legs' figures: settled adds up, the peaks take the larger."""
