@@ -1,4 +1,4 @@
-"""Issue 12: exact searches faster than Dijkstra, and the route quality of smoothing.
+"""Exact searches faster than Dijkstra, and the route quality of smoothing.
 
 * One route on a fresh chart (seaway.route: validation, preparation and search; nothing kept
   between rounds), default method="auto" (bidirectional Dijkstra on two threads on the winter

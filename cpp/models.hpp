@@ -164,7 +164,7 @@ struct WaveDangerModel : NoStepValues {
   }
 };
 
-// Hours through a season of ice charts (issue 10): hours per km, float32 (frames, rows, cols),
+// Hours through a season of ice charts: hours per km, float32 (frames, rows, cols),
 // frame k valid from valid_from_h[k] hours after departure; waiting allowed (ice_time.hpp).
 struct IceSeasonModel {
   static constexpr Capabilities caps = IceSeasonTime::caps;

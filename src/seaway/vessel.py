@@ -48,6 +48,7 @@ class Vessel:
                           f"{limit:.2f} m; the forecast has {max_hs_m:.2f} m")
 
     def check(self):
+        """Validate the numbers (ValueError or TypeError naming the argument and the fix)."""
         number(self.speed_kn, "speed_kn", above=0, what="positive", example=12.0)
         for name in ("displacement_t", "max_wind_ms", "max_wave_m"):
             number(getattr(self, name), name, above=0)

@@ -74,7 +74,7 @@ def interruptible(search):
     The main thread waits on an Event, not Thread.join: in CPython 3.11 a KeyboardInterrupt
     that interrupts join() marks the thread as stopped while it still runs (bpo-45274's
     cleanup releases the running thread's own lock), so a later join() returned at once and
-    the cancelled search kept its workspace (issue 13)."""
+    the cancelled search kept its workspace."""
     if threading.current_thread() is not threading.main_thread():
         return search(None)
     token = _core.CancelToken()

@@ -20,7 +20,7 @@ planar units) inside pixels of cost u_k, priced by the model's own rule (the C++
   length; a leg inside one pixel costs l_0 u_0. A stencil step of the engine costs what the
   engine charges (max(u_i, u_j) r or (u_i + u_j)/2 r: only its two ends count).
 A piece lying exactly on a pixel boundary is charged the larger of the two sides.
-tests/reference_legs.py keeps the former numpy implementation as the check of the C++ one."""
+tests/support/reference_legs.py keeps the former numpy implementation as the check of the C++ one."""
 
 from __future__ import annotations
 
@@ -100,3 +100,17 @@ def index_coords(chart, pts) -> np.ndarray:
 def _step(v, default):
     v = np.asarray(v, float)
     return float((v[-1] - v[0]) / (v.size - 1)) if v.size > 1 else float(default)
+
+
+def turning_points(v) -> np.ndarray:
+    """Indices of the vertices of the polyline `v` ((n, 2) row, col) where its direction
+    changes, with both ends."""
+    v = np.asarray(v, float)
+    if len(v) < 3:
+        return np.arange(len(v))
+    d = np.diff(v, axis=0)
+    cross = d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0]
+    dot = (d[:-1] * d[1:]).sum(axis=1)
+    scale = np.hypot(*d[:-1].T) * np.hypot(*d[1:].T)
+    turn = (np.abs(cross) > 1e-9 * scale) | (dot <= 0)
+    return np.concatenate([[0], np.flatnonzero(turn) + 1, [len(v) - 1]])

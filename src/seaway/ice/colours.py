@@ -7,7 +7,7 @@ chart: by total concentration (CT, for charts whose stage of development is fair
 e.g. Arctic summer) and by stage of development (SoD, for charts of high, fairly uniform
 concentration, e.g. Arctic winter). Stage codes are SIGRID-3's (seaway.ice.codes).
 
-Checked (2026-12, issue 13): the concentration RGB values of ice free 0-100-255, < 1/10
+Checked (2026-12): the concentration RGB values of ice free 0-100-255, < 1/10
 150-200-255, 1-3/10 140-255-160 and 4-6/10 255-255-0 against the approved proposal's colour
 table (J. Falkingham for the IICWG colour sub-group, "Ice Chart Colour Standard", JCOMM ETSI,
 October 2002); the class names and colours (orange 7-8/10, red 9-10/10, grey fast ice) against

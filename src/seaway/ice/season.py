@@ -1,4 +1,4 @@
-"""A season of ice charts: routes through ice that changes during the voyage (issue 10).
+"""A season of ice charts: routes through ice that changes during the voyage.
 
 A season is an ice chart Dataset (see seaway.ice) with a `time` dimension: CT (tenths) with SA
 (WMO stage) and/or `thickness` (m), and `land`. Build one from SIGRID-3 files with their dates

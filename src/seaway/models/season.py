@@ -16,7 +16,7 @@ from .results import Voyage
 
 
 class IceSeasonTime(CostModel):
-    """Hours through a season of ice charts (issue 10): each step crosses the chart valid when
+    """Hours through a season of ice charts: each step crosses the chart valid when
     the ship starts it, at the class's speed there (Andreeva 2021's V = F * V0 via seaway.ice.andreeva,
     or a table per stage and concentration); time-optimal and exact (FIFO). Waiting is allowed
     everywhere (without it the graph is not FIFO and no label-setting search is exact); routes

@@ -20,6 +20,8 @@ from ..chart.legs import index_coords, leg_path
 from ..ice.codes import form_name, stage_name, stage_rank
 from ..ice.forms import FREE_WATER
 
+__all__ = ["Numeric", "Category", "LEAST", "STAGES", "FORMS", "CATEGORICAL"]
+
 #: Environment variables whose least value along a leg matters (reported instead of the most).
 LEAST = frozenset({"depth"})
 #: Categorical variables: a leg reports the governing stage (STAGES) or the most frequent code.

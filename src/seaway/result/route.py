@@ -11,7 +11,7 @@ import numpy as np
 from .._core import haversine_km
 from ..base import sphere as geo
 from ..base.validate import number
-from ..chart.legs import index_coords, leg_path
+from ..chart.legs import index_coords, leg_path, turning_points
 from ..chart.raster import Chart
 from ..models.base import CostModel, EdgeCost
 from .environment import along, extreme_name  # noqa: F401 - extreme_name: part of this API
@@ -42,6 +42,17 @@ class Leg:
 
 @dataclass
 class Route:
+    """A route a search returned: its pixels, cost and model, and what a navigator reads from it.
+
+    cost: the sum of the step costs, in the model's unit (``unit``: cost x km, h, t, ...).
+    pixels: (n, 2) (row, col) of its pixels, both ends included (``coords``: lat/lon or y/x).
+    method, stats: the search that found it and its figures (seaway.result.stats).
+    model, speed_kn: the cost model (seaway.models) and the speed of the leg table's times.
+
+    Waypoints are the ends and every course change: ``legs()``, ``summary()`` and ``str()`` give
+    the leg table; ``smoothed()`` removes the zig-zag, ``with_environment(ds)`` reports a chart's
+    variables along the legs, ``to_geojson()``, ``to_html()`` and seaway.export write it."""
+
     chart: Chart = field(repr=False)
     cost: float
     pixels: np.ndarray  # (n, 2) row, col; both ends included
@@ -104,6 +115,7 @@ class Route:
 
     @property
     def geographic(self) -> bool:
+        """True on lat/lon charts (lengths in km, coords lat/lon), False on planar ones."""
         return self.latlon is not None or self.chart.geographic
 
     @property
@@ -144,14 +156,7 @@ class Route:
         """Indices of the vertices that are waypoints: both ends and every course change (on a
         corridor route, every node: each leg is a great circle between nodes)."""
         v = self.vertices
-        if len(v) < 3 or self.latlon is not None:
-            return np.arange(len(v))
-        d = np.diff(v, axis=0)
-        cross = d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0]
-        dot = (d[:-1] * d[1:]).sum(axis=1)
-        scale = np.hypot(*d[:-1].T) * np.hypot(*d[1:].T)
-        turn = (np.abs(cross) > 1e-9 * scale) | (dot <= 0)
-        return np.concatenate([[0], np.flatnonzero(turn) + 1, [len(v) - 1]])
+        return np.arange(len(v)) if self.latlon is not None else turning_points(v)
 
     @property
     def waypoints(self) -> np.ndarray:
@@ -160,6 +165,7 @@ class Route:
 
     @property
     def course_changes(self) -> int:
+        """The number of waypoints between the ends (each is a change of course)."""
         return max(len(self.waypoint_index) - 2, 0)
 
     def legs(self, speed_kn: float | None = None) -> list[Leg]:

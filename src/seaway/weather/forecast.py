@@ -33,15 +33,29 @@ def find_fields(ds, variables: dict | None = None) -> dict:
 
 
 def open_forecast(path, **kwargs) -> xr.Dataset:
-    """Open a NetCDF forecast, or a GRIB one through cfgrib (pip install cfgrib)."""
+    """Open a NetCDF forecast, or a GRIB one through cfgrib (pip install "seaway[grib]")."""
     path = str(path)
     if path.endswith((".grib", ".grib2", ".grb", ".grb2")):
         try:
             import cfgrib  # noqa: F401
         except ImportError:
-            raise ImportError(f"{path}: reading GRIB needs cfgrib: pip install cfgrib") from None
-        return xr.open_dataset(path, engine="cfgrib", **kwargs)
+            raise ImportError(f'{path}: reading GRIB needs cfgrib: pip install "seaway[grib]" '
+                              f"(cfgrib and eccodes)") from None
+        return grib_times(xr.open_dataset(path, engine="cfgrib", **kwargs), path)
     return open_netcdf(path, "a forecast is CF NetCDF (or GRIB through cfgrib)", **kwargs)
+
+
+def grib_times(ds: xr.Dataset, path="the GRIB forecast") -> xr.Dataset:
+    """cfgrib gives one forecast's frames along `step` (lead time), with their `valid_time`, and
+    `time` the analysis time; time routing reads a `time` axis of valid times, so `valid_time`
+    becomes it. A file holding several analyses (`time` and `step` both dimensions) is refused."""
+    if "step" not in ds.dims:
+        return ds
+    if "time" in ds.dims:
+        raise ValueError(f"{path} holds {ds.sizes['time']} analyses of {ds.sizes['step']} steps; "
+                         f"route on one: seaway.weather.grib_times(xr.open_dataset("
+                         f"path, engine='cfgrib').isel(time=0))")
+    return ds.drop_vars("time", errors="ignore").swap_dims(step="valid_time").rename(valid_time="time")
 
 
 def _axis(ds, name):

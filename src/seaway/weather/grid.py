@@ -84,6 +84,7 @@ class ForecastGrid:
         return PreparedChart.from_chart(chart, neighbourhood, "full", EdgeCost("max"))
 
     def engine(self) -> _core.Forecast:
+        """The forecast's fields as the C++ core's Forecast object."""
         return _core.Forecast(self.first_h, self.step_h, **self.arrays)
 
     def frame_at(self, hours, roles) -> ForecastGrid:

@@ -1,5 +1,5 @@
-"""Time-optimal and least-danger routes through forecasts of currents, wind and waves (papers
-001, 003 and 004), and re-planning during the voyage.
+"""Time-optimal and least-danger routes through forecasts of currents, wind and waves
+(Olovyannikov 2025, Grinyak et al. 2018, Sotnikova 2009), and re-planning during the voyage.
 
 A step's cost is its duration in hours. The weather is read at both ends of the step, at the
 time the ship starts it, linearly interpolated between forecast frames (held constant before
@@ -14,7 +14,7 @@ Physics (Olovyannikov 2025), computed in the C++ core for every step and course:
   D displacement in t, V in knots; valid for 5000-25000 t and 9-20 kn;
 * speed over ground holding the track through a current Vt at angle q to the course:
   V = Vt cos q + sqrt(V0^2 - (Vt sin q)^2). The paper prints a plus under the root; holding
-  the track means cancelling the cross current, which gives the minus (DOMAIN.md), and
+  the track means cancelling the cross current, which gives the minus, and
   Vt |sin q| >= V0 (the track cannot be held) is impassable;
 * impassable where the wind exceeds max_wind_ms (25 m/s) or the waves max_wave_m (5 m), and,
   for Sotnikova 2009's moving danger zones, where the wind exceeds danger_wind_ms (11 m/s) at the
