@@ -4,13 +4,15 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 import numpy as np
 
 from ..base.units import EARTH_RADIUS_KM
 from .raster import Chart
 
 
-def nearest_passable(chart: Chart, rc) -> tuple[int, int] | None:
+def nearest_passable(chart: Chart, rc: tuple[int, int]) -> tuple[int, int] | None:
     ok = np.isfinite(chart.values) & (chart.values >= 0)
     if chart.land is not None:
         ok &= chart.land == 0
@@ -22,7 +24,7 @@ def nearest_passable(chart: Chart, rc) -> tuple[int, int] | None:
     return int(r), int(c)
 
 
-def describe(chart: Chart, rc) -> str:
+def describe(chart: Chart, rc: tuple[int, int]) -> str:
     r, c = rc
     if chart.geographic:
         lat, lon = chart.axes
@@ -30,7 +32,7 @@ def describe(chart: Chart, rc) -> str:
     return f"pixel ({r}, {c})"
 
 
-def locate(chart: Chart, point, name: str) -> tuple[int, int]:
+def locate(chart: Chart, point: Iterable[float], name: str) -> tuple[int, int]:
     """The pixel of a start or end point: (lat, lon) on geographic charts, (row, col) otherwise."""
     try:
         a, b = (float(v) for v in point)
