@@ -4,7 +4,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 
 import numpy as np
 
@@ -12,7 +12,7 @@ from ..base.units import EARTH_RADIUS_KM
 from .raster import Chart
 
 
-def nearest_passable(chart: Chart, rc: tuple[int, int]) -> tuple[int, int] | None:
+def nearest_passable(chart: Chart, rc: Sequence[int]) -> tuple[int, int] | None:
     ok = np.isfinite(chart.values) & (chart.values >= 0)
     if chart.land is not None:
         ok &= chart.land == 0
