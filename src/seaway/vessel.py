@@ -32,13 +32,13 @@ class Vessel:
     length_m: float | None = None  # waterline length
     calm_resistance_kn: float | None = None  # calm-water resistance at speed_kn, kN
 
-    def _outside(self, msg):
+    def _outside(self, msg: str) -> None:
         if self.outside_validity == "warn":
             warnings.warn(msg, stacklevel=4)
         else:
             raise ValueError(msg + "; pass outside_validity='warn' to go on, or another speed_loss")
 
-    def check_waves(self, max_hs_m: float):
+    def check_waves(self, max_hs_m: float) -> None:
         """STAWAVE-1 holds for Hs <= 2.25 sqrt(L / 100) (ITTC 7.5-04-01-01.1)."""
         if self.speed_loss != "stawave1" or self.length_m is None:
             return
@@ -47,7 +47,7 @@ class Vessel:
             self._outside(f"STAWAVE-1 holds for significant heights up to 2.25 sqrt(L/100) = "
                           f"{limit:.2f} m; the forecast has {max_hs_m:.2f} m")
 
-    def check(self):
+    def check(self) -> None:
         """Validate the numbers (ValueError or TypeError naming the argument and the fix)."""
         number(self.speed_kn, "speed_kn", above=0, what="positive", example=12.0)
         for name in ("displacement_t", "max_wind_ms", "max_wave_m"):

@@ -13,6 +13,14 @@ from __future__ import annotations
 import os
 import struct
 import tempfile
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    import xarray as xr
+
+    #: A file name as the API takes it.
+    PathLike = str | os.PathLike[str]
 
 # nc_type -> bytes per value
 _SIZES = {1: 1, 2: 1, 3: 2, 4: 4, 5: 4, 6: 8, 7: 1, 8: 2, 9: 4, 10: 8, 11: 8}
@@ -20,37 +28,38 @@ _DIMENSION, _VARIABLE, _ATTRIBUTE = 10, 11, 12
 
 
 class _Header:
-    def __init__(self, data: bytes, version: int):
+    def __init__(self, data: bytes, version: int) -> None:
         self.data, self.pos = data, 4
         self.big = version == 5  # CDF-5: 8-byte counts and sizes
         self.offset64 = version in (2, 5)
 
-    def _take(self, fmt):
+    def _take(self, fmt: str) -> int:
         size = struct.calcsize(fmt)
         if self.pos + size > len(self.data):
             raise EOFError
+        v: int
         (v,) = struct.unpack_from(fmt, self.data, self.pos)
         self.pos += size
         return v
 
-    def count(self):
+    def count(self) -> int:
         return self._take(">Q" if self.big else ">I")
 
-    def int32(self):
+    def int32(self) -> int:
         return self._take(">I")
 
-    def offset(self):
+    def offset(self) -> int:
         return self._take(">Q" if self.offset64 else ">I")
 
-    def skip(self, n):
+    def skip(self, n: int) -> None:
         self.pos += (n + 3) // 4 * 4
         if self.pos > len(self.data):
             raise EOFError
 
-    def name(self):
+    def name(self) -> None:
         self.skip(self.count())
 
-    def attributes(self):
+    def attributes(self) -> None:
         tag, n = self.int32(), self.count()
         if tag not in (0, _ATTRIBUTE):
             raise ValueError("bad attribute list")
@@ -93,13 +102,13 @@ def _classic_data_end(head: bytes, version: int) -> int | None:
         else:
             fixed_end = max(fixed_end, begin + size)
     if records and numrecs:
-        pad = (lambda s: s) if len(records) == 1 else (lambda s: (s + 3) // 4 * 4)
+        pad: Callable[[int], int] = (lambda s: s) if len(records) == 1 else (lambda s: (s + 3) // 4 * 4)
         recsize = sum(pad(s) for _, s in records)
         fixed_end = max(fixed_end, max(b + (numrecs - 1) * recsize + s for b, s in records))
     return fixed_end
 
 
-def check_netcdf(path) -> None:
+def check_netcdf(path: PathLike) -> None:
     """Raise ValueError naming `path` when a classic NetCDF file is cut short (or its header
     is unreadable); other files pass unchecked."""
     path = os.fspath(path)
@@ -123,12 +132,12 @@ def check_netcdf(path) -> None:
                          f"header places data up to byte {need}; download or copy it again")
 
 
-def write_atomically(path, text: str) -> None:
+def write_atomically(path: PathLike, text: str) -> None:
     """Write `text` to a temporary file beside `path`, then rename it over `path`."""
     write_all([(path, text)])
 
 
-def replace_atomically(path, write, suffix: str) -> None:
+def replace_atomically(path: PathLike, write: Callable[[int, str], None], suffix: str) -> None:
     """write(fd, temporary path) fills a temporary file beside `path`, which is then given the
     permissions of a newly created file (mkstemp's are 0600: others could not read the
     route) and renamed over `path`; on any error the temporary file is removed, and an OSError
@@ -228,7 +237,7 @@ def _named(exc: OSError, path) -> OSError:
     return type(exc)(exc.errno, text) if exc.errno is not None else type(exc)(text)
 
 
-def open_netcdf(path, hint: str, **kwargs):
+def open_netcdf(path: PathLike, hint: str, **kwargs: Any) -> xr.Dataset:
     """xarray.open_dataset(path) after check_netcdf (a truncated classic file would read as
     zeros); any failure becomes ValueError naming the file and `hint` (what the file should be)."""
     import xarray as xr
@@ -243,7 +252,7 @@ def open_netcdf(path, hint: str, **kwargs):
         raise ValueError(f"{path}: cannot read it as NetCDF ({exc}); {hint}") from None
 
 
-def read_geotiff(path, band: int = 1):
+def read_geotiff(path: PathLike, band: int = 1) -> xr.DataArray:
     """One band of a north-up GeoTIFF as a DataArray on pixel-centre coordinates: (lat, lon) when
     its CRS is geographic or absent, else (y, x) with the CRS in attrs["crs"]; nodata -> NaN;
     units, positive and standard_name from the band's tags in attrs. Needs rasterio."""

@@ -4,13 +4,15 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Sequence
+
 import numpy as np
 
 from ..base.units import EARTH_RADIUS_KM
 from .raster import Chart
 
 
-def nearest_passable(chart: Chart, rc) -> tuple[int, int] | None:
+def nearest_passable(chart: Chart, rc: Sequence[int]) -> tuple[int, int] | None:
     ok = np.isfinite(chart.values) & (chart.values >= 0)
     if chart.land is not None:
         ok &= chart.land == 0
@@ -22,7 +24,7 @@ def nearest_passable(chart: Chart, rc) -> tuple[int, int] | None:
     return int(r), int(c)
 
 
-def describe(chart: Chart, rc) -> str:
+def describe(chart: Chart, rc: tuple[int, int]) -> str:
     r, c = rc
     if chart.geographic:
         lat, lon = chart.axes
@@ -30,7 +32,7 @@ def describe(chart: Chart, rc) -> str:
     return f"pixel ({r}, {c})"
 
 
-def locate(chart: Chart, point, name: str) -> tuple[int, int]:
+def locate(chart: Chart, point: Iterable[float], name: str) -> tuple[int, int]:
     """The pixel of a start or end point: (lat, lon) on geographic charts, (row, col) otherwise;
     ValueError when it is off the chart or impassable."""
     r, c = pixel_of(chart, point, name)
@@ -45,7 +47,7 @@ def locate(chart: Chart, point, name: str) -> tuple[int, int]:
     return r, c
 
 
-def pixel_of(chart: Chart, point, name: str) -> tuple[int, int]:
+def pixel_of(chart: Chart, point: Iterable[float], name: str) -> tuple[int, int]:
     """The pixel holding a point, passable or not: (lat, lon) on geographic charts, (row, col)
     otherwise; ValueError when it is off the chart."""
     try:

@@ -35,7 +35,11 @@ independent-navigation concentration (Grinyak et al. 2022 Table 1: Arc4-Arc6 6/1
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
+import numpy.typing as npt
 import xarray as xr
 
 from ..base.files import open_netcdf
@@ -48,6 +52,19 @@ from .classes import get_class
 from .codes import ICE_FREE
 from .impact import governing_stage
 from .sigrid import read_sigrid3
+
+if TYPE_CHECKING:
+    import datetime
+    import os
+
+    from . import classes  # classes.IceClass: one name in the API pages (seaway.ice re-exports it)
+
+    #: A season: its Dataset or a NetCDF file of it.
+    SeasonLike = xr.Dataset | str | os.PathLike[str]
+    #: A departure: a date numpy.datetime64 takes (None: the season's first chart).
+    Departure = str | datetime.date | np.datetime64 | None
+    #: Speeds by WMO stage: {stage: knots} or {stage: {max CT tenths: knots}}.
+    SpeedTable = Mapping[float, float | Mapping[float, float]]
 
 __all__ = ["read_season", "as_season", "SeasonGrid", "andreeva_speed_kn", "table_speed_kn",
            "route_season", "arrival_field"]
@@ -163,7 +180,7 @@ class SeasonGrid:
     speed and departure, the engine's frames (hours_per_km()). One prepared chart serves every
     class and departure; land is where every chart (or `land`) has land or no chart."""
 
-    def __init__(self, season, land=None):
+    def __init__(self, season: SeasonLike, land: npt.ArrayLike | xr.DataArray | None = None) -> None:
         self.ds = as_season(season)
         self.times = self.ds["time"].values
         ct = self.ds["CT"]
@@ -210,7 +227,9 @@ class SeasonGrid:
                              "or add charts that cover the departure")
         return dep, int(np.searchsorted(t, dep, side="right")) - 1
 
-    def hours_per_km(self, ice_class, v0_kn, departure=None, speed="andreeva", **speed_options):
+    def hours_per_km(self, ice_class: str | classes.IceClass, v0_kn: float, departure: Departure = None,
+                     speed: str | SpeedTable = "andreeva", **speed_options: Any
+                     ) -> tuple[npt.NDArray[np.float32], npt.NDArray[np.float64], np.datetime64]:
         """(hours per km float32 (frames, rows, cols) from the chart valid at departure on, inf
         where closed; validity of each in hours after departure; departure)."""
         if not (np.isfinite(v0_kn) and v0_kn > 0):

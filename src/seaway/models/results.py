@@ -6,10 +6,13 @@ sits below the route's."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Literal, NamedTuple
+from typing import TYPE_CHECKING, Literal, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
+
+if TYPE_CHECKING:
+    from .. import _core
 
 #: Waits shorter than this (hours) are rounding, not waits.
 WAIT_EPS_H = 1e-9
@@ -124,7 +127,7 @@ class StepValues:
     wait_h: _Steps = None
 
     @classmethod
-    def from_core(cls, s: Any) -> StepValues:
+    def from_core(cls, s: _core.StepValues) -> StepValues:
         """From the C++ search's values (_core.StepValues)."""
         return cls(**{f: _floats(getattr(s, f)) for f in _FIELDS})
 
@@ -138,5 +141,5 @@ class StepValues:
 _FIELDS = ("setting", "hours", "fuel_t", "depart_h", "wait_h")
 
 
-def _floats(x: Any) -> _Steps:
+def _floats(x: npt.ArrayLike | None) -> _Steps:
     return None if x is None else np.asarray(x, dtype=np.float64)

@@ -4,15 +4,21 @@ from __future__ import annotations
 
 import dataclasses
 import warnings
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from ..base.validate import number
 from ..chart.locate import describe
 from ..ice.classes import get_class
-from .base import CostModel
-from .results import Voyage
+from .base import CostModel, Prepared, RouteT
+from .results import StepValues, Voyage
+
+if TYPE_CHECKING:
+    from ..ice import classes  # classes.IceClass: one name in the API pages (seaway.ice re-exports it)
+    from ..ice.season import Departure, SeasonGrid, SeasonLike, SpeedTable
 
 
 class IceSeasonTime(CostModel):
@@ -30,8 +36,9 @@ class IceSeasonTime(CostModel):
     name = "ice season time"
     time_dependent = True
 
-    def __init__(self, season, ice_class="Arc7", v0_kn=12.0, *, departure=None, speed="andreeva",
-                 **speed_options):
+    def __init__(self, season: SeasonGrid | SeasonLike, ice_class: str | classes.IceClass = "Arc7",
+                 v0_kn: float = 12.0, *, departure: Departure = None,
+                 speed: str | SpeedTable = "andreeva", **speed_options: Any) -> None:
         from ..ice.season import (
             SeasonGrid,  # the season's own grid type (a convenience)
         )
@@ -41,24 +48,26 @@ class IceSeasonTime(CostModel):
         self.ice_class = get_class(ice_class).name
         self.hours_per_km, self.valid_from_h, self.departure = self.season.hours_per_km(
             ice_class, v0_kn, departure, speed, **speed_options)
-        self._open = np.isfinite(self.hours_per_km).any(axis=0)
+        # where some chart lets the class go; numpy types any(axis=0) as "bool or array"
+        self._open = cast("npt.NDArray[np.bool_]", np.isfinite(self.hours_per_km).any(axis=0))
         if not self._open.any():
             raise ValueError(f"class {self.ice_class} may go nowhere in any chart of the season from "
                              f"{self.departure} on; try a stronger class or other speeds")
         fastest = float(np.min(self.hours_per_km, where=self._open[None], initial=np.inf))
         self._engine = _core.IceSeasonModel(self.hours_per_km, list(self.valid_from_h), fastest)
 
-    def unit(self, geographic):
+    def unit(self, geographic: bool) -> str:
         return "h"
 
-    def engine(self, prepared):
+    def engine(self, prepared: Prepared) -> _core.IceSeasonModel:
         if prepared.chart.shape != self.season.shape:
             raise ValueError(f"the season's charts have {self.season.shape} pixels but the chart "
                              f"{prepared.chart.shape}: route on the season's grid "
                              "(seaway.ice.season.SeasonGrid.prepare)")
         return self._engine
 
-    def check_ends(self, prepared, start, end):
+    def check_ends(self, prepared: Prepared, start: tuple[int, int],
+                   end: tuple[int, int] | None) -> None:
         for name, rc in (("start", start), ("end", end)):
             if rc is None or self._open[rc]:
                 continue
@@ -73,9 +82,12 @@ class IceSeasonTime(CostModel):
                              f"may not enter in any chart from {self.departure} on (last chart: {ice}); "
                              f"{near}")
 
-    def finish(self, route, per_step):
+    def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
         """The route's Voyage: every wait, the charts its steps crossed (the one valid when each
         step departs) and the ice class."""
+        # found routes carry their step costs; the season's search reports each step's
+        # departure (IceSeasonModel, cpp/models.hpp)
+        assert route.step_costs is not None and per_step.depart_h is not None
         hours, cum = route.cost, np.concatenate([[0.0], np.cumsum(route.step_costs)])
         depart = per_step.depart_h
         used = np.unique(np.searchsorted(self.valid_from_h, depart, side="right") - 1)
@@ -91,7 +103,7 @@ class IceSeasonTime(CostModel):
                           stacklevel=3)
         return route
 
-    def no_route(self, where, prepared):
+    def no_route(self, where: str, prepared: Prepared) -> str:
         return (f"no route for class {self.ice_class} {where} in any chart of the season from "
                 f"{self.departure} on, even waiting for the ice to clear; try a stronger class, "
                 "a larger neighbourhood or another end")

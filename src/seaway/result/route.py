@@ -242,7 +242,7 @@ class Route:
         for name in (names or list(data.keys())):
             arr = data[name]
             template = self.chart.template
-            if hasattr(arr, "dims") and hasattr(template, "dims"):
+            if hasattr(arr, "dims") and template is not None:
                 if set(arr.dims) != set(template.dims):
                     continue
                 arr = arr.transpose(*template.dims)
