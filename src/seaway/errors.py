@@ -1,5 +1,9 @@
 """Exceptions raised by seaway."""
 
+from __future__ import annotations
+
+from collections.abc import Iterable
+
 
 class NoRouteError(ValueError):
     """The end cannot be reached from the start on this chart and stencil.
@@ -23,8 +27,9 @@ class NoRouteError(ValueError):
         charts).
     """
 
-    def __init__(self, message="", *, cause=None, closing_ice=(), weakest_class=None,
-                 reachable=None, reachable_km=None):
+    def __init__(self, message: str = "", *, cause: str | None = None,
+                 closing_ice: Iterable[tuple[str, float]] = (), weakest_class: str | None = None,
+                 reachable: tuple[float, ...] | None = None, reachable_km: float | None = None) -> None:
         super().__init__(message)
         self.cause, self.closing_ice, self.weakest_class = cause, tuple(closing_ice), weakest_class
         self.reachable, self.reachable_km = reachable, reachable_km

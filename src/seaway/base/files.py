@@ -13,7 +13,7 @@ from __future__ import annotations
 import os
 import struct
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
@@ -155,7 +155,7 @@ def replace_atomically(path: PathLike, write: Callable[[int, str], None], suffix
             os.unlink(tmp)
 
 
-def check_output(path, formats: dict, option: str = "--out") -> str:
+def check_output(path: PathLike, formats: dict[str, str], option: str = "--out") -> str:
     """The format of an output file named by its extension (`formats`: {".ext": name}), checked
     before any work is done: ValueError naming the fix when the extension is unknown, the path
     is a directory, its directory is missing or not writable, or the file exists read-only."""
@@ -176,12 +176,12 @@ def check_output(path, formats: dict, option: str = "--out") -> str:
     return formats[ext]
 
 
-def write_all(files) -> None:
+def write_all(files: Iterable[tuple[PathLike, str | bytes]]) -> None:
     """Write several files all or nothing: `files` is [(path, str or bytes), ...]. Each goes to a
     temporary file beside its target; only when every one is written are they renamed over
     their targets (with a new file's usual permissions). On any failure every temporary file is
     removed, no target is touched, and the OSError names the target, never a temporary file."""
-    staged = []
+    staged: list[tuple[str, str, PathLike]] = []
     try:
         for path, data in files:
             target = os.path.abspath(os.fspath(path))
@@ -217,7 +217,7 @@ def _temporary(target: str, suffix: str) -> str:
     return tmp
 
 
-def _publish(staged) -> None:
+def _publish(staged: Iterable[tuple[str, str, PathLike]]) -> None:
     """Give each staged (temporary, target, name) file a new file's permissions, then rename it
     over its target."""
     umask = os.umask(0)
@@ -230,7 +230,7 @@ def _publish(staged) -> None:
             raise _named(exc, name) from None
 
 
-def _named(exc: OSError, path) -> OSError:
+def _named(exc: OSError, path: PathLike) -> OSError:
     """The OSError for `path`, with the system's reason but not the temporary file's name."""
     reason = exc.strerror or str(exc).split(": '")[0]
     text = f"{os.fspath(path)}: cannot write it ({reason})"

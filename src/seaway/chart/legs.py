@@ -112,10 +112,10 @@ def _step(v: npt.ArrayLike, default: float) -> float:
     return float((v[-1] - v[0]) / (v.size - 1)) if v.size > 1 else float(default)
 
 
-def turning_points(v) -> np.ndarray:
-    """Indices of the vertices of the polyline `v` ((n, 2) row, col) where its direction
-    changes, with both ends."""
-    v = np.asarray(v, float)
+def turning_points(vertices: npt.ArrayLike) -> npt.NDArray[np.int64]:
+    """Indices of the vertices of the polyline `vertices` ((n, 2) row, col) where its
+    direction changes, with both ends."""
+    v = np.asarray(vertices, float)
     if len(v) < 3:
         return np.arange(len(v))
     d = np.diff(v, axis=0)
@@ -123,4 +123,4 @@ def turning_points(v) -> np.ndarray:
     dot = (d[:-1] * d[1:]).sum(axis=1)
     scale = np.hypot(*d[:-1].T) * np.hypot(*d[1:].T)
     turn = (np.abs(cross) > 1e-9 * scale) | (dot <= 0)
-    return np.concatenate([[0], np.flatnonzero(turn) + 1, [len(v) - 1]])
+    return np.concatenate([[0], np.flatnonzero(turn) + 1, [len(v) - 1]]).astype(np.int64)

@@ -225,7 +225,7 @@ class Route:
         speed the mean; speed_kn becomes the open-water speed."""
         arr = knots
         template = self.chart.template
-        if hasattr(arr, "dims") and hasattr(template, "dims") and set(arr.dims) == set(template.dims):
+        if template is not None and hasattr(arr, "dims") and set(arr.dims) == set(template.dims):
             arr = arr.transpose(*template.dims)
         values = np.asarray(getattr(arr, "values", arr), float)
         if values.shape != self.chart.shape:
