@@ -16,6 +16,7 @@ from .common import (
     CLI_METHODS,
     EPILOG,
     Progress,
+    add_ends,
     grid,
     neighbourhood,
     point,
@@ -123,10 +124,7 @@ def add_route_command(commands) -> None:
                     help="chart file: NetCDF (.nc), GeoTIFF (.tif, needs rasterio), SIGRID-3 "
                          "(.shp/.gpkg, needs seaway.ice.sigrid), or 'kara' for the built-in "
                          "synthetic Kara Sea chart")
-    rp.add_argument("--from", dest="start", type=point, required=True, metavar="LAT,LON",
-                    help="start in decimal degrees (ROW,COL on charts with projected y/x)")
-    rp.add_argument("--to", dest="end", type=point, required=True, metavar="LAT,LON",
-                    help="end in decimal degrees (ROW,COL on charts with projected y/x)")
+    add_ends(rp)
     rp.add_argument("--vessel", metavar="CLASS",
                     help="ice class (e.g. Arc7, Arc5): turns the chart's stage of development "
                          "into Grinyak et al. 2022's impact (default Arc7 on stage charts)")
