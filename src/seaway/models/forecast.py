@@ -66,8 +66,11 @@ class TravelTime(_OnForecast):
         wait_h = per_step.wait_h
         if wait_h is None and not self.zones:
             wait_h = np.zeros(len(route.costs()))
-        voyage = Voyage.along(route.cost, route.costs(), wait_h, self.forecast.departure,
-                              pixels=route.pixels, coords=route.coords)
+        fc = self.forecast
+        voyage = Voyage.along(route.cost, route.costs(), wait_h, fc.departure,
+                              pixels=route.pixels, coords=route.coords,
+                              forecast=fc.describe())
+        voyage = dataclasses.replace(voyage, assumptions=tuple(fc.assumed(voyage.arrival)))
         route.stats = dataclasses.replace(route.stats, voyage=voyage)
         route.speed_kn = self.vessel.speed_kn
         return route

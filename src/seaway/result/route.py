@@ -75,7 +75,8 @@ class Route:
         DataArray (chart_impact sets it); empty when nothing was assumed."""
         attrs = getattr(self.chart.template, "attrs", None) or {}
         said = attrs.get("assumptions", ())
-        return (said,) if isinstance(said, str) else tuple(said)
+        voyage = self.stats.voyage.assumptions if self.stats.voyage is not None else ()
+        return ((said,) if isinstance(said, str) else tuple(said)) + tuple(voyage)
 
     @property
     def vertices(self) -> np.ndarray:
