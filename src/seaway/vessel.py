@@ -47,7 +47,9 @@ class Vessel:
             self._outside(f"STAWAVE-1 holds for significant heights up to 2.25 sqrt(L/100) = "
                           f"{limit:.2f} m; the forecast has {max_hs_m:.2f} m")
 
-    def check(self):
+    def check(self, waves: bool = True):
+        """Validate the numbers; `waves`: whether the forecast has waves (else the speed-loss
+        formula's range is not checked: it is not used)."""
         number(self.speed_kn, "speed_kn", above=0, what="positive", example=12.0)
         for name in ("displacement_t", "max_wind_ms", "max_wave_m"):
             number(getattr(self, name), name, above=0)
@@ -61,7 +63,7 @@ class Vessel:
             if not all(v is not None and np.isfinite(v) and v > 0 for v in sizes):
                 raise ValueError("speed_loss='stawave1' needs positive beam_m, length_m and "
                                  "calm_resistance_kn (kN at speed_kn)")
-        if self.speed_loss == "khokhlov":
+        if self.speed_loss == "khokhlov" and waves:
             inside = 5000 <= self.displacement_t <= 25000 and 9 <= self.speed_kn <= 20
             if not inside:
                 self._outside(f"Khokhlov's speed-loss formula holds for 5000-25000 t and 9-20 kn; "

@@ -37,7 +37,7 @@ class TravelTime(_OnForecast):
 
     def __init__(self, forecast, vessel: Vessel | None = None, zones=()):
         vessel = Vessel() if vessel is None else vessel
-        vessel.check()
+        vessel.check(waves="wave_height" in forecast.arrays)
         if "wave_height" in forecast.arrays:
             vessel.check_waves(float(forecast.arrays["wave_height"].max()))
         self.forecast, self.vessel = forecast, vessel

@@ -20,7 +20,7 @@ import re
 import numpy as np
 import xarray as xr
 
-from ..chart.cf import STANDARD_NAMES
+from ..chart.cf import STANDARD_NAMES, coord_role
 from .forecast import ROLES, check_roles, open_forecast, role_of
 
 #: GRIB code numbers that CDO writes as varNNN, with their meaning in ECMWF's tables (a hint in
@@ -195,3 +195,30 @@ def _merge(parts, notes) -> xr.Dataset:
             notes.append(f"{path}: resampled onto the grid of {parts[0][0]} (linear)")
         out.append(d.drop_vars([c for c in d.coords if c not in d.dims and c != "time"], errors="ignore"))
     return xr.merge(out, compat="override", join="exact")
+
+
+def on_grid(ds: xr.Dataset, lat, lon, dims=("lat", "lon"), source="the forecast"):
+    """(the forecast on the lat/lon grid `lat`, `lon` with dimensions `dims`, notes): resampled
+    linearly in latitude and longitude (exact where the grids share points; longitudes in either
+    convention). Pixels outside the forecast's extent have no weather (calm), which the notes
+    say."""
+    role = {coord_role(str(n), c.attrs): str(n) for n, c in ds.coords.items() if c.ndim == 1}
+    if "lat" not in role or "lon" not in role:
+        raise ValueError(f"{source} is not on a lat/lon grid (its coordinates: {sorted(map(str, ds.coords))}); "
+                         "move it onto one first (seaway.weather.to_latlon)")
+    lat, lon = np.asarray(lat, float), np.asarray(lon, float)
+    src_lon = np.asarray(ds[role["lon"]].values, float)
+    want_lon = lon % 360.0 if src_lon.max() > 180.0 else (lon + 180.0) % 360.0 - 180.0
+    out = ds.interp({role["lat"]: xr.DataArray(lat, dims=dims[0]),
+                     role["lon"]: xr.DataArray(want_lon, dims=dims[1])})
+    out = out.drop_vars([role["lat"], role["lon"]], errors="ignore")
+    out = out.assign_coords({dims[0]: lat, dims[1]: lon})
+    src_lat = np.asarray(ds[role["lat"]].values, float)
+    inside_lat = (lat >= src_lat.min()) & (lat <= src_lat.max())
+    inside_lon = (want_lon >= src_lon.min()) & (want_lon <= src_lon.max())
+    outside = 1.0 - inside_lat.mean() * inside_lon.mean()
+    notes = []
+    if outside > 0:
+        notes.append(f"{100 * outside:.0f} % of the grid lies outside {source}: no weather (calm) "
+                     "is assumed there")
+    return out, notes

@@ -166,13 +166,15 @@ class ForecastGrid:
             out.departure = self.departure + np.timedelta64(int(round(hours * 3.6e12)), "ns")
         return out
 
-    def best_extra_kn(self, vessel: Vessel) -> float:
+    def best_extra_kn(self, vessel: Vessel, slowest_kn: float | None = None) -> float:
         """The most the weather can add to a calm-water speed: following seas under Khokhlov's
-        formula, plus the strongest current (for A*'s admissible bound)."""
+        formula, plus the strongest current (for A*'s admissible bound). slowest_kn: the least
+        speed the formula is applied to (default the vessel's; in ice, 0)."""
         extra, a = 0.0, self.arrays
+        v0 = vessel.speed_kn if slowest_kn is None else slowest_kn
         if vessel.speed_loss == "khokhlov" and "wave_height" in a:
             gain = (0.275 * np.pi - 0.745) * 1.32 * float(a["wave_height"].max())
-            extra += max(gain, 0.0) * (1 - 1.35e-6 * vessel.displacement_t * vessel.speed_kn)
+            extra += max(gain, 0.0) * (1 - 1.35e-6 * vessel.displacement_t * v0)
         if "current_east" in a:
             extra += float(np.hypot(a["current_east"], a["current_north"]).max()) * KNOTS_PER_MS
         return extra
