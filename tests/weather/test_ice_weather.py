@@ -13,7 +13,6 @@ from seaway.base.units import KM_PER_NM, KNOTS_PER_MS
 from seaway.ice.season import SeasonGrid, route_season
 from seaway.models import IceWeatherTime
 from seaway.weather import ForecastGrid, Vessel, route_ice_weather
-from support.data import SHARED_DATA
 from support.reference import haversine
 from support.reference_weather import Weather, ice_weather_best_arrival
 from support.seasons import DAY0, retreating_edge

@@ -7,8 +7,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _core
-from .base.validate import number
+from .. import _core
+from ..base.validate import number
 
 #: The speed-loss formulas of the engine (cpp/seaway/weather.hpp).
 SPEED_LOSSES = tuple(_core.SpeedLoss.__members__)
@@ -87,3 +87,9 @@ class Vessel:
         v.beam_m, v.length_m = self.beam_m or 0.0, self.length_m or 0.0
         v.calm_resistance_kn = self.calm_resistance_kn or 0.0
         return v
+
+
+# Vessel files (TOML or JSON profiles): seaway.vessel.load(path or example name).
+from .profile import EXAMPLES, Profile, VesselFileError, load  # noqa: E402
+
+__all__ = ["EXAMPLES", "SPEED_LOSSES", "Profile", "Vessel", "VesselFileError", "load"]
