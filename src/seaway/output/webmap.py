@@ -21,6 +21,7 @@ from ..base import sphere as geo
 from ..base.files import write_atomically
 from ..ice.colours import classes, guess_code
 from ..result.environment import Category
+from ..result.schedule import schedule, short
 from .style import LAND_COLOUR, ROUTE_COLOUR, edges, ice_layer, route_xy
 
 MERCATOR_LIMIT = 85.051128779806589  # Web Mercator's latitude limit
@@ -166,14 +167,26 @@ def _popup(route, number, point, leg, speed_kn):
     else:
         where = f"y {point[0]:.6g}, x {point[1]:.6g}"
     lines = [f"<b>waypoint {number}</b>", where]
+    timed = schedule(route)
+    if timed is not None and timed.departure is not None:  # the waypoint's ETA and ETD (UTC)
+        i = int(route.waypoint_index[number - 1])
+        if number > 1:
+            lines.append(f"ETA {short(timed.eta(i))} UTC")
+        if leg is not None:
+            lines.append(f"ETD {short(timed.etd(i))} UTC")
     if leg is None:
         lines.append(f"end: {route.length:.1f} {'km' if route.geographic else 'units'}, "
                      f"cost {route.cost:.6g} {html.escape(route.unit)}")
+        if timed is not None and timed.forecast:
+            lines.append(f"forecast {html.escape(timed.forecast)}")
     else:
         dist = (f"{leg.distance_nm:.2f} nm ({leg.distance:.2f} km)" if leg.distance_nm is not None
                 else f"{leg.distance:.4g} units")
         lines += [f"leg {leg.number}: course {leg.course:05.1f}&deg;, {dist}"]
-        if leg.time_h is not None:
+        if leg.time_h is not None and timed is not None:
+            made = f", {leg.speed_kn:.1f} kn made good" if leg.speed_kn is not None else ""
+            lines.append(f"time {leg.time_h:.2f} h{made}")
+        elif leg.time_h is not None:
             lines.append(f"time {leg.time_h:.2f} h at {speed_kn:g} kn")
         lines.append(f"cost {leg.cost:.6g} {html.escape(route.unit)}")
         lines += [html.escape(_ice_text(n, mv)) for n, mv in leg.environment.items()]

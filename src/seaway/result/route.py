@@ -23,6 +23,7 @@ from .environment import (  # noqa: F401 - extreme_name: part of this API
     summarise,
     values_at,
 )
+from .schedule import schedule, voyage_summary
 from .stats import RouteStats
 from .table import route_table
 
@@ -44,6 +45,10 @@ class Leg:
     #: name -> the chart variable along the leg (seaway.result.environment): Numeric (mean, max)
     #: pairs ((mean, min) for LEAST) or, for stages and forms of ice, a Category.
     environment: dict
+    #: When the ship leaves the leg's first waypoint and reaches its last (routes on a clock
+    #: with a departure: seaway.result.schedule), else None.
+    depart: np.datetime64 | None = None
+    arrive: np.datetime64 | None = None
 
 
 @dataclass
@@ -166,6 +171,7 @@ class Route:
         """The legs between consecutive waypoints, with course, distance, time, cost and the mean
         and maximum of each environment variable along the leg. speed_kn defaults to .speed_kn."""
         speed = self.speed_kn if speed_kn is None else number(speed_kn, "speed_kn", above=0)
+        timed = schedule(self)  # a route on a clock: its real times, not those at one speed
         wi, c = self.waypoint_index, self.coords
         steps, costs = self.leg_lengths, self.costs()
         out = []
@@ -179,8 +185,12 @@ class Route:
                 course = float(np.degrees(np.arctan2(b[1] - a[1], b[0] - a[0])) % 360.0)
                 nm = None
             hours = nm / speed if (speed and nm is not None) else None
-            out.append(Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm, speed,
-                           hours, float(costs[i:j].sum()), self._along(i, j)))
+            leg = Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm, speed,
+                      hours, float(costs[i:j].sum()), self._along(i, j))
+            if timed is not None:  # the leg's real hours and the speed it makes good under way
+                leg.time_h, leg.speed_kn = timed.leg(i, j, nm)
+                leg.depart, leg.arrive = timed.etd(i), timed.eta(j)
+            out.append(leg)
         return out
 
     def sample_pixels(self, i: int = 0, j: int | None = None) -> np.ndarray:
@@ -232,6 +242,8 @@ class Route:
             out["length_nm"] = length_nm
             if speed:
                 out.update(speed_kn=float(speed), time_h=length_nm / speed)
+        if self.stats.voyage is not None:  # a route on a clock: its real time, not one speed's
+            out.update(voyage_summary(self))
         for name, arr in self.environment.items():
             if name in CATEGORICAL:  # the governing / most frequent category of the whole route
                 cat = summarise(name, values_at(arr, self.sample_pixels()))
