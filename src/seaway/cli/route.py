@@ -24,10 +24,18 @@ from .common import (
 from .constraints import add_constraint_options, constraint_options
 from .depth import for_route, why_no_route
 from .ends import check_ends
+from .forecast import EXAMPLE as FORECAST_EXAMPLE
+from .forecast import add_forecast_options, check_forecast_options, run_forecast_route
 from .projected import end_pixel
 
 
 def run_route(args) -> int:
+    check_forecast_options(args)
+    if args.forecast:  # weather routing (seaway.cli.forecast)
+        return run_forecast_route(args)
+    if args.chart is None:
+        raise ValueError("give a CHART file, or --forecast FILE to route through a forecast on its "
+                         "own grid")
     say = Progress("route", args.quiet)
     say(f"reading {args.chart}")
     data = open_chart(args.chart, variable=args.variable, vessel=args.vessel,
@@ -110,11 +118,14 @@ def add_route_command(commands) -> None:
         "route", help="route a ship across a chart file and print, write and plot the route",
         description="Find the least-cost route across CHART from --from to --to, smooth it, print "
                     "its legs (course, distance, time, cost, ice along each leg) and optionally "
-                    "write it (GeoJSON, GPX, RTZ, CSV) and plot it (PNG).", epilog=EPILOG)
-    rp.add_argument("chart", metavar="CHART",
+                    "write it (GeoJSON, GPX, RTZ, CSV) and plot it (PNG). With --forecast: the "
+                    "quickest route through a weather forecast from --depart, with its schedule.",
+        epilog=f"{EPILOG} Weather routing, {FORECAST_EXAMPLE}")
+    rp.add_argument("chart", metavar="CHART", nargs="?",
                     help="chart file: NetCDF (.nc), GeoTIFF (.tif, needs rasterio), SIGRID-3 "
                          "(.shp/.gpkg, needs seaway.ice.sigrid), or 'kara' for the built-in "
-                         "synthetic Kara Sea chart")
+                         "synthetic Kara Sea chart; with --forecast it may be left out (the "
+                         "forecast's own grid) or be an ice chart (ice and weather in one voyage)")
     rp.add_argument("--from", dest="start", type=point, required=True, metavar="LAT,LON",
                     help="start in decimal degrees (ROW,COL on charts with projected y/x)")
     rp.add_argument("--to", dest="end", type=point, required=True, metavar="LAT,LON",
@@ -171,7 +182,8 @@ def add_route_command(commands) -> None:
                          "(default: stop with an error naming why, that point and its distance)")
     add_constraint_options(rp, point)
     rp.add_argument("--speed", type=float, metavar="KN",
-                    help="speed in knots: adds each leg's time and the voyage time")
+                    help="speed in knots: adds each leg's time and the voyage time; with "
+                         "--forecast the calm-water speed (default 12, or the vessel file's)")
     rp.add_argument("--name", default="seaway route", help="route name in the outputs")
     rp.add_argument("--out", action="append", metavar="FILE",
                     help="write the route; the extension picks the format: .geojson/.json, .gpx, "
@@ -180,3 +192,4 @@ def add_route_command(commands) -> None:
     rp.add_argument("--plot", metavar="PNG",
                     help="draw the chart, land and route to a PNG (needs seaway[plot])")
     rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")
+    add_forecast_options(rp)  # seaway.cli.forecast

@@ -16,6 +16,7 @@ weather models find by role.
 from __future__ import annotations
 
 import re
+import warnings
 
 import numpy as np
 import xarray as xr
@@ -127,8 +128,7 @@ def open_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, li
     wanted = check_roles(variables)
     parts, notes, found = [], [], {}
     for path in paths:
-        ds = decode_time(open_forecast(path, decode_times=False) if not _grib(path)
-                         else open_forecast(path), path)
+        ds = decode_time(_open_grib(path) if _grib(path) else open_forecast(path, decode_times=False), path)
         fields = {}
         for role, name in wanted.items():
             if name in ds.data_vars and role not in found:
@@ -155,6 +155,27 @@ def open_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, li
         raise ValueError(f"no forecast file has a variable {name!r} for {role}; the files have "
                          + "; ".join(f"{p}: {sorted(map(str, d.data_vars))}" for p, d in parts))
     return _merge(parts, notes), notes
+
+
+def _open_grib(path: str) -> xr.Dataset:
+    """A GRIB file through cfgrib, its messages of every level merged (a forecast file often
+    holds waves at the surface and winds at 10 m); no index file is written beside it."""
+    try:
+        import cfgrib
+    except ImportError:
+        raise ImportError(f'{path}: reading GRIB needs cfgrib: pip install "seaway[grib]" (cfgrib '
+                          "and eccodes)") from None
+    try:
+        with warnings.catch_warnings():  # cfgrib's own merge warns of xarray's coming defaults
+            warnings.simplefilter("ignore", FutureWarning)
+            parts = cfgrib.open_datasets(path, backend_kwargs={"indexpath": ""})
+    except Exception as exc:  # eccodes and cfgrib raise many types
+        raise ValueError(f"{path}: cannot read it as GRIB ({exc})") from None
+    if not parts:
+        raise ValueError(f"{path}: the GRIB file holds no field")
+    keep = {"time", "step", "valid_time"}
+    parts = [d.drop_vars([c for c in d.coords if c not in d.dims and c not in keep]) for d in parts]
+    return xr.merge(parts, compat="override", join="outer")
 
 
 def _grib(path: str) -> bool:

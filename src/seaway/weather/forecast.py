@@ -27,14 +27,22 @@ GRIB_NAMES = {
 }
 
 
+#: Names users write for a role (for the hint of an unknown role).
+_ALIASES = {"wave_direction": "wave_from", "wave_dir": "wave_from", "mean_wave_direction": "wave_from",
+            "wave_to": "wave_from", "hs": "wave_height", "swh": "wave_height",
+            "significant_wave_height": "wave_height", "u10": "wind_east", "v10": "wind_north",
+            "wind_u": "wind_east", "wind_v": "wind_north", "current_u": "current_east",
+            "current_v": "current_north", "mean_wave_period": "wave_period"}
+
+
 def check_roles(variables: dict | None) -> dict:
     """`variables` ({role: variable name}) with every role checked; an unknown role raises
     ValueError naming the roles (and the closest one)."""
     out = dict(variables or {})
     for role in out:
         if role not in ROLES:
-            near = difflib.get_close_matches(str(role), ROLES, n=1)
-            hint = f" (did you mean {near[0]}?)" if near else ""
+            near = _ALIASES.get(str(role).lower()) or next(iter(difflib.get_close_matches(str(role), ROLES, n=1)), None)
+            hint = f" (did you mean {near}?)" if near else ""
             raise ValueError(f"unknown forecast role {role!r}{hint}; the roles are "
                              f"{', '.join(ROLES)}")
     return out

@@ -38,7 +38,7 @@ from .grid import ForecastGrid
 
 def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=None, land=None,
                neighbourhood=5, method="astar", variables=None, zones=(), keep_away=(), via=(),
-               if_no_safe_route="least_danger", persist=False) -> Route:
+               if_no_safe_route="least_danger", persist=False, source=None) -> Route:
     """The quickest route from `start` to `end` (lat, lon) through a forecast.
 
     forecast: xarray.Dataset on a regular lat/lon grid, optionally with a `time` dimension
@@ -47,6 +47,7 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
     departure: a datetime (numpy/pandas/str) within the forecast's times; default its first time.
         One outside them is refused unless persist=True (its nearest frame held, said in
         Route.assumptions). A time axis that is not decoded yet (CDO's "day as %Y%m%d.%f") is.
+    source: the forecast's name in the outputs (its files), default its title.
     zones: seaway.constraints.Zone exclusions, each optionally closed only in a time window
         (`active=(t0, t1)`): the ship waits or detours only while a zone is closed.
     keep_away: hard seaway.constraints.KeepAway buffers (from land or a boolean ice mask).
@@ -64,7 +65,7 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
     if if_no_safe_route not in ("least_danger", "raise"):
         raise ValueError(f"if_no_safe_route must be 'least_danger' or 'raise', got {if_no_safe_route!r}")
     heuristic_weight(method, None)
-    fc = ForecastGrid(forecast, variables, departure, persist=persist)
+    fc = ForecastGrid(forecast, variables, departure, persist=persist, source=source)
     model = TravelTime(fc, vessel, zones=zones)
     prepared = fc.prepare(land, neighbourhood, keep_away)
     try:
@@ -81,7 +82,7 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
 
 def route_ice_weather(season, forecast, start, end, *, ice_class="Arc7", vessel: Vessel = Vessel(),
                       departure=None, persist=False, variables=None, land=None, neighbourhood=5,
-                      method="astar", speed="andreeva", **speed_options) -> Route:
+                      method="astar", speed="andreeva", source=None, **speed_options) -> Route:
     """The quickest route through ice and weather at once (seaway.models.IceWeatherTime): each
     step crosses the ice chart valid when it starts at the class's speed (Andreeva 2021's
     V = F x V0 with V0 = vessel.speed_kn, or a speed table: see seaway.ice.season), changed by
@@ -105,7 +106,7 @@ def route_ice_weather(season, forecast, start, end, *, ice_class="Arc7", vessel:
         raise ValueError("routing through ice and weather needs the ice charts on a lat/lon grid; "
                          "move them onto one first (seaway.weather.to_latlon)")
     forecast, notes = on_grid(forecast, lat, lon, t.dims)
-    fc = ForecastGrid(forecast, variables, departure, persist=persist)
+    fc = ForecastGrid(forecast, variables, departure, persist=persist, source=source)
     fc.assumptions += notes
     model = IceWeatherTime(grid, fc, ice_class, vessel, speed=speed, **speed_options)
     return grid.prepare(neighbourhood).route(start, end, model=model, method=method)
