@@ -157,3 +157,26 @@ def test_ice_and_weather_in_one_voyage_from_the_command_line(tmp_path, capsys):
     alone = route_season(season, (71.0, 70.0), (76.0, 74.0), ice_class="Arc7", v0_kn=12.0)
     assert f"voyage {api.cost // 24:.0f} d" in out and api.cost < alone.cost  # the current helps north
     assert csv.read_text().startswith("# departure 2026-07-01T00:00:00Z, arrival " + str(api.stats.voyage.arrival)[:19])
+
+
+def test_replan_continues_the_voyage_from_where_the_ship_is(tmp_path, capsys):
+    paths = ff.write_cf_per_variable(tmp_path)
+    argv = [a for p in paths for a in ("--forecast", p)]
+    first = tmp_path / "voyage.geojson"
+    assert _run(capsys, *argv, A, B, "--out", first)[0] == 0
+    props = json.loads(first.read_text())["properties"]
+    # With the same forecast, the rest of a time-optimal route is optimal from where the ship is
+    # (FIFO): re-planning at a vertex it reaches keeps the arrival (to the second of the times).
+    k = len(props["vertex_times"]) // 2
+    at = props["vertex_times"][k].rstrip("Z")  # to the second: the ship is at vertex k
+    again = tmp_path / "again.geojson"
+    code = main(["replan", str(first), *map(str, argv), "--at", at, "--out", str(again), "-q"])
+    _, err = capsys.readouterr()
+    assert code == 0, err
+    assert f"at {at} the ship is at " in err and f"(after vertex {k + 1} of " in err
+    new = json.loads(again.read_text())["properties"]
+    assert new["departure"] == at + "Z"
+    assert abs((np.datetime64(new["arrival"].rstrip("Z")) - np.datetime64(props["arrival"].rstrip("Z")))
+               / np.timedelta64(1, "s")) <= 60
+    code = main(["replan", str(first), *map(str, argv), "--at", "2026-10-09T00:00", "-q"])
+    assert code == 1 and "is outside the voyage" in capsys.readouterr().err
