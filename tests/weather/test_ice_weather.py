@@ -167,3 +167,28 @@ def test_real_roms_ice_and_currents_in_one_voyage(shared_data):
     assert np.nanmax([hice[kk][tuple(p)] for kk, p in zip(k, both.pixels)]) > 0.3  # it meets ice
     with pytest.raises(ValueError, match=r"end .* is in ice class Arc4 may not enter"):
         route_ice_weather(season, currents, a, b, ice_class="Arc4", vessel=ship)
+
+
+@pytest.mark.slow
+def test_the_readme_kara_sea_autumn_example():
+    from pathlib import Path
+
+    from seaway.vessel import load
+    from seaway.weather import kara_autumn
+
+    ice, gale = kara_autumn()
+    ship = load("pc6-general-cargo")
+    a, b = (70.5, 58.0), (73.5, 80.0)
+    r = route_ice_weather(ice, gale, a, b, ice_class=ship.ice_class, vessel=ship.vessel,
+                          departure="2026-10-01T06:00")
+    alone = route_season(ice, a, b, ice_class="PC6", v0_kn=ship.vessel.speed_kn, departure="2026-10-01T06:00")
+    # Eastbound the westerly sea follows the ship (Khokhlov's small gain) and the coastal current
+    # carries it: quicker than through the ice alone; westbound, into the sea, slower.
+    assert r.cost < alone.cost
+    back = route_ice_weather(ice, gale, b, a, ice_class=ship.ice_class, vessel=ship.vessel,
+                             departure="2026-10-01T06:00")
+    back_alone = route_season(ice, b, a, ice_class="PC6", v0_kn=ship.vessel.speed_kn, departure="2026-10-01T06:00")
+    assert back.cost > back_alone.cost
+    readme = (Path(__file__).parents[2] / "README.md").read_text()
+    eta = str(r.stats.voyage.arrival)[:16].replace("T", " ")
+    assert f"# {r.cost:.1f} h, arrival {eta} UTC" in readme

@@ -26,7 +26,7 @@ class Schedule:
         """The time `hours` after departure, to the second (None without a departure)."""
         if self.departure is None or not np.isfinite(hours):
             return None
-        return np.datetime64(self.departure, "s") + np.timedelta64(int(round(hours * 3600.0)), "s")
+        return self.departure.astype("datetime64[s]") + np.timedelta64(int(round(hours * 3600.0)), "s")
 
     def eta(self, i: int) -> np.datetime64 | None:
         """When the ship reaches vertex i (the departure at the first)."""

@@ -11,7 +11,7 @@ from .. import _core
 from ..base.validate import number
 
 #: The speed-loss formulas of the engine (cpp/seaway/weather.hpp).
-SPEED_LOSSES = tuple(_core.SpeedLoss.__members__)
+SPEED_LOSSES: tuple[str, ...] = tuple(_core.SpeedLoss.__members__)
 
 @dataclass(frozen=True)
 class Vessel:
