@@ -103,3 +103,17 @@ def test_a_static_route_keeps_its_nominal_times():
     r = seaway.route(np.ones((10, 10)), (0, 0), (0, 9), neighbourhood=3)
     assert r.stats.voyage is None and "vertex_times" not in export.geojson(r)["properties"]
     assert not export.csv_text(r).startswith("#")
+
+
+def test_a_fuel_route_has_its_schedule_from_its_hours_not_its_tonnes():
+    from seaway.weather import FuelCurve, route_fuel
+
+    fc = forecast(frames=6, ce=0.5, cn=0.0)
+    fuel = FuelCurve.cubic(12.0, 1.0, 8.0, 14.0)
+    r = route_fuel(fc, (60.2, 0.2), (61.8, 2.8), vessel=Vessel(speed_kn=12.0, speed_loss="none"), fuel=fuel,
+                   time_value_t_per_h=0.5, at_hours=6.0)
+    v = r.stats.voyage
+    assert v.hours == pytest.approx(r.stats.fuel.hours, rel=1e-12) and r.unit.startswith("t")
+    assert v.departure == np.datetime64("2026-01-01T06:00") and "one forecast frame" in v.assumptions[0]
+    assert sum(leg.time_h for leg in r.legs()) == pytest.approx(r.stats.fuel.hours, rel=1e-12)
+    assert export.geojson(r)["properties"]["arrival"] == str(v.arrival)[:19] + "Z"

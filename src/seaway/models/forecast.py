@@ -91,7 +91,7 @@ class Fuel(_OnForecast):
         number(time_value_t_per_h, "time_value_t_per_h", minimum=0, what="a number >= 0")
         number(at_hours, "at_hours")
         self.forecast, self.vessel, self.fuel = forecast, vessel, fuel
-        self.time_value_t_per_h = float(time_value_t_per_h)
+        self.time_value_t_per_h, self.at_hours = float(time_value_t_per_h), float(at_hours)
         frame = forecast.frame_at(at_hours, ("current_east", "current_north", "wave_height",
                                              "wave_from", "wind_speed"))
         self._engine = _core.FuelModel(frame.engine(), vessel.to_core(), list(fuel.speeds_kn),
@@ -111,7 +111,15 @@ class Fuel(_OnForecast):
         use = FuelUse(fuel_t=float(np.sum(per_step.fuel_t)), hours=float(np.sum(per_step.hours)),
                       speeds_kn=np.asarray(self.fuel.speeds_kn, dtype=np.float64)[setting],
                       time_value_t_per_h=self.time_value_t_per_h)
-        route.stats = dataclasses.replace(route.stats, fuel=use)
+        fc, hours = self.forecast, np.asarray(per_step.hours, dtype=np.float64)
+        departure = None if fc.departure is None else fc.departure + np.timedelta64(
+            int(round(self.at_hours * 3.6e12)), "ns")
+        voyage = Voyage.along(use.hours, hours, np.zeros(hours.size), departure, pixels=route.pixels,
+                              coords=route.coords, forecast=fc.describe())
+        said = (f"the fuel route reads the weather of one forecast frame, the one valid nearest "
+                f"{self.at_hours:g} h after the forecast's first time, for the whole voyage",)
+        voyage = dataclasses.replace(voyage, step_h=hours, assumptions=said)
+        route.stats = dataclasses.replace(route.stats, fuel=use, voyage=voyage)
         return route
 
     def no_route(self, where, prepared):

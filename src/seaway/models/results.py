@@ -55,6 +55,9 @@ class Voyage:
     #: What the voyage's times rest on beyond the data (persistence of a forecast or an ice
     #: chart past its last time), in words; Route.assumptions lists them too.
     assumptions: tuple[str, ...] = ()
+    #: Hours of each step when the route's cost is not hours (the fuel model); None when the
+    #: step costs are the hours.
+    step_h: npt.NDArray[np.float64] | None = None
 
     @property
     def hours_waiting(self) -> float | None:

@@ -53,7 +53,7 @@ def schedule(route) -> Schedule | None:
     voyage = route.stats.voyage
     if voyage is None:
         return None
-    steps = np.asarray(route.costs(), dtype=float)
+    steps = np.asarray(route.costs() if voyage.step_h is None else voyage.step_h, dtype=float)
     arrive = np.concatenate([[0.0], np.cumsum(steps)])
     wait = np.zeros(steps.size) if voyage.wait_h is None else np.asarray(voyage.wait_h, float)
     leave = np.concatenate([arrive[:-1] + wait, arrive[-1:]])
