@@ -1,5 +1,6 @@
 """File helpers: atomic writes (write_atomically, replace_atomically: never a half-written
-file) and checks on input files before they are read lazily.
+file; write_all: several files all or nothing), output paths checked before any work
+(check_output), and checks on input files before they are read lazily.
 
 A truncated classic NetCDF file (CDF-1, CDF-2 or CDF-5) opens without complaint and the
 netCDF library returns fill values (zeros) for the bytes past its end: a cost raster would
@@ -124,28 +125,107 @@ def check_netcdf(path) -> None:
 
 def write_atomically(path, text: str) -> None:
     """Write `text` to a temporary file beside `path`, then rename it over `path`."""
-    def write(fd, tmp):
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
-            f.write(text)
-    replace_atomically(path, write, ".tmp")
+    write_all([(path, text)])
 
 
 def replace_atomically(path, write, suffix: str) -> None:
     """write(fd, temporary path) fills a temporary file beside `path`, which is then given the
     permissions of a newly created file (mkstemp's are 0600: others could not read the
-    route) and renamed over `path`; on any error the temporary file is removed."""
+    route) and renamed over `path`; on any error the temporary file is removed, and an OSError
+    names `path` (never the temporary file)."""
     target = os.path.abspath(os.fspath(path))
-    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(target), prefix=".seaway-", suffix=suffix)
+    tmp = _temporary(target, suffix)
     try:
-        write(fd, tmp)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
-        os.replace(tmp, target)
-    except BaseException:
+        try:
+            write(os.open(tmp, os.O_WRONLY), tmp)
+        except OSError as exc:
+            raise _named(exc, path) from None
+        _publish([(tmp, target, path)])
+    finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
-        raise
+
+
+def check_output(path, formats: dict, option: str = "--out") -> str:
+    """The format of an output file named by its extension (`formats`: {".ext": name}), checked
+    before any work is done: ValueError naming the fix when the extension is unknown, the path
+    is a directory, its directory is missing or not writable, or the file exists read-only."""
+    path = os.fspath(path)
+    if os.path.isdir(path):
+        raise ValueError(f"{option} {path} is a directory; give a file name inside it")
+    ext = os.path.splitext(path)[1].lower()
+    if ext not in formats:
+        raise ValueError(f"{option} {path}: cannot tell the format from the extension "
+                         f"{ext or '(none)'!r}; use one of {', '.join(sorted(formats))}")
+    folder = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(folder):
+        raise ValueError(f"{option} {path}: the directory {folder} does not exist; create it first")
+    if not os.access(folder, os.W_OK | os.X_OK):
+        raise ValueError(f"{option} {path}: the directory {folder} is not writable; choose another")
+    if os.path.exists(path) and not os.access(path, os.W_OK):
+        raise ValueError(f"{option} {path} exists and is read-only; remove it or choose another name")
+    return formats[ext]
+
+
+def write_all(files) -> None:
+    """Write several files all or nothing: `files` is [(path, str or bytes), ...]. Each goes to a
+    temporary file beside its target; only when every one is written are they renamed over
+    their targets (with a new file's usual permissions). On any failure every temporary file is
+    removed, no target is touched, and the OSError names the target, never a temporary file."""
+    staged = []
+    try:
+        for path, data in files:
+            target = os.path.abspath(os.fspath(path))
+            tmp = _temporary(target, ".tmp")
+            staged.append((tmp, target, path))
+            try:
+                fd = os.open(tmp, os.O_WRONLY | os.O_TRUNC)
+                if isinstance(data, (bytes, bytearray)):
+                    with os.fdopen(fd, "wb") as f:
+                        f.write(data)
+                else:
+                    with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
+                        f.write(data)
+            except OSError as exc:
+                raise _named(exc, path) from None
+        for _, target, path in staged:  # what would make a rename fail, before the first one
+            if os.path.isdir(target):
+                raise IsADirectoryError(21, f"{os.fspath(path)}: cannot write it (a directory)")
+        _publish(staged)
+    finally:
+        for tmp, _, _ in staged:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+
+
+def _temporary(target: str, suffix: str) -> str:
+    """A new empty temporary file beside `target`; OSError naming `target` if it cannot be made."""
+    try:
+        fd, tmp = tempfile.mkstemp(dir=os.path.dirname(target), prefix=".seaway-", suffix=suffix)
+    except OSError as exc:
+        raise _named(exc, target) from None
+    os.close(fd)
+    return tmp
+
+
+def _publish(staged) -> None:
+    """Give each staged (temporary, target, name) file a new file's permissions, then rename it
+    over its target."""
+    umask = os.umask(0)
+    os.umask(umask)
+    for tmp, target, name in staged:
+        try:
+            os.chmod(tmp, 0o666 & ~umask)
+            os.replace(tmp, target)
+        except OSError as exc:
+            raise _named(exc, name) from None
+
+
+def _named(exc: OSError, path) -> OSError:
+    """The OSError for `path`, with the system's reason but not the temporary file's name."""
+    reason = exc.strerror or str(exc).split(": '")[0]
+    text = f"{os.fspath(path)}: cannot write it ({reason})"
+    return type(exc)(exc.errno, text) if exc.errno is not None else type(exc)(text)
 
 
 def open_netcdf(path, hint: str, **kwargs):

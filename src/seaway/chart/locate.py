@@ -31,7 +31,23 @@ def describe(chart: Chart, rc) -> str:
 
 
 def locate(chart: Chart, point, name: str) -> tuple[int, int]:
-    """The pixel of a start or end point: (lat, lon) on geographic charts, (row, col) otherwise."""
+    """The pixel of a start or end point: (lat, lon) on geographic charts, (row, col) otherwise;
+    ValueError when it is off the chart or impassable."""
+    r, c = pixel_of(chart, point, name)
+    if not chart.passable((r, c)):
+        near = nearest_passable(chart, (r, c))
+        hint = (
+            f"the nearest passable pixel is {describe(chart, near)}"
+            if near
+            else "no pixel of the chart is passable"
+        )
+        raise ValueError(f"{name} is on an impassable pixel (land, NaN or infinite cost): {describe(chart, (r, c))}; {hint}")
+    return r, c
+
+
+def pixel_of(chart: Chart, point, name: str) -> tuple[int, int]:
+    """The pixel holding a point, passable or not: (lat, lon) on geographic charts, (row, col)
+    otherwise; ValueError when it is off the chart."""
     try:
         a, b = (float(v) for v in point)
     except (TypeError, ValueError):
@@ -70,14 +86,6 @@ def locate(chart: Chart, point, name: str) -> tuple[int, int]:
                 f"{name} (row {r}, col {c}) lies outside the chart of {rows} rows x {cols} columns; "
                 f"give a (row, col) pixel index with 0 <= row < {rows} and 0 <= col < {cols}"
             )
-    if not chart.passable((r, c)):
-        near = nearest_passable(chart, (r, c))
-        hint = (
-            f"the nearest passable pixel is {describe(chart, near)}"
-            if near
-            else "no pixel of the chart is passable"
-        )
-        raise ValueError(f"{name} is on an impassable pixel (land, NaN or infinite cost): {describe(chart, (r, c))}; {hint}")
     return r, c
 
 

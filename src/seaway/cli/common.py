@@ -30,6 +30,17 @@ def point(text: str) -> tuple[float, float]:
     return a, b
 
 
+def positive_km(text: str) -> float:
+    """argparse type for a distance in km (>= 0)."""
+    try:
+        km = float(text)
+    except ValueError:
+        km = float("nan")
+    if not (np.isfinite(km) and km >= 0):
+        raise argparse.ArgumentTypeError(f"expected a distance in km (>= 0), got {text!r}")
+    return km
+
+
 def grid(text: str) -> tuple:
     """argparse type for SOUTH,NORTH,WEST,EAST,RES (degrees)."""
     try:

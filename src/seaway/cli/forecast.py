@@ -17,7 +17,6 @@ import os
 import numpy as np
 
 from ..ice.season import SeasonGrid, as_season
-from ..output import export
 from ..vessel import Vessel, load
 from ..weather import (
     ForecastGrid,
@@ -31,6 +30,7 @@ from ..weather import (
 )
 from ..weather.forecast import ROLES, check_roles
 from .common import Progress, searching, tell
+from .outputs import check_outputs, write_outputs
 
 OBJECTIVES = ("time", "fuel", "safety")
 EXAMPLE = ("example: seaway route --forecast waves.nc --forecast currents.nc --depart "
@@ -161,6 +161,7 @@ def _season(args, ice_class, departure, say):
 def run_forecast_route(args) -> int:
     """`seaway route [CHART] --forecast FILE ...`."""
     say = Progress("route", args.quiet)
+    planned = check_outputs(args.out, args.plot)  # before any work: nothing found is then lost
     say(f"reading the forecast: {', '.join(args.forecast)}")
     variables = dict(args.forecast_variable or [])
     ds, notes = open_forecasts(args.forecast, variables)
@@ -194,7 +195,7 @@ def run_forecast_route(args) -> int:
             say(f"routing on the forecast's grid ({rows} x {cols} pixels), land from its NaN fields "
                 "and the coastline of global-land-mask")
             r = _on_forecast(args, ds, fc, vessel, profile, land, source, common, say)
-    return _report(args, r, say)
+    return _report(args, r, planned, say)
 
 
 def _on_forecast(args, ds, fc, vessel, profile, land, source, common, say):
@@ -229,7 +230,7 @@ def _on_forecast(args, ds, fc, vessel, profile, land, source, common, say):
                       land=land, **common)
 
 
-def _report(args, r, say) -> int:
+def _report(args, r, planned, say) -> int:
     r.name = args.name
     why = "its model prices only the engine's steps" if not r.model.smoothable else ""
     if why:
@@ -242,11 +243,5 @@ def _report(args, r, say) -> int:
     v = r.stats.voyage
     for w in (v.waits if v is not None else ()):
         print(f"  wait {w.hours:.2f} h at {w.position[0]:.4f}, {w.position[1]:.4f} from {str(w.since)[:16]}")
-    for path in args.out or []:
-        say(f"wrote {path} ({export.write(r, path)})")
-    if args.plot:
-        from ..output.plot import plot_route
-
-        plot_route(r, args.plot, title=f"{args.name}: {r.length:.0f} km, {r.cost:.5g} {r.unit}")
-        say(f"wrote {args.plot} (PNG)")
+    write_outputs(planned, r, title=f"{args.name}: {r.length:.0f} km, {r.cost:.5g} {r.unit}", say=say)
     return 0

@@ -13,8 +13,8 @@ from ..ice.routegrid import route_grid
 from ..ice.season import SeasonGrid, read_season
 from ..models import IceSeasonTime
 from ..output import export
-from .chartfile import _in_degrees
 from .common import EPILOG, Progress, grid, neighbourhood, point, tell
+from .vectorchart import in_degrees
 
 
 def dated_chart(text: str) -> tuple[str, str]:
@@ -72,7 +72,7 @@ def _bounds(charts):
     boxes = []
     for _, path in charts:
         info = pyogrio.read_info(path)
-        if not _in_degrees(info):
+        if not in_degrees(info):
             return None
         boxes.append(info["total_bounds"])
     b = np.array(boxes, float)

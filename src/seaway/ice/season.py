@@ -45,7 +45,7 @@ from ..engine.prepared import PreparedChart
 from ..models import EdgeCost, IceSeasonTime
 from . import andreeva
 from .classes import get_class
-from .codes import ICE_FREE, STAGE_CODES
+from .codes import ICE_FREE
 from .impact import governing_stage
 from .sigrid import read_sigrid3
 
@@ -126,10 +126,7 @@ def andreeva_speed_kn(frame, ice_class, v0_kn, *, h_pass_m=None, stage_thickness
     else:
         if stage_thickness not in ("upper", "mid"):
             raise ValueError(f"stage_thickness must be 'upper' or 'mid', got {stage_thickness!r}")
-        stage = governing_stage(frame).values
-        h = np.full(ct.shape, np.nan)
-        for code, (_, (lo, hi)) in STAGE_CODES.items():
-            h[stage == code] = hi if stage_thickness == "upper" else 0.5 * (lo + hi)
+        h = andreeva.stage_thickness(governing_stage(frame), stage_thickness)
     h = np.where(ct == 0, 0.0, h)
     speed = andreeva.f2(h, h_pass) * np.asarray(other_factor, dtype=float) * v0_kn
     return np.where(_closed(frame, ct, ice_class, concentration_limit), 0.0, speed)

@@ -109,9 +109,18 @@ class EdgeCost(CostModel):
 
     def no_route(self, where, prepared):
         k = prepared.neighbourhood
-        return (f"no route {where}: no chain of passable steps joins them with neighbourhood={k} "
-                "(separate water bodies, or a passage narrower than the land rule allows); try a "
-                "larger neighbourhood, check the land mask, or choose another end point")
+        chart = prepared.chart
+        closed = ~np.isfinite(chart.values) if chart.land is None else (
+            ~np.isfinite(chart.values) & (chart.land == 0))
+        if chart.land is not None and not closed.any():  # only the land can part them
+            return (f"no route {where}: no chain of passable steps joins them with neighbourhood="
+                    f"{k} (separate water bodies, or a passage narrower than the land rule allows); "
+                    "try a larger neighbourhood, check the land mask, or choose another end point")
+        return (f"no route {where}: no chain of passable steps joins them with neighbourhood={k}: "
+                "impassable pixels keep them apart (land, or a cost of inf or NaN, such as ice the "
+                "vessel may not enter), or a passage is narrower than the land rule allows; "
+                "seaway.engine.reach.explain_no_route (seaway.ice.noroute for ice charts) says "
+                "which, and how far the ship gets")
 
     def segments(self, chart, neighbourhood):
         return Segments(chart, EDGE_COSTS[self.name](chart.values), neighbourhood)

@@ -44,8 +44,17 @@ def route_table(route) -> str:
     timed = route.stats.voyage is not None
     if timed:  # a route on a clock: its real time, departure and arrival
         lines.append(voyage_line(s))
+    elif "speed_model" in s:  # times from the speed in the ice
+        t = fmt_hours(s["time_h"]) if np.isfinite(s["time_h"]) else "none"
+        lines.append(f"time: {t} ({s['speed_kn']:g} kn in open water; in ice {s['speed_model']})")
+        if s.get("stopped_km"):
+            lines.append(f"no time: the model gives no speed on {s['stopped_km']:.1f} km of the route "
+                         "(ice as thick as the class passes, or closed to it): an icebreaker's escort")
     elif "time_h" in s:
         lines[-1] += f"; {fmt_hours(s['time_h'])} at {s['speed_kn']:g} kn"
+    if "requested_start" in s:
+        lines.insert(1, f"requested {fmt_point(s['requested_start'], geo)} -> "
+                        f"{fmt_point(s['requested_end'], geo)}")
     lines += [f"assumed: {a}" for a in route.assumptions]
     if np.isfinite(s.get("least_depth_m", np.nan)):
         lines.append(f"least depth {s['least_depth_m']:.1f} m at {fmt_point(s['least_depth_at'], geo)}")
@@ -63,7 +72,7 @@ def route_table(route) -> str:
         row = [str(leg.number), fmt_point(leg.start, geo), fmt_point(leg.end, geo),
                f"{leg.course:05.1f}", f"{leg.distance_nm:.1f}" if geo else "",
                f"{leg.distance:.1f}" if geo else f"{leg.distance:.4g}",
-               (f"{leg.speed_kn:.1f}" if timed else f"{leg.speed_kn:g}") if leg.speed_kn else "-",
+               (f"{leg.speed_kn:.1f}" if timed else f"{leg.speed_kn:.3g}") if leg.speed_kn is not None else "-",
                f"{leg.time_h:.1f}" if leg.time_h is not None else "-",
                short(leg.arrive) if dated else "", f"{leg.cost:.5g}" if cost_col else ""]
         for n in env:
