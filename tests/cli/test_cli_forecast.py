@@ -180,3 +180,24 @@ def test_replan_continues_the_voyage_from_where_the_ship_is(tmp_path, capsys):
                / np.timedelta64(1, "s")) <= 60
     code = main(["replan", str(first), *map(str, argv), "--at", "2026-10-09T00:00", "-q"])
     assert code == 1 and "is outside the voyage" in capsys.readouterr().err
+
+
+def test_the_least_time_in_danger_when_no_route_avoids_the_danger_zones(tmp_path, capsys):
+    # A ship that avoids wind over 11 m/s (Sotnikova 2009's danger zones); by the last day the
+    # gale blows up to 18 m/s over the south-west, the start among it: no safe route exists, so
+    # the route spends the least hours in danger, said and recorded in the outputs.
+    paths = ff.write_cf_per_variable(tmp_path)
+    argv = [a for p in paths for a in ("--forecast", p)]
+    ship_file = tmp_path / "ship.toml"
+    ship_file.write_text('name = "feeder"\nservice_speed_kn = 12.0\ndisplacement_t = 15000.0\n'
+                         'danger_wind_ms = 11.0\n')
+    out_geo = tmp_path / "r.geojson"
+    code, out, err = _run(capsys, *argv, "--vessel-file", ship_file, "--depart", "2026-10-03T18:00",
+                          A, B, "--out", out_geo)
+    assert code == 0, err
+    props = json.loads(out_geo.read_text())["properties"]
+    api = route_time(ff.in_memory(), (70.5, 21), (73.5, 29), vessel=load(ship_file).vessel,
+                     departure="2026-10-03T18:00", land=_land(ff.in_memory()))
+    assert api.stats.danger is not None and props["hours_in_danger"] == pytest.approx(api.stats.danger.hours)
+    assert props["hours_in_danger"] > 0 and "no route avoids the danger zones" in err
+    assert "through danger zones:" in out and props["time_h"] == pytest.approx(api.cost, rel=1e-12)

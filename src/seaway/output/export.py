@@ -259,6 +259,8 @@ def header_lines(route, speed_kn=None) -> list:
             lines.append(f"departure {s['departure']}, arrival {s['arrival']}")
         if "forecast" in s:
             lines.append(f"forecast {s['forecast']}")
+        if "hours_in_danger" in s:
+            lines.append(f"through danger zones {s['hours_in_danger']:.1f} h (no route avoids them)")
     else:
         if "time_h" in s:
             head += f", {s['time_h']:.1f} h at {s['speed_kn']:g} kn"

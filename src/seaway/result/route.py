@@ -39,8 +39,7 @@ class Leg:
     #: name -> the chart variable along the leg (seaway.result.environment): Numeric (mean, max)
     #: pairs ((mean, min) for LEAST) or, for stages and forms of ice, a Category.
     environment: dict
-    #: When the ship leaves the leg's first waypoint and reaches its last (routes on a clock
-    #: with a departure: seaway.result.schedule), else None.
+    #: Leaves the first waypoint, reaches the last (on a clock: seaway.result.schedule) or None.
     depart: np.datetime64 | None = None
     arrive: np.datetime64 | None = None
 
@@ -196,12 +195,11 @@ class Route:
             if ice is not None and nm is not None:  # the leg's mean speed; 0 where it stops
                 hours = float(hours_of[i:j].sum())
                 leg_speed = nm / hours if 0 < hours < np.inf else (0.0 if hours else speed)
-            leg = Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm, leg_speed,
-                      hours, float(costs[i:j].sum()), self._along(i, j))
             if timed is not None:  # the leg's real hours and the speed it makes good under way
-                leg.time_h, leg.speed_kn = timed.leg(i, j, nm)
-                leg.depart, leg.arrive = timed.etd(i), timed.eta(j)
-            out.append(leg)
+                hours, leg_speed = timed.leg(i, j, nm)
+            out.append(Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm, leg_speed,
+                           hours, float(costs[i:j].sum()), self._along(i, j),
+                           *((timed.etd(i), timed.eta(j)) if timed is not None else ())))
         return out
 
     def sample_pixels(self, i: int = 0, j: int | None = None) -> np.ndarray:

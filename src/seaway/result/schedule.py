@@ -81,4 +81,6 @@ def voyage_summary(route) -> dict:
         out.update(departure=iso(v.departure), arrival=iso(v.arrival))
     if v.forecast:
         out["forecast"] = v.forecast
+    if route.stats.danger is not None:  # no route avoided the danger zones (Sotnikova 2009)
+        out["hours_in_danger"] = float(route.stats.danger.hours)
     return out

@@ -101,4 +101,8 @@ def voyage_line(s: dict) -> str:
         text = f"departure {s['departure']}, arrival {s['arrival']}: " + text
     if s.get("hours_waiting"):
         text += f" ({fmt_hours(s['hours_waiting'])} waiting)"
-    return text + (f"; forecast {s['forecast']}" if "forecast" in s else "")
+    text += f"; forecast {s['forecast']}" if "forecast" in s else ""
+    if "hours_in_danger" in s:
+        text += (f"\nthrough danger zones: {s['hours_in_danger']:.1f} h, the least possible "
+                 "(no route avoids them; Sotnikova 2009)")
+    return text
