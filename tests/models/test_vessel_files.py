@@ -59,6 +59,7 @@ def _write(tmp_path, text, name="ship.toml"):
     ('name = "x"\nservice_speed_kn = 12\n[fuel]\nspeeds_kn = [10, 12]\nrates_t_per_h = [1]', r"fuel .* needs speeds_kn and rates_t_per_h, two lists of one length"),
     ('name = "x"\nservice_speed_kn = 12\n[sources]\ndraught_m = "yard"', r"sources .* must be a table of the file's fields, got \['draught_m'\]"),
     ('name = "x"\nservice_speed_kn = 12 kn', r"not valid TOML \("),
+    ('name = "x"\nservice_speed_kn = 12\noutside_validity = "ignore"', r"outside_validity .* must be refuse or warn, got 'ignore'"),
 ])
 def test_a_wrong_vessel_file_is_refused_naming_the_field_and_the_fix(tmp_path, text, message):
     path = _write(tmp_path, text)

@@ -192,3 +192,22 @@ def test_the_readme_kara_sea_autumn_example():
     readme = (Path(__file__).parents[2] / "README.md").read_text()
     eta = str(r.stats.voyage.arrival)[:16].replace("T", " ")
     assert f"# {r.cost:.1f} h, arrival {eta} UTC" in readme
+
+
+def test_a_polar_class_takes_the_polaris_speed_limit_in_ice_by_hand():
+    # 10/10 thick first-year ice (SA 93): a PC6's RIO is 10 x -1 = -10, elevated risk, so
+    # POLARIS limits it to 3 kn (MSC.1/Circ.1519 Table 1.4); a 1 m/s current due north adds
+    # 1.944 kn on a route due north. A Register Arc4 (h_pass 0.8 m) may not enter 2 m ice at all.
+    lat, lon = np.arange(72.0, 73.01, 0.1), np.arange(60.0, 61.01, 0.1)
+    shape = (1, lat.size, lon.size)
+    ds = xr.Dataset({"CT": (("time", "lat", "lon"), np.full(shape, 10.0)),
+                     "SA": (("time", "lat", "lon"), np.full(shape, 93.0))},
+                    coords={"time": [DAY0], "lat": lat, "lon": lon})
+    fc = _forecast_on(ds, ce=0.0, cn=1.0)
+    a, b = (72.0, 60.5), (73.0, 60.5)
+    pc6 = route_ice_weather(ds, fc, a, b, ice_class="PC6", vessel=SHIP, neighbourhood=3, speed="class")
+    nm = float(haversine(72.0, 60.5, 73.0, 60.5)) / KM_PER_NM
+    v_ice = 1.0 / (float(np.float32(1.0 / (3.0 * KM_PER_NM))) * KM_PER_NM)  # hours per km in float32
+    assert pc6.cost == pytest.approx(nm / (v_ice + KNOTS_PER_MS), rel=1e-12)
+    with pytest.raises(ValueError, match="start .* is in ice class Arc4 may not enter"):
+        route_ice_weather(ds, fc, a, b, ice_class="Arc4", vessel=SHIP, neighbourhood=3, speed="class")

@@ -16,6 +16,7 @@ import os
 
 import numpy as np
 
+from ..ice.classes import get_class
 from ..ice.season import SeasonGrid, as_season
 from ..vessel import Vessel, load
 from ..weather import (
@@ -186,10 +187,13 @@ def run_forecast_route(args) -> int:
                 raise ValueError("through ice and weather at once only the least time is modelled; "
                                  "use --objective time, or leave CHART out")
             season = _season(args, ice_class or "Arc7", departure, say)
-            say(f"routing {ice_class or 'Arc7'} through the ice and the forecast")
-            r = route_ice_weather(season, ds, args.start, args.end, ice_class=ice_class or "Arc7",
-                                  vessel=vessel, departure=departure, persist=args.persist,
-                                  source=source, **common)
+            cls = get_class(ice_class or "Arc7")
+            model = "IMO POLARIS speed limits" if cls.system in ("IACS", "FSICR") else "Andreeva 2021's V = F x V0"
+            say(f"routing {cls.name} through the ice ({model}) and the forecast")
+            r = route_ice_weather(season, ds, args.start, args.end, ice_class=cls.name, vessel=vessel,
+                                  departure=departure, persist=args.persist, source=source,
+                                  speed="class", **common)
+            r = dataclasses.replace(r, notes=tuple(r.notes) + (f"speed in ice: {model} ({cls.name})",))
         else:
             land = fc.dry | _coastline(ds)
             say(f"routing on the forecast's grid ({rows} x {cols} pixels), land from its NaN fields "

@@ -36,7 +36,8 @@ class Vessel:
         if self.outside_validity == "warn":
             warnings.warn(msg, stacklevel=4)
         else:
-            raise ValueError(msg + "; pass outside_validity='warn' to go on, or another speed_loss")
+            raise ValueError(msg + "; pass outside_validity='warn' to go on (in a vessel file: "
+                             "outside_validity = \"warn\"), or another speed_loss")
 
     def check_waves(self, max_hs_m: float):
         """STAWAVE-1 holds for Hs <= 2.25 sqrt(L / 100) (ITTC 7.5-04-01-01.1)."""

@@ -60,6 +60,7 @@ FIELDS = {
     "beam_m": ("positive", "waterline breadth in metres", "50.0"),
     "speed_loss": ("choice", f"speed loss in waves, one of {', '.join(SPEED_LOSSES)}", '"stawave1"'),
     "calm_resistance_kn": ("positive", "calm-water resistance at the service speed in kN", "3000.0"),
+    "outside_validity": ("validity", "a speed-loss formula outside its range: refuse or warn", '"warn"'),
     "max_wind_ms": ("positive", "the wind the ship never sails in, m/s", "25.0"),
     "max_wave_m": ("positive", "the significant wave height it never sails in, m", "5.0"),
     "danger_wind_ms": ("positive", "wind of the danger zones it avoids while forecast, m/s", "11.0"),
@@ -146,6 +147,8 @@ def _check(path, data) -> dict:
             value = tuple(_number(path, key, v) for v in value)
             if value[0] > value[1]:
                 _fail(path, key, f"must be [slowest, fastest], got {list(value)}")
+        elif kind == "validity" and value not in ("refuse", "warn"):
+            _fail(path, key, f"must be refuse or warn, got {value!r}")
         elif kind == "choice" and value not in SPEED_LOSSES:
             _fail(path, key, f"must be one of {', '.join(SPEED_LOSSES)}, got {value!r}")
         elif kind == "fuel":
@@ -221,7 +224,7 @@ def load(path) -> Profile:
     d = _check(path, _read(path))
     limits = {k: d[k] for k in ("max_wind_ms", "max_wave_m", "danger_wind_ms", "danger_wave_m",
                                 "beam_m", "length_m", "calm_resistance_kn", "displacement_t",
-                                "speed_loss") if k in d}
+                                "speed_loss", "outside_validity") if k in d}
     vessel = Vessel(speed_kn=d["service_speed_kn"], **limits)
     if vessel.speed_loss == "stawave1" and not all(k in d for k in ("beam_m", "length_m", "calm_resistance_kn")):
         _fail(path, "speed_loss", "= 'stawave1' needs beam_m, length_m and calm_resistance_kn")
