@@ -152,9 +152,16 @@ class IceSeasonModel:
     def __init__(self, hours_per_km: npt.NDArray[np.float32], valid_from_h: list[float],
                  min_hours_per_km: float) -> None: ...
 
+class IceWeatherModel:
+    #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
+    #: time_dependent, smoothable.
+    capabilities: ClassVar[dict[str, bool]]
+    def __init__(self, ice: IceSeasonModel, forecast: Forecast, vessel: Vessel,
+                 min_hours_per_km: float) -> None: ...
+
 #: Every model the router is instantiated for (cpp/models.hpp).
 Model = (MaxCost | MeanCost | IntegralCost | LengthCost | EnteredPixelCost | TravelTimeModel | FuelModel
-         | WaveDangerModel | IceSeasonModel | ZonedTravelTimeModel)
+         | WaveDangerModel | IceSeasonModel | IceWeatherModel | ZonedTravelTimeModel)
 #: The static models (capabilities: static): the bidirectional search.
 StaticModel = MaxCost | MeanCost | IntegralCost | LengthCost | EnteredPixelCost
 #: The raster rules (capabilities: static, symmetric, turn_penalty, smoothable): landmarks, turn

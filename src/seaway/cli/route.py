@@ -27,12 +27,20 @@ from .common import (
 from .constraints import add_constraint_options, constraint_options
 from .depth import for_route
 from .ends import check_ends
+from .forecast import EXAMPLE as FORECAST_EXAMPLE
+from .forecast import add_forecast_options, check_forecast_options, run_forecast_route
 from .noroute import ice_chart, why_no_route
 from .outputs import check_outputs, write_outputs
 from .projected import end_pixel, pixel_latlon
 
 
 def run_route(args) -> int:
+    check_forecast_options(args)
+    if args.forecast:  # weather routing (seaway.cli.forecast)
+        return run_forecast_route(args)
+    if args.chart is None:
+        raise ValueError("give a CHART file, or --forecast FILE to route through a forecast on its "
+                         "own grid")
     say = Progress("route", args.quiet)
     planned = check_outputs(args.out, args.plot)  # before any work: nothing found is then lost
     say(f"reading {args.chart}")
@@ -119,11 +127,14 @@ def add_route_command(commands) -> None:
         "route", help="route a ship across a chart file and print, write and plot the route",
         description="Find the least-cost route across CHART from --from to --to, smooth it, print "
                     "its legs (course, distance, time, cost, ice along each leg) and optionally "
-                    "write it (GeoJSON, GPX, RTZ, CSV) and plot it (PNG).", epilog=EPILOG)
-    rp.add_argument("chart", metavar="CHART",
+                    "write it (GeoJSON, GPX, RTZ, CSV) and plot it (PNG). With --forecast: the "
+                    "quickest route through a weather forecast from --depart, with its schedule.",
+        epilog=f"{EPILOG} Weather routing, {FORECAST_EXAMPLE}")
+    rp.add_argument("chart", metavar="CHART", nargs="?",
                     help="chart file: NetCDF (.nc), GeoTIFF (.tif, needs rasterio), SIGRID-3 "
                          "(.shp/.gpkg, needs seaway.ice.sigrid), or 'kara' for the built-in "
-                         "synthetic Kara Sea chart")
+                         "synthetic Kara Sea chart; with --forecast it may be left out (the "
+                         "forecast's own grid) or be an ice chart (ice and weather in one voyage)")
     add_ends(rp)
     rp.add_argument("--vessel", metavar="CLASS",
                     help="ice class (e.g. Arc7, Arc5): turns the chart's stage of development "
@@ -186,7 +197,8 @@ def add_route_command(commands) -> None:
                          "on an ice chart the speed in the ice comes from a model named in the "
                          "output: Andreeva 2021's V = F x V0 for Register classes, the IMO POLARIS "
                          "speed limits for Polar Classes and Finnish-Swedish classes "
-                         "(seaway.ice.speed)")
+                         "(seaway.ice.speed); with --forecast the calm-water speed (default 12, or the "
+                         "vessel file's)")
     rp.add_argument("--name", default="seaway route", help="route name in the outputs")
     rp.add_argument("--out", action="append", metavar="FILE",
                     help="write the route; the extension picks the format: .geojson/.json, .gpx, "
@@ -199,3 +211,4 @@ def add_route_command(commands) -> None:
                          "WMO colour code (by stage of development on stage charts, fast ice grey), "
                          "with --depth/--draft the shoals and the least depth")
     rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")
+    add_forecast_options(rp)  # seaway.cli.forecast

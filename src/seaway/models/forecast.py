@@ -29,7 +29,9 @@ class WeatherGrid(TimedGrid, Protocol):
     @property
     def shape(self) -> tuple[int, ...]: ...
     def engine(self) -> _core.Forecast: ...
-    def best_extra_kn(self, vessel: Vessel) -> float: ...
+    def best_extra_kn(self, vessel: Vessel, slowest_kn: float | None = None) -> float: ...
+    def describe(self) -> str: ...
+    def assumed(self, arrival: np.datetime64 | None) -> list[str]: ...
     def frame_at(self, hours: float, roles: Sequence[str]) -> WeatherGrid: ...
     def later(self, hours: float) -> WeatherGrid: ...
 
@@ -68,7 +70,7 @@ class TravelTime(_OnForecast):
     def __init__(self, forecast: WeatherGrid, vessel: Vessel | None = None,
                  zones: Zone | Iterable[Zone] = ()) -> None:
         vessel = Vessel() if vessel is None else vessel
-        vessel.check()
+        vessel.check(waves="wave_height" in forecast.arrays)
         if "wave_height" in forecast.arrays:
             vessel.check_waves(float(forecast.arrays["wave_height"].max()))
         self.forecast, self.vessel = forecast, vessel
@@ -99,8 +101,11 @@ class TravelTime(_OnForecast):
         wait_h = per_step.wait_h
         if wait_h is None and not self.zones:
             wait_h = np.zeros(len(route.costs()))
-        voyage = Voyage.along(route.cost, route.costs(), wait_h, self.forecast.departure,
-                              pixels=route.pixels, coords=route.coords)
+        fc = self.forecast
+        voyage = Voyage.along(route.cost, route.costs(), wait_h, fc.departure,
+                              pixels=route.pixels, coords=route.coords,
+                              forecast=fc.describe())
+        voyage = dataclasses.replace(voyage, assumptions=tuple(fc.assumed(voyage.arrival)))
         route.stats = dataclasses.replace(route.stats, voyage=voyage)
         route.speed_kn = self.vessel.speed_kn
         return route
@@ -122,7 +127,7 @@ class Fuel(_OnForecast):
         number(time_value_t_per_h, "time_value_t_per_h", minimum=0, what="a number >= 0")
         number(at_hours, "at_hours")
         self.forecast, self.vessel, self.fuel = forecast, vessel, fuel
-        self.time_value_t_per_h = float(time_value_t_per_h)
+        self.time_value_t_per_h, self.at_hours = float(time_value_t_per_h), float(at_hours)
         frame = forecast.frame_at(at_hours, ("current_east", "current_north", "wave_height",
                                              "wave_from", "wind_speed"))
         self._engine = _core.FuelModel(frame.engine(), vessel.to_core(), list(fuel.speeds_kn),
@@ -145,7 +150,15 @@ class Fuel(_OnForecast):
         use = FuelUse(fuel_t=float(np.sum(per_step.fuel_t)), hours=float(np.sum(per_step.hours)),
                       speeds_kn=np.asarray(self.fuel.speeds_kn, dtype=np.float64)[setting],
                       time_value_t_per_h=self.time_value_t_per_h)
-        route.stats = dataclasses.replace(route.stats, fuel=use)
+        fc, hours = self.forecast, np.asarray(per_step.hours, dtype=np.float64)
+        departure = None if fc.departure is None else fc.departure + np.timedelta64(
+            int(round(self.at_hours * 3.6e12)), "ns")
+        voyage = Voyage.along(use.hours, hours, np.zeros(hours.size), departure, pixels=route.pixels,
+                              coords=route.coords, forecast=fc.describe())
+        said = (f"the fuel route reads the weather of one forecast frame, the one valid nearest "
+                f"{self.at_hours:g} h after the forecast's first time, for the whole voyage",)
+        voyage = dataclasses.replace(voyage, step_h=hours, assumptions=said)
+        route.stats = dataclasses.replace(route.stats, fuel=use, voyage=voyage)
         return route
 
     def no_route(self, where: str, prepared: Prepared) -> str:

@@ -52,6 +52,15 @@ class Voyage:
     charts_used: tuple[np.datetime64, ...] = ()
     #: The ice class the route was found for (ice seasons; None for forecasts).
     ice_class: str | None = None
+    #: The forecast the route was found through (its files and the times they cover; None for
+    #: ice seasons alone).
+    forecast: str | None = None
+    #: What the voyage's times rest on beyond the data (persistence of a forecast or an ice
+    #: chart past its last time), in words; Route.assumptions lists them too.
+    assumptions: tuple[str, ...] = ()
+    #: Hours of each step when the route's cost is not hours (the fuel model); None when the
+    #: step costs are the hours.
+    step_h: npt.NDArray[np.float64] | None = None
 
     @property
     def hours_waiting(self) -> float | None:
@@ -69,7 +78,8 @@ class Voyage:
               wait_h: npt.NDArray[np.float64] | None, departure: np.datetime64 | None, *,
               pixels: npt.NDArray[np.int64], coords: npt.NDArray[np.float64],
               tick: Literal["s", "ms"] = "s", charts_used: tuple[np.datetime64, ...] = (),
-              ice_class: str | None = None) -> Voyage:
+              ice_class: str | None = None, forecast: str | None = None,
+              assumptions: tuple[str, ...] = ()) -> Voyage:
         """The voyage of a route of `hours` whose steps take `step_h` hours each (waits
         included), waiting `wait_h` hours before each step; `pixels` and `coords` are the
         route's vertices; times are rounded to `tick`."""
@@ -89,7 +99,8 @@ class Voyage:
                 Wait((int(px[i, 0]), int(px[i, 1])), (float(xy[i, 0]), float(xy[i, 1])),
                      at(float(cum[i])), float(waited[i]))
                 for i in np.flatnonzero(waited > WAIT_EPS_H))
-        return cls(float(hours), departure, at(hours), waited, stops, tuple(charts_used), ice_class)
+        return cls(float(hours), departure, at(hours), waited, stops, tuple(charts_used), ice_class,
+                   forecast, tuple(assumptions))
 
 
 @dataclass(frozen=True, eq=False)

@@ -10,15 +10,18 @@ import numpy as np
 import numpy.typing as npt
 
 from .. import _core
+from ..base.units import KM_PER_NM
 from ..base.validate import number
 from ..chart.locate import describe
 from ..ice.classes import get_class
+from ..vessel import Vessel
 from .base import CostModel, Prepared, RouteT
 from .results import StepValues, Voyage
 
 if TYPE_CHECKING:
     from ..ice import classes  # classes.IceClass: one name in the API pages (seaway.ice re-exports it)
     from ..ice.season import Departure, SeasonGrid, SeasonLike, SpeedTable
+    from .forecast import WeatherGrid
 
 
 class IceSeasonTime(CostModel):
@@ -35,6 +38,8 @@ class IceSeasonTime(CostModel):
 
     name = "ice season time"
     time_dependent = True
+    #: Warn when the voyage outlasts the last chart's usual validity (it is recorded either way).
+    _warn_late = True
 
     def __init__(self, season: SeasonGrid | SeasonLike, ice_class: str | classes.IceClass = "Arc7",
                  v0_kn: float = 12.0, *, departure: Departure = None,
@@ -54,12 +59,13 @@ class IceSeasonTime(CostModel):
             raise ValueError(f"class {self.ice_class} may go nowhere in any chart of the season from "
                              f"{self.departure} on; try a stronger class or other speeds")
         fastest = float(np.min(self.hours_per_km, where=self._open[None], initial=np.inf))
-        self._engine = _core.IceSeasonModel(self.hours_per_km, list(self.valid_from_h), fastest)
+        self._engine: _core.IceSeasonModel | _core.IceWeatherModel = _core.IceSeasonModel(
+            self.hours_per_km, list(self.valid_from_h), fastest)
 
     def unit(self, geographic: bool) -> str:
         return "h"
 
-    def engine(self, prepared: Prepared) -> _core.IceSeasonModel:
+    def engine(self, prepared: Prepared) -> _core.IceSeasonModel | _core.IceWeatherModel:
         if prepared.chart.shape != self.season.shape:
             raise ValueError(f"the season's charts have {self.season.shape} pixels but the chart "
                              f"{prepared.chart.shape}: route on the season's grid "
@@ -95,15 +101,67 @@ class IceSeasonTime(CostModel):
         voyage = Voyage.along(hours, route.step_costs, depart - cum[:-1], self.departure,
                               pixels=route.pixels, coords=route.coords, tick="ms",
                               charts_used=tuple(times[k] for k in used), ice_class=self.ice_class)
-        route.stats = dataclasses.replace(route.stats, voyage=voyage)
         # No route.speed_kn: legs at one speed would contradict the per-step times and waits.
         if hours > self.valid_from_h[-1] + self.season.last_valid_h:
-            warnings.warn(f"the voyage arrives at {voyage.arrival}, beyond the last chart "
-                          f"({times[-1]}) and its usual validity; the last chart was assumed to hold",
-                          stacklevel=3)
+            said = (f"the voyage arrives at {voyage.arrival}, beyond the last chart "
+                    f"({times[-1]}) and its usual validity; the last chart was assumed to hold")
+            voyage = dataclasses.replace(voyage, assumptions=voyage.assumptions + (said,))
+            if self._warn_late:
+                warnings.warn(said, stacklevel=3)
+        route.stats = dataclasses.replace(route.stats, voyage=voyage)
         return route
 
     def no_route(self, where: str, prepared: Prepared) -> str:
         return (f"no route for class {self.ice_class} {where} in any chart of the season from "
                 f"{self.departure} on, even waiting for the ice to clear; try a stronger class, "
                 "a larger neighbourhood or another end")
+
+
+class IceWeatherTime(IceSeasonTime):
+    """Hours through ice and weather at once (cpp/seaway/ice_weather.hpp): each step crosses the
+    ice chart valid when the ship starts it at the class's speed there (as IceSeasonTime), and the
+    forecast at that time changes that speed as it changes a calm-water speed (TravelTime:
+    Khokhlov's or STAWAVE-1's loss in waves, the wind and wave limits, currents); the class's
+    limits still close the ice it may not enter. Exact (FIFO) when the weather is; the ship may
+    wait for a later chart. `season` a seaway.ice.season.SeasonGrid (or what it takes);
+    `forecast` a seaway.weather.ForecastGrid on the season's grid, whose departure is the
+    voyage's; `vessel` a seaway.vessel.Vessel, its speed_kn the open-water speed V0.
+
+    Route.stats.voyage as IceSeasonTime's, with the forecast and what it assumes."""
+
+    name = "ice and weather time"
+    _warn_late = False  # the assumption is in Route.assumptions, which the CLI prints
+
+    def __init__(self, season: SeasonGrid | SeasonLike, forecast: WeatherGrid,
+                 ice_class: str | classes.IceClass = "Arc7", vessel: Vessel | None = None, *,
+                 speed: str | SpeedTable = "andreeva", **speed_options: Any) -> None:
+        vessel = Vessel() if vessel is None else vessel
+        vessel.check(waves="wave_height" in forecast.arrays)
+        super().__init__(season, ice_class, vessel.speed_kn, departure=forecast.departure,
+                         speed=speed, **speed_options)
+        if forecast.shape != self.season.shape:
+            raise ValueError(f"the forecast has {forecast.shape} pixels but the season's charts "
+                             f"{self.season.shape}: put it on their grid first "
+                             "(seaway.weather.files.on_grid)")
+        self.forecast, self.vessel = forecast, vessel
+        fastest_kn = 1.0 / (KM_PER_NM * float(np.min(self.hours_per_km, where=self._open[None],
+                                                     initial=np.inf)))
+        best = fastest_kn + forecast.best_extra_kn(vessel, slowest_kn=0.0)
+        assert isinstance(self._engine, _core.IceSeasonModel)  # set so by IceSeasonTime
+        self._engine = _core.IceWeatherModel(self._engine, forecast.engine(), vessel.to_core(),
+                                             1.0 / (KM_PER_NM * best))
+
+    def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
+        """IceSeasonTime's Voyage with the forecast and what it assumes."""
+        route = super().finish(route, per_step)
+        v = route.stats.voyage
+        said = tuple(self.forecast.assumed(v.arrival)) + v.assumptions
+        route.stats = dataclasses.replace(route.stats, voyage=dataclasses.replace(
+            v, forecast=self.forecast.describe(), assumptions=said))
+        return route
+
+    def no_route(self, where: str, prepared: Prepared) -> str:
+        return (f"no route for class {self.ice_class} {where} through the ice charts and the "
+                f"forecast from {self.departure} on (the class's ice limits, the vessel's wind and "
+                "wave limits), even waiting for the ice to clear; try a stronger class, another "
+                "departure or another end")

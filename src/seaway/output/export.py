@@ -21,6 +21,7 @@ import numpy as np
 from ..base import sphere as geo
 from ..base.files import replace_atomically, write_all, write_atomically  # noqa: F401 - part of this API
 from ..result.environment import CATEGORICAL, STAGES, Category, extreme_name
+from ..result.schedule import iso, schedule
 from .webmap import html_text
 
 #: Summary entries that are points, given in GeoJSON properties as [lat, lon] ([y, x] or
@@ -71,6 +72,7 @@ def geojson(route, antimeridian: str = "split", speed_kn=None) -> dict:
         elif k == "assumptions":  # what the chart's ice assumes (seaway.ice.forms)
             props[k] = list(v)
     props["name"] = route.name
+    props.update(_voyage_properties(route))
     if route.geographic and antimeridian == "split":
         c = route.coords
         lon = geo.unwrap_lon(c[:, 1])
@@ -90,8 +92,11 @@ def gpx(route, speed_kn=None) -> str:
     rte = ET.SubElement(root, f"{{{GPX_NS}}}rte")
     ET.SubElement(rte, f"{{{GPX_NS}}}name").text = route.name
     ET.SubElement(rte, f"{{{GPX_NS}}}desc").text = describe(route, speed_kn)
-    for k, (lat, lon) in enumerate(route.waypoints, start=1):
+    timed = schedule(route)
+    for k, ((lat, lon), i) in enumerate(zip(route.waypoints, route.waypoint_index), start=1):
         pt = ET.SubElement(rte, f"{{{GPX_NS}}}rtept", {"lat": f"{lat:.7f}", "lon": f"{_wrap180(lon):.7f}"})
+        if timed is not None and timed.departure is not None:  # GPX 1.1 orders time before name
+            ET.SubElement(pt, f"{{{GPX_NS}}}time").text = iso(timed.eta(int(i)))
         ET.SubElement(pt, f"{{{GPX_NS}}}name").text = f"WP{k:03d}"
     return _xml(root)
 
@@ -103,26 +108,51 @@ def rtz(route, speed_kn=None) -> str:
     ET.register_namespace("", RTZ_NS)
     speed = route.speed_kn if speed_kn is None else speed_kn
     root = ET.Element(f"{{{RTZ_NS}}}route", {"version": "1.0"})
-    info = ET.SubElement(root, f"{{{RTZ_NS}}}routeInfo", {"routeName": route.name,
-                                                           "routeAuthor": "seaway",
-                                                           "routeStatus": "computed, not validated"})
+    attrs = {"routeName": route.name, "routeAuthor": "seaway", "routeStatus": "computed, not validated"}
+    timed = schedule(route)
+    dated = timed is not None and timed.departure is not None
+    if dated:  # the voyage's departure and arrival, and what the route was found through
+        attrs.update(validityPeriodStart=iso(timed.eta(0)), validityPeriodStop=iso(timed.eta(-1)))
+        attrs["optimizationMethod"] = f"least {route.unit} ({route.edge_cost})" + (
+            f"; forecast {timed.forecast}" if timed.forecast else "")
+    info = ET.SubElement(root, f"{{{RTZ_NS}}}routeInfo", attrs)
     ext = ET.SubElement(ET.SubElement(info, f"{{{RTZ_NS}}}extensions"), f"{{{RTZ_NS}}}extension",
                         {"manufacturer": "seaway", "name": "description", "version": "1.0"})
     ext.text = describe(route, speed_kn)
     wps = ET.SubElement(root, f"{{{RTZ_NS}}}waypoints")
     default = ET.SubElement(wps, f"{{{RTZ_NS}}}defaultWaypoint", {"radius": "0.1"})
     ET.SubElement(default, f"{{{RTZ_NS}}}leg", {"geometryType": "Orthodrome"})
-    legs = route.legs(speed_kn) if route.ice_speed is not None else None
+    legs = route.legs(speed_kn) if route.ice_speed is not None or timed is not None else None
     for k, (lat, lon) in enumerate(route.waypoints, start=1):
         wp = ET.SubElement(wps, f"{{{RTZ_NS}}}waypoint", {"id": str(k), "name": f"WP{k:03d}"})
         ET.SubElement(wp, f"{{{RTZ_NS}}}position", {"lat": f"{lat:.7f}", "lon": f"{_wrap180(lon):.7f}"})
         if k > 1:
             attrs = {"geometryType": "Orthodrome"}
-            leg_speed = legs[k - 2].speed_kn if legs is not None else speed  # in ice: the leg's mean
+            leg_speed = legs[k - 2].speed_kn if legs is not None else speed  # in ice, on a clock: the leg's
             if leg_speed:
                 attrs["speedMax"] = f"{float(leg_speed):.2f}"
             ET.SubElement(wp, f"{{{RTZ_NS}}}leg", attrs)
+    if dated:
+        _rtz_schedule(root, route, legs)
     return _xml(root)
+
+
+def _rtz_schedule(root, route, legs) -> None:
+    """RTZ's calculated schedule: for each waypoint its ETA and ETD (after any wait there) and
+    the speed made good on the leg that ends at it (the first: the departure only)."""
+    timed = schedule(route)
+    scheds = ET.SubElement(root, f"{{{RTZ_NS}}}schedules")
+    one = ET.SubElement(scheds, f"{{{RTZ_NS}}}schedule", {"id": "1", "name": "seaway"})
+    calc = ET.SubElement(one, f"{{{RTZ_NS}}}calculated")
+    for k, i in enumerate(route.waypoint_index, start=1):
+        attrs = {"waypointId": str(k)}
+        if k > 1:
+            attrs["eta"] = iso(timed.eta(int(i)))
+        if k < len(route.waypoint_index):
+            attrs["etd"] = iso(timed.etd(int(i)))
+        if k > 1 and legs[k - 2].speed_kn is not None:
+            attrs["speed"] = f"{legs[k - 2].speed_kn:.2f}"
+        ET.SubElement(calc, f"{{{RTZ_NS}}}scheduleElement", attrs)
 
 
 CSV_FIELDS = ["waypoint", "lat", "lon", "leg", "course_deg", "distance_km", "distance_nm",
@@ -137,9 +167,13 @@ def csv_text(route, speed_kn=None) -> str:
     out = io.StringIO()
     out.writelines(f"# {line}\n" for line in header_lines(route, speed_kn))
     w = csv.writer(out, lineterminator="\n")
-    w.writerow(CSV_FIELDS + [h for n in env for h in _env_header(n)])
+    timed = schedule(route)
+    dated = timed is not None and timed.departure is not None
+    w.writerow(CSV_FIELDS + (["eta", "etd"] if dated else []) + [h for n in env for h in _env_header(n)])
     first = route.waypoints[0]
-    w.writerow([1, f"{first[0]:.7f}", f"{first[1]:.7f}"] + [""] * (len(CSV_FIELDS) - 3 + 2 * len(env)))
+    w.writerow([1, f"{first[0]:.7f}", f"{first[1]:.7f}"] + [""] * (len(CSV_FIELDS) - 3)
+               + (["", iso(timed.etd(0))] if dated else []) + [""] * (2 * len(env)))
+    wi = route.waypoint_index
     km = cost = 0.0
     for leg in legs:
         km, cost = km + leg.distance, cost + leg.cost
@@ -147,6 +181,9 @@ def csv_text(route, speed_kn=None) -> str:
                f"{leg.course:.2f}", f"{leg.distance:.4f}", _opt(leg.distance_nm, 4),
                _opt(leg.speed_kn, 2), _opt(leg.time_h, 3), f"{leg.cost:.6g}", f"{km:.4f}",
                f"{cost:.6g}"]
+        if dated:  # the waypoint's ETA, and its ETD (after any wait; none at the end)
+            last = leg.number == len(legs)
+            row += [iso(leg.arrive), "" if last else iso(timed.etd(int(wi[leg.number])))]
         row += [c for n in env for c in _env_cells(leg.environment[n])]
         w.writerow(row)
     return out.getvalue()
@@ -215,6 +252,15 @@ def header_lines(route, speed_kn=None) -> list:
         lines = [head, f"speed in ice: {s['speed_model']}"]
         if s.get("stopped_km"):
             lines.append(f"no speed on {s['stopped_km']:.1f} km (an icebreaker's escort)")
+    elif "departure" in s or route.stats.voyage is not None:  # a route on a clock: its real time
+        head += f", {s['time_h']:.1f} h"
+        lines = [head]
+        if "departure" in s:
+            lines.append(f"departure {s['departure']}, arrival {s['arrival']}")
+        if "forecast" in s:
+            lines.append(f"forecast {s['forecast']}")
+        if "hours_in_danger" in s:
+            lines.append(f"through danger zones {s['hours_in_danger']:.1f} h (no route avoids them)")
     else:
         if "time_h" in s:
             head += f", {s['time_h']:.1f} h at {s['speed_kn']:g} kn"
@@ -225,6 +271,17 @@ def header_lines(route, speed_kn=None) -> list:
             line += f" (requested {_point(s[f'requested_{end}'], None)})"
         lines.append(line)
     return lines + [f"assumed: {a}" for a in s.get("assumptions", ())]
+
+
+def _voyage_properties(route) -> dict:
+    """GeoJSON properties of a route on a clock: the time at every vertex (ISO 8601, in the
+    order of route.coords) and each waypoint's ETA and ETD; empty for other routes."""
+    timed = schedule(route)
+    if timed is None or timed.departure is None:
+        return {}
+    return {"vertex_times": [iso(timed.eta(i)) for i in range(len(route.coords))],
+            "waypoint_schedule": [{"waypoint": k, "eta": iso(timed.eta(int(i))), "etd": iso(timed.etd(int(i)))}
+                                  for k, i in enumerate(route.waypoint_index, start=1)]}
 
 
 def describe(route, speed_kn=None) -> str:

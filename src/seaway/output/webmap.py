@@ -19,6 +19,7 @@ from ..base import sphere as geo
 from ..base.files import write_atomically
 from ..ice.colours import classes, guess_code
 from ..result.environment import Category, least_depth
+from ..result.schedule import schedule, short
 from .leaflet import inline_leaflet, legend_control, popup_element
 from .style import (
     LAND_COLOUR,
@@ -139,9 +140,18 @@ def _popup(route, number, point, leg, speed_kn):
         lines.append(f"requested {_dms(asked[0], 'N', 'S', 2)} {_dms((asked[1] + 180) % 360 - 180, 'E', 'W', 3)}"
                      if route.geographic else f"requested {asked[0]:g}, {asked[1]:g}")
         lines += [html.escape(n) for n in route.notes if n.startswith("end " if last else "start ")]
+    timed = schedule(route)
+    if timed is not None and timed.departure is not None:  # the waypoint's ETA and ETD (UTC)
+        i = int(route.waypoint_index[number - 1])
+        if number > 1:
+            lines.append(f"ETA {short(timed.eta(i))} UTC")
+        if leg is not None:
+            lines.append(f"ETD {short(timed.etd(i))} UTC")
     if leg is None:
         lines.append(f"end: {route.length:.1f} {'km' if route.geographic else 'units'}, "
                      f"cost {route.cost:.6g} {html.escape(route.unit)}")
+        if timed is not None and timed.forecast:
+            lines.append(f"forecast {html.escape(timed.forecast)}")
         if route.ice_speed is not None:
             hours = sum(leg.time_h for leg in route.legs())
             lines.append(html.escape(f"time {hours:.1f} h" if np.isfinite(hours) else "no time")
@@ -153,6 +163,9 @@ def _popup(route, number, point, leg, speed_kn):
         if leg.time_h is not None and route.ice_speed is not None:  # the speed in the ice
             lines.append(f"time {leg.time_h:.2f} h at {leg.speed_kn:.3g} kn (mean, in ice)"
                          if np.isfinite(leg.time_h) else "no time: no speed in part of its ice")
+        elif leg.time_h is not None and timed is not None:  # on a clock: the real time
+            made = f", {leg.speed_kn:.1f} kn made good" if leg.speed_kn is not None else ""
+            lines.append(f"time {leg.time_h:.2f} h{made}")
         elif leg.time_h is not None:
             lines.append(f"time {leg.time_h:.2f} h at {speed_kn:g} kn")
         lines.append(f"cost {leg.cost:.6g} {html.escape(route.unit)}")

@@ -15,6 +15,7 @@ from ..chart.legs import index_coords, leg_path, turning_points
 from ..chart.raster import Chart
 from ..models.base import CostModel, EdgeCost
 from .environment import along, extreme_name  # noqa: F401 - extreme_name: part of this API
+from .schedule import schedule
 from .stats import RouteStats
 from .summary import route_summary
 from .table import route_table
@@ -38,6 +39,9 @@ class Leg:
     #: name -> the chart variable along the leg (seaway.result.environment): Numeric (mean, max)
     #: pairs ((mean, min) for LEAST) or, for stages and forms of ice, a Category.
     environment: dict
+    #: Leaves the first waypoint, reaches the last (on a clock: seaway.result.schedule) or None.
+    depart: np.datetime64 | None = None
+    arrive: np.datetime64 | None = None
 
 
 @dataclass
@@ -87,7 +91,8 @@ class Route:
         DataArray, which chart_impact sets), then .notes (a moved end); empty when nothing."""
         attrs = getattr(self.chart.template, "attrs", None) or {}
         said = attrs.get("assumptions", ())
-        return ((said,) if isinstance(said, str) else tuple(said)) + tuple(self.notes)
+        voyage = self.stats.voyage.assumptions if self.stats.voyage is not None else ()
+        return ((said,) if isinstance(said, str) else tuple(said)) + tuple(self.notes) + tuple(voyage)
 
     @property
     def vertices(self) -> np.ndarray:
@@ -178,6 +183,7 @@ class Route:
                 raise ValueError(f"the route's speeds in ice are for {ice.v0_kn:g} kn in open water, "
                                  f"not {speed:g} kn; make them again with with_ice_speed")
             speed, hours_of = ice.v0_kn, step_times(self)[0]
+        timed = schedule(self)  # a route on a clock: its real times, not those at one speed
         wi, c = self.waypoint_index, self.coords
         steps, costs = self.leg_lengths, self.costs()
         out = []
@@ -195,8 +201,11 @@ class Route:
             if ice is not None and nm is not None:  # the leg's mean speed; 0 where it stops
                 hours = float(hours_of[i:j].sum())
                 leg_speed = nm / hours if 0 < hours < np.inf else (0.0 if hours else speed)
-            out.append(Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm,
-                           leg_speed, hours, float(costs[i:j].sum()), self._along(i, j)))
+            if timed is not None:  # the leg's real hours and the speed it makes good under way
+                hours, leg_speed = timed.leg(i, j, nm)
+            out.append(Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm, leg_speed,
+                           hours, float(costs[i:j].sum()), self._along(i, j),
+                           *((timed.etd(i), timed.eta(j)) if timed is not None else ())))
         return out
 
     def sample_pixels(self, i: int = 0, j: int | None = None) -> np.ndarray:
@@ -223,17 +232,8 @@ class Route:
         seaway.ice.speed.ice_speed, whose attributes give the model and the open-water speed,
         or an array with `model`): each leg's time is its length over the speed along it, its
         speed the mean; speed_kn becomes the open-water speed."""
-        arr = knots
-        template = self.chart.template
-        if template is not None and hasattr(arr, "dims") and set(arr.dims) == set(template.dims):
-            arr = arr.transpose(*template.dims)
-        values = np.asarray(getattr(arr, "values", arr), float)
-        if values.shape != self.chart.shape:
-            raise ValueError(f"the speed has shape {values.shape}, the chart {self.chart.shape}")
-        attrs = getattr(knots, "attrs", {})
-        v0 = float(attrs.get("v0_kn", np.nanmax(values)))
-        field = SpeedField(values, model or str(attrs.get("model", "speed field")), v0)
-        return dataclasses.replace(self, ice_speed=field, speed_kn=v0)
+        field = SpeedField.on(self.chart, knots, model)
+        return dataclasses.replace(self, ice_speed=field, speed_kn=field.v0_kn)
 
     def with_environment(self, data, names=None) -> Route:
         """A copy that reports `data` along each leg: an xarray.Dataset or a dict of DataArrays or

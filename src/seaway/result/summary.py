@@ -6,6 +6,7 @@ import numpy as np
 
 from ..base import sphere as geo
 from .environment import CATEGORICAL, LEAST, least_depth, summarise, values_at
+from .schedule import voyage_summary
 from .timing import step_times
 
 
@@ -35,6 +36,8 @@ def route_summary(route, speed_kn=None) -> dict:
                 out["stopped_km"] = stopped
         elif speed:
             out.update(speed_kn=float(speed), time_h=length_nm / speed)
+    if route.stats.voyage is not None:  # a route on a clock: its real time, not one speed's
+        out.update(voyage_summary(route))
     for name, arr in route.environment.items():
         if name in CATEGORICAL:  # the governing / most frequent category of the whole route
             cat = summarise(name, values_at(arr, route.sample_pixels()))

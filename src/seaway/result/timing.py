@@ -23,6 +23,20 @@ class SpeedField:
     model: str
     v0_kn: float
 
+    @classmethod
+    def on(cls, chart, knots, model=None) -> SpeedField:
+        """The speed `knots` on `chart`'s grid: a DataArray from seaway.ice.speed.ice_speed
+        (its attributes give the model and the open-water speed) or an array with `model`."""
+        arr, template = knots, chart.template
+        if template is not None and hasattr(arr, "dims") and set(arr.dims) == set(template.dims):
+            arr = arr.transpose(*template.dims)
+        values = np.asarray(getattr(arr, "values", arr), float)
+        if values.shape != chart.shape:
+            raise ValueError(f"the speed has shape {values.shape}, the chart {chart.shape}")
+        attrs = getattr(knots, "attrs", {})
+        v0 = float(attrs.get("v0_kn", np.nanmax(values)))
+        return cls(values, model or str(attrs.get("model", "speed field")), v0)
+
 
 def step_times(route):
     """(hours, stopped km) of each step between the route's vertices under route.ice_speed."""

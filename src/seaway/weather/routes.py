@@ -29,21 +29,25 @@ from ..base.sphere import rhumb_line_km  # noqa: F401 - part of this API
 from ..engine.danger import least_danger_route
 from ..engine.methods import heuristic_weight
 from ..errors import NoRouteError
-from ..models import TravelTime, WaveDanger
+from ..models import IceWeatherTime, TravelTime, WaveDanger
 from ..result.route import Route
 from ..vessel import Vessel
+from .files import on_grid
 from .grid import ForecastGrid
 
 
 def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=None, land=None,
                neighbourhood=5, method="astar", variables=None, zones=(), keep_away=(), via=(),
-               if_no_safe_route="least_danger") -> Route:
+               if_no_safe_route="least_danger", persist=False, source=None) -> Route:
     """The quickest route from `start` to `end` (lat, lon) through a forecast.
 
     forecast: xarray.Dataset on a regular lat/lon grid, optionally with a `time` dimension
         (regular steps, e.g. 6-hourly); fields found by CF standard name (STANDARD_NAMES) or
         `variables`. NaN in every field at a pixel marks land, as do True pixels of `land`.
-    departure: a datetime (numpy/pandas/str) within or before the forecast; default its first time.
+    departure: a datetime (numpy/pandas/str) within the forecast's times; default its first time.
+        One outside them is refused unless persist=True (its nearest frame held, said in
+        Route.assumptions). A time axis that is not decoded yet (CDO's "day as %Y%m%d.%f") is.
+    source: the forecast's name in the outputs (its files), default its title.
     zones: seaway.constraints.Zone exclusions, each optionally closed only in a time window
         (`active=(t0, t1)`): the ship waits or detours only while a zone is closed.
     keep_away: hard seaway.constraints.KeepAway buffers (from land or a boolean ice mask).
@@ -60,9 +64,8 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
     """
     if if_no_safe_route not in ("least_danger", "raise"):
         raise ValueError(f"if_no_safe_route must be 'least_danger' or 'raise', got {if_no_safe_route!r}")
-    vessel.check()
     heuristic_weight(method, None)
-    fc = ForecastGrid(forecast, variables, departure)
+    fc = ForecastGrid(forecast, variables, departure, persist=persist, source=source)
     model = TravelTime(fc, vessel, zones=zones)
     prepared = fc.prepare(land, neighbourhood, keep_away)
     try:
@@ -75,6 +78,38 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
         if r is None:
             raise
         return r
+
+
+def route_ice_weather(season, forecast, start, end, *, ice_class="Arc7", vessel: Vessel = Vessel(),
+                      departure=None, persist=False, variables=None, land=None, neighbourhood=5,
+                      method="astar", speed="andreeva", source=None, **speed_options) -> Route:
+    """The quickest route through ice and weather at once (seaway.models.IceWeatherTime): each
+    step crosses the ice chart valid when it starts at the class's speed (Andreeva 2021's
+    V = F x V0 with V0 = vessel.speed_kn, or a speed table: see seaway.ice.season), changed by
+    the forecast's currents and waves then as a calm-water speed is; the class's limits close
+    the ice it may not enter; the ship may wait for a later chart.
+
+    season: a season of ice charts (a Dataset or NetCDF path with a time axis, see
+        seaway.ice.season.as_season; or a SeasonGrid); one chart: expand_dims(time=[date]).
+    forecast: a forecast Dataset on a lat/lon grid; resampled onto the season's grid
+        (seaway.weather.files.on_grid) unless it is on it. departure, persist, variables: as in
+        route_time; the departure must lie within the season too.
+    Returns a Route whose cost is the passage time in hours, waits included; stats.voyage holds
+    departure, arrival, waits, the charts used, the forecast and what was assumed."""
+    from ..ice.season import SeasonGrid  # the season's own grid type
+
+    heuristic_weight(method, None)
+    grid = season if isinstance(season, SeasonGrid) else SeasonGrid(season, land)
+    t = grid.template
+    lat, lon = (t[d].values for d in t.dims)
+    if not grid.prepare(neighbourhood).chart.geographic:
+        raise ValueError("routing through ice and weather needs the ice charts on a lat/lon grid; "
+                         "move them onto one first (seaway.weather.to_latlon)")
+    forecast, notes = on_grid(forecast, lat, lon, t.dims)
+    fc = ForecastGrid(forecast, variables, departure, persist=persist, source=source)
+    fc.assumptions += notes
+    model = IceWeatherTime(grid, fc, ice_class, vessel, speed=speed, **speed_options)
+    return grid.prepare(neighbourhood).route(start, end, model=model, method=method)
 
 
 def route_safest(forecast, start, end, *, ship_length_m, speed_kn, at_hours=0.0, land=None,
