@@ -16,6 +16,7 @@ import os
 
 import numpy as np
 
+from ..base.files import open_netcdf
 from ..ice.classes import get_class
 from ..ice.season import SeasonGrid, as_season
 from ..vessel import Vessel, load
@@ -30,6 +31,7 @@ from ..weather import (
     route_time,
 )
 from ..weather.forecast import ROLES, check_roles
+from .chartfile import open_chart
 from .common import Progress, searching, tell
 from .outputs import check_outputs, write_outputs
 
@@ -132,12 +134,8 @@ def _coastline(ds) -> np.ndarray:
 def _season(args, ice_class, departure, say):
     """The ice of CHART as a season (SeasonGrid): a NetCDF with a time axis as it is, one chart
     taken as valid from the departure for the whole voyage (said)."""
-    from .chartfile import open_chart
-
     path = args.chart
     if path.lower().endswith((".nc", ".nc4", ".cdf", ".netcdf")):
-        from ..base.files import open_netcdf
-
         ds = open_netcdf(path, "an ice chart is NetCDF, GeoTIFF or SIGRID-3")
         if "time" in ds.dims and ds.sizes["time"] > 1:
             say(f"{path}: a season of {ds.sizes['time']} ice charts")

@@ -29,6 +29,7 @@ from ..base.sphere import rhumb_line_km  # noqa: F401 - part of this API
 from ..engine.danger import least_danger_route
 from ..engine.methods import heuristic_weight
 from ..errors import NoRouteError
+from ..ice.season import SeasonGrid
 from ..models import IceWeatherTime, TravelTime, WaveDanger
 from ..result.route import Route
 from ..vessel import Vessel
@@ -96,8 +97,6 @@ def route_ice_weather(season, forecast, start, end, *, ice_class="Arc7", vessel:
         route_time; the departure must lie within the season too.
     Returns a Route whose cost is the passage time in hours, waits included; stats.voyage holds
     departure, arrival, waits, the charts used, the forecast and what was assumed."""
-    from ..ice.season import SeasonGrid  # the season's own grid type
-
     heuristic_weight(method, None)
     grid = season if isinstance(season, SeasonGrid) else SeasonGrid(season, land)
     t = grid.template
