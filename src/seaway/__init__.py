@@ -5,6 +5,7 @@ join each pixel to the pixels of the k x k square around it (Dijkstra and exact 
 
 from importlib.metadata import PackageNotFoundError, version
 
+from . import export as export  # seaway.export.write(...) after `import seaway` (no plotting packages)
 from .engine import (
     PreparedChart,
     SnapError,
