@@ -101,6 +101,12 @@ class BucketQueue {
     ring_[keys_.slot(keys_.add(e.key))].push_back(e.id);
   }
 
+  // The id pop() returns next when it lies in the current bucket (for a prefetch), else none.
+  std::uint32_t peek() const {
+    const std::vector<std::uint32_t>& b = ring_[keys_.slot(keys_.current())];
+    return b.empty() ? 0xffffffffu : b.back();
+  }
+
   HeapEntry pop() {
     const std::uint64_t k = keys_.take([&](std::size_t b) { return ring_[b].empty(); });
     std::vector<std::uint32_t>& b = ring_[keys_.slot(k)];
