@@ -20,6 +20,7 @@ import numpy as np
 import pytest
 
 import seaway
+from seaway.chart.locate import locate
 from seaway.engine import methods
 
 from .conftest import VOYAGES
@@ -67,22 +68,22 @@ def _skimage(cost, s, e):
     return float(costs[e])
 
 
-def _cases(cost, prepared, s, e):
-    out = {("skimage", "peer"): lambda: _skimage(cost, s, e)}
+def _cases(cost, route, prepared, s, e):
+    """What one round of a voyage runs: the peer on the raster, seaway.route on a fresh chart by
+    each method, and the prepared chart's route by each method."""
+    raster = np.asarray(getattr(cost, "values", cost), float)
+    ps, pe = locate(prepared.chart, s, "start"), locate(prepared.chart, e, "end")
+    out = {("skimage", "peer"): lambda: _skimage(raster, ps, pe)}
     for m in FRESH:
-        out[("fresh", m)] = lambda m=m: seaway.route(cost, s, e, method=m)
+        out[("fresh", m)] = lambda m=m: route(cost, s, e, method=m)
     for m in PREPARED:
         out[("prepared", m)] = lambda m=m: prepared.route(s, e, method=m)
     return out
 
 
-@pytest.mark.parametrize("voyage", range(1 + RANDOM_PAIRS))
-@pytest.mark.parametrize("season", ["winter", "summer"])
-def test_voyage(seasons, voyages, season, voyage):
-    maps, prepared = seasons
-    cost, p = maps[season], prepared[season]
-    s, e = voyages[voyage]
-    cases = _cases(cost, p, s, e)
+def time_voyage(label, voyage, cost, prepared, s, e, route=seaway.route):
+    """Every case of one voyage, ROUNDS rounds in rotated order after a warm-up; rows into VOYAGES."""
+    cases = _cases(cost, route, prepared, s, e)
     names = list(cases)
     wall = {n: [] for n in names}
     cpu = {n: [] for n in names}
@@ -95,19 +96,27 @@ def test_voyage(seasons, voyages, season, voyage):
             if rnd:
                 wall[n].append(time.perf_counter() - w0)
                 cpu[n].append(time.process_time() - c0)
-    exact = p.route(s, e, method="dijkstra").cost
+    exact = prepared.route(s, e, method="dijkstra").cost
     peer = statistics.median(wall[("skimage", "peer")])
     rows = VOYAGES.setdefault("rows", [])
     for n in names:
         w, c = statistics.median(wall[n]), statistics.median(cpu[n])
-        row = dict(season=season, voyage=voyage, chart=n[0], method=n[1], wall=w, cpu=c,
+        row = dict(season=label, voyage=voyage, chart=n[0], method=n[1], wall=w, cpu=c,
                    ratio=w / peer, skimage=peer)
         if n[0] != "skimage":
             r = last[n]
             assert r.cost == pytest.approx(exact, rel=1e-9), n
             used = r.method
-            if used == "bidirectional" and methods.low_contrast(p):
+            if used == "bidirectional" and methods.low_contrast(prepared):
                 used = "bidirectional A*"  # the potential of seaway.engine.methods
             row.update(used=used, settled=r.stats.search.settled,
                        ns=1e9 * c / max(r.stats.search.settled, 1))
         rows.append(row)
+
+
+@pytest.mark.parametrize("voyage", range(1 + RANDOM_PAIRS))
+@pytest.mark.parametrize("season", ["winter", "summer"])
+def test_voyage(seasons, voyages, season, voyage):
+    maps, prepared = seasons
+    s, e = voyages[voyage]
+    time_voyage(season, voyage, maps[season], prepared[season], s, e)

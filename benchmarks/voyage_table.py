@@ -37,7 +37,7 @@ def _work_table(rows, season):
 def goals(rows):
     """The issue's goals, read off the rows: auto's ratios and auto against the fastest exact method."""
     out = []
-    for season in ("winter", "summer"):
+    for season in dict.fromkeys(r["season"] for r in rows):
         def pick(chart, voyage=None, method="auto"):
             return [r for r in rows if r["season"] == season and r["chart"] == chart and r["method"] == method
                     and (voyage is None or r["voyage"] == voyage)]
@@ -65,7 +65,7 @@ def lines(voyages):
     if not rows:
         return []
     out = ["Wall time / scikit-image's on the same voyage (auto: the method it used):"]
-    for season in ("winter", "summer"):
+    for season in dict.fromkeys(r["season"] for r in rows):
         if any(r["season"] == season for r in rows):
             out += ["", f"{season}:", ""] + _ratio_table(rows, season)
             out += ["", f"{season}, prepared chart: pixels settled and CPU ns per settled pixel:", ""]
