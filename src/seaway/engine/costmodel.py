@@ -30,10 +30,11 @@ from ..base.units import EARTH_RADIUS_KM
 
 #: Pixels in the sample the counts are estimated from.
 SAMPLE = 4096
-#: Wall nanoseconds per settled pixel with two free cores (5x5 stencil, benchmark chart;
-#: the two-thread searches' pixels are shared by both threads).
-PIXEL_NS = {"dijkstra": 125.0, "astar": 160.0, "bidirectional": 85.0, "bidirectional A*": 100.0,
-            "landmarks": 175.0, "landmarks one thread": 290.0}
+#: Wall nanoseconds per settled pixel with two free cores: 5x5 stencil, the benchmark chart's
+#: corner voyage on a prepared chart (benchmarks/README.md; the two-thread searches' pixels
+#: are settled by both threads, so their time per pixel is half their CPU time's).
+PIXEL_NS = {"dijkstra": 133.0, "astar": 163.0, "bidirectional": 75.0, "bidirectional A*": 100.0,
+            "landmarks": 235.0, "landmarks one thread": 272.0}
 #: Start-up seconds: the second thread and the first rounds of the two-thread searches.
 START_S = {"bidirectional": 3e-4, "bidirectional A*": 3e-4, "landmarks": 3e-4}
 #: The two-thread searches settle at least two rounds of 4096 pixels per side.
