@@ -9,7 +9,7 @@ import pytest
 
 from seaway.samples import synthetic_endpoints, synthetic_sea
 
-SHAPE = (1900, 2300)  # the Kara Sea chart of paper 000: about 2300 x 1900 pixels
+SHAPE = (1900, 2300)  # the Kara Sea chart of Grinyak et al. 2022: about 2300 x 1900 pixels
 
 MEDIANS: dict[str, float] = {}
 NOTES: dict[str, str] = {}

@@ -1,4 +1,4 @@
-"""What the turn penalty costs (issue 11): peak resident memory and time of the expanded-state
+"""What the turn penalty costs: peak resident memory and time of the expanded-state
 search (pixel x incoming step) on the synthetic Kara-sized chart, each in a fresh process,
 beside the plain search in the same process. Slow (tens of seconds per case): run on its own,
 `pytest benchmarks/test_constraints.py -s` (see benchmarks/README.md)."""

@@ -1,4 +1,4 @@
-"""Many routes at once (issue 6): routes per second with 1 and 2 threads and on a 2-worker
+"""Many routes at once: routes per second with 1 and 2 threads and on a 2-worker
 LocalCluster, the memory of N concurrent queries, and a 10^8-pixel memory-mapped chart.
 
 Each benchmark also asserts its answer: every run returns the serial run's costs exactly."""

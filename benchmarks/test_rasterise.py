@@ -1,7 +1,7 @@
 """Rasterising a pan-Arctic SIGRID-3 chart (lon/lat, rings across +-180 and around the pole; a
 few hundred polygons, tests/panarctic.py) onto a 0.05 deg Kara Sea grid (270 x 1100 pixels), as
 read_sigrid3 does it, against a peer: shapely point-in-polygon of every pixel centre in
-EPSG:3413 (STRtree), in the same run. Target (issue 10): <= 2 s. Asserts the two agree."""
+EPSG:3413 (STRtree), in the same run. Target: <= 2 s. Asserts the two agree."""
 
 import numpy as np
 import pytest

@@ -1,4 +1,4 @@
-"""A season of ice charts on the Kara-Sea-sized chart (issue 10, part 3): seven daily charts of
+"""A season of ice charts on the Kara-Sea-sized chart: seven daily charts of
 1900 x 2300 pixels (seaway.samples.kara_season), an Arc7 at 14 kn from the Kara Gate to the
 western approach of the Vilkitsky Strait, against the static route through the departure
 day's chart in the same run (the same hours per km, seaway's integral model, and scikit-image's

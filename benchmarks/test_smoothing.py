@@ -1,4 +1,4 @@
-"""Cost above the continuous optimum, before and after any-angle smoothing (issue 5).
+"""Cost above the continuous optimum, before and after any-angle smoothing.
 
 Targets at 5x5 after smoothing: <= 0.1 % on a uniform chart (straight line, great circle) and
 <= 0.5 % on the two-medium chart (exact Snell refraction optimum). Each case asserts its target

@@ -19,52 +19,16 @@
 #include <utility>
 #include <vector>
 
+#include "model_values.hpp"
 #include "seaway/cost_models.hpp"
 #include "seaway/ice_time.hpp"
+#include "seaway/ice_weather.hpp"
 #include "seaway/prepared_chart.hpp"
 #include "seaway/timed_zones.hpp"
 #include "seaway/waves.hpp"
 #include "seaway/weather.hpp"
 
 namespace seaway {
-
-// Set from Python (e.g. on Ctrl-C) to stop a running search (it throws Cancelled); it also
-// reports the pixels settled so far (progress).
-using CancelToken = SearchControl;
-inline const SearchControl* flag_of(const CancelToken* t) { return t; }
-
-// The prepared chart's Python class, _core.Router (one chart serves every model).
-using ChartClass = pybind11::class_<PreparedChart, std::unique_ptr<PreparedChart>>;
-
-// What a model reports per step beside the route, one typed slot each (unset when the model
-// reports none): bound as _core.StepValues, read by the Python model's finish().
-struct StepValues {
-  std::optional<std::vector<double>> setting;   // FuelModel: the engine setting's index
-  std::optional<std::vector<double>> hours;     // FuelModel: hours of the step
-  std::optional<std::vector<double>> fuel_t;    // FuelModel: tonnes burnt on the step
-  std::optional<std::vector<double>> depart_h;  // IceSeasonModel: when the step leaves its first pixel
-  std::optional<std::vector<double>> wait_h;    // Zoned: hours waited for a zone to open
-};
-
-// A query's answer, bound as _core.QueryResult: the route with the search's figures, and the
-// model's values per step.
-struct QueryResult {
-  RouteResult route;
-  StepValues steps;
-};
-
-struct NoStepValues {
-  template <class Fn>
-  StepValues step_values(const Fn&, const PreparedChart&, const RouteResult&) const { return {}; }
-};
-
-inline void check_on_grid(const PreparedChart& p, std::int64_t rows, std::int64_t cols, const char* what) {
-  const Geometry& g = p.geometry();
-  if (rows != g.rows || cols != g.cols)
-    throw std::invalid_argument(std::string(what) + " has " + std::to_string(rows) + " x " +
-                                std::to_string(cols) + " pixels but the chart " + std::to_string(g.rows) +
-                                " x " + std::to_string(g.cols) + ": build the model on the chart's grid");
-}
 
 // A static cost per unit length (float32 or float64 raster), priced by Functor (max, mean,
 // integral, entered pixel).
@@ -164,7 +128,7 @@ struct WaveDangerModel : NoStepValues {
   }
 };
 
-// Hours through a season of ice charts (issue 10): hours per km, float32 (frames, rows, cols),
+// Hours through a season of ice charts: hours per km, float32 (frames, rows, cols),
 // frame k valid from valid_from_h[k] hours after departure; waiting allowed (ice_time.hpp).
 struct IceSeasonModel {
   static constexpr Capabilities caps = IceSeasonTime::caps;
@@ -182,15 +146,29 @@ struct IceSeasonModel {
   }
   // The hour each step leaves its first pixel: after the arrival there, by any wait.
   StepValues step_values(const IceSeasonTime& m, const PreparedChart& g, const RouteResult& out) const {
-    std::vector<double> depart;
-    for (std::size_t i = 0; i < out.offsets.size(); ++i) {
-      const std::int64_t a = out.path[i], row = a / g.geometry().cols;
-      const int o = out.offsets[i];
-      depart.push_back(m.step(a, o, g.lengths().row(row)[o], out.cumulative[i]).depart_h);
-    }
-    StepValues values;
-    values.depart_h = std::move(depart);
-    return values;
+    return departures(m, g, out);
+  }
+};
+
+// Hours through ice and weather at once (ice_weather.hpp): a season of ice charts and a
+// forecast on one grid, the vessel's speed in each chart's ice changed by the weather.
+struct IceWeatherModel {
+  static constexpr Capabilities caps = IceWeatherTime::caps;
+  IceSeasonModel ice;
+  ForecastPtr forecast;
+  Vessel vessel;
+  double min_hours_per_km;
+
+  template <class F>
+  auto visit(const PreparedChart& g, F&& f) const {
+    check_on_grid(g, ice.rows, ice.cols, "the season of ice charts");
+    check_on_grid(g, forecast->rows, forecast->cols, "the forecast");
+    IceSeries s = ice.series;
+    s.valid_from_h = ice.valid_from_h.data();
+    return f(IceWeatherTime(g.geometry(), g.stencil(), s, forecast->f, vessel, min_hours_per_km));
+  }
+  StepValues step_values(const IceWeatherTime& m, const PreparedChart& g, const RouteResult& out) const {
+    return departures(m, g, out);
   }
 };
 
@@ -200,7 +178,7 @@ template <class... M>
 struct ModelList {};
 using Models = ModelList<RasterModel<MaxCost>, RasterModel<MeanCost>, RasterModel<IntegralCost>,
                          RasterModel<LengthCost>, RasterModel<EnteredPixelCost>, TravelTimeModel, FuelModel, WaveDangerModel,
-                         IceSeasonModel, Zoned<TravelTimeModel>>;
+                         IceSeasonModel, IceWeatherModel, Zoned<TravelTimeModel>>;
 
 // Calls f(static_cast<M*>(nullptr)) for every model M of the list: a binding folds over the
 // models and keeps those whose M::caps have what its search needs (if constexpr).

@@ -23,16 +23,10 @@ void def_bidirectional(ChartClass& router) {
   router.def("route_bidirectional",
              [](PreparedChart& chart, const M& m, std::int64_t start, std::int64_t target, bool astar,
                 const CancelToken* cancel) {
-               RouteResult out;
-               {
-                 py::gil_scoped_release release;
-                 m.visit(chart, [&](const auto& model) {
-                   out = astar ? route_bidirectional_astar(chart, model, start, target, flag_of(cancel))
-                               : route_bidirectional(chart, model, start, target, flag_of(cancel));
-                   return 0;
-                 });
-               }
-               return answer(std::move(out));
+               return query(chart, m, [&](const auto& model) {
+                 return astar ? route_bidirectional_astar(chart, model, start, target, flag_of(cancel))
+                              : route_bidirectional(chart, model, start, target, flag_of(cancel));
+               });
              },
              py::arg("model"), py::arg("start"), py::arg("target"), py::arg("astar"),
              py::arg("cancel") = nullptr,
@@ -54,17 +48,11 @@ void def_landmarks(ChartClass& router) {
   router.def("route_landmarks",
              [](PreparedChart& chart, const M& m, const Landmarks& lm, std::int64_t start, std::int64_t target,
                 bool bidirectional, const CancelToken* cancel) {
-               RouteResult out;
-               {
-                 py::gil_scoped_release release;
-                 m.visit(chart, [&](const auto& model) {
-                   out = bidirectional
-                             ? route_landmarks_bidirectional(chart, lm, model, start, target, flag_of(cancel))
-                             : route_landmarks(chart, lm, model, start, target, flag_of(cancel));
-                   return 0;
-                 });
-               }
-               return answer(std::move(out));
+               return query(chart, m, [&](const auto& model) {
+                 return bidirectional
+                            ? route_landmarks_bidirectional(chart, lm, model, start, target, flag_of(cancel))
+                            : route_landmarks(chart, lm, model, start, target, flag_of(cancel));
+               });
              },
              py::arg("model"), py::arg("landmarks"), py::arg("start"), py::arg("target"),
              py::arg("bidirectional"), py::arg("cancel") = nullptr,

@@ -170,6 +170,14 @@ void register_models(py::module_& m) {
   py::class_<IceSeasonModel>(m, "IceSeasonModel", "Hours through a season of ice charts (waiting allowed)")
       .def(py::init(&ice_season), py::arg("hours_per_km").noconvert(), py::arg("valid_from_h"),
            py::arg("min_hours_per_km"));
+  py::class_<IceWeatherModel>(m, "IceWeatherModel", "Hours through ice and weather at once (waiting allowed)")
+      .def(py::init([](const IceSeasonModel& ice, std::shared_ptr<ForecastFields> f, const Vessel& v,
+                       double min_hours_per_km) {
+             if (!(min_hours_per_km > 0 && min_hours_per_km < inf))
+               throw std::invalid_argument("min_hours_per_km must be positive and finite");
+             return IceWeatherModel{ice, f, v, min_hours_per_km};
+           }),
+           py::arg("ice"), py::arg("forecast"), py::arg("vessel"), py::arg("min_hours_per_km"));
 }
 
 // Each bound model class's `capabilities` (a dict of its Capabilities), once every model class

@@ -63,16 +63,9 @@ void def_queries(ChartClass& router) {
   router.def("route",
              [](PreparedChart& chart, const M& m, std::int64_t start, std::int64_t target, double weight,
                 const CancelToken* cancel) {
-               QueryResult out;
-               {
-                 py::gil_scoped_release release;
-                 m.visit(chart, [&](const auto& model) {
-                   out.route = chart.route(model, start, target, weight, flag_of(cancel));
-                   out.steps = m.step_values(model, chart, out.route);
-                   return 0;
-                 });
-               }
-               return out;
+               return query(chart, m, [&](const auto& model) {
+                 return chart.route(model, start, target, weight, flag_of(cancel));
+               });
              },
              py::arg("model"), py::arg("start"), py::arg("target"), py::arg("heuristic_weight"),
              py::arg("cancel") = nullptr,

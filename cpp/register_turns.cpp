@@ -29,15 +29,9 @@ void def_route_turns(py::module_& m) {
         if (angle_deg.size() < 2 || angle_deg.size() != cost.size())
           throw std::invalid_argument("the turn penalty needs matching angle and cost lists of 2+ points");
         const TurnPenalty turn{std::move(angle_deg), std::move(cost)};
-        RouteResult out;
-        {
-          py::gil_scoped_release release;
-          model.visit(chart, [&](const auto& f) {
-            out = route_with_turns(chart, f, turn, start, target, incoming, weight, flag_of(cancel));
-            return 0;
-          });
-        }
-        return answer(std::move(out));
+        return query(chart, model, [&](const auto& f) {
+          return route_with_turns(chart, f, turn, start, target, incoming, weight, flag_of(cancel));
+        });
       },
       py::arg("router"), py::arg("model"), py::arg("start"), py::arg("target"),
       py::arg("heuristic_weight"), py::arg("angle_deg"), py::arg("cost"), py::arg("incoming") = -1,

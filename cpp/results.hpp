@@ -27,6 +27,20 @@ inline QueryResult answer(RouteResult&& route, StepValues&& steps = {}) {
   return QueryResult{std::move(route), std::move(steps)};
 }
 
+// The one way a binding runs a search: without the GIL, on model m's functor for this chart
+// (search(functor) returns the RouteResult), with the model's values per step.
+template <class M, class Search>
+QueryResult query(const PreparedChart& chart, const M& m, Search&& search) {
+  QueryResult out;
+  pybind11::gil_scoped_release release;
+  m.visit(chart, [&](const auto& model) {
+    out.route = search(model);
+    out.steps = m.step_values(model, chart, out.route);
+    return 0;
+  });
+  return out;
+}
+
 inline void register_results(pybind11::module_& m) {
   namespace py = pybind11;
   py::class_<SearchStats>(m, "SearchStats", "The search's own figures")

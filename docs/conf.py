@@ -36,6 +36,8 @@ autosummary_generate = True
 autosummary_imported_members = False
 autosummary_ignore_module_all = False
 autodoc_member_order = "bysource"
+# Module constants are shown with their values, except these long tables (described in words).
+autosummary_context = {"long_values": ["CLASSES", "ICE_IMPACT"]}
 autodoc_typehints = "signature"
 napoleon_google_docstring = False
 napoleon_numpy_docstring = True

@@ -27,12 +27,12 @@ inline StepBounds raster_bounds(const Passability& p, bool per_length = true) {
   return {p.passable ? p.min_cost : 0.0, p.max_cost, per_length};
 }
 
-// Grinyak et al. 2022: d = max(u_i, u_j) * r.
-template <class T>
-struct MaxCost {
+// A rule on the two ends of a step: d = pair(u_i, u_j) * r, Rule::pair per unit length (also
+// along legs: legs.hpp).
+template <class T, class Rule>
+struct PairCost {
   static constexpr Capabilities caps = raster_rule;
-  // The rule per unit length between two pixels of costs a and b (also along legs: legs.hpp).
-  static double pair(double a, double b) { return std::max(a, b); }
+  static double pair(double a, double b) { return Rule::pair(a, b); }
   const T* u;
   StepBounds bounds(const Passability& p) const { return raster_bounds(p); }
   template <class Cell>
@@ -41,18 +41,19 @@ struct MaxCost {
   }
 };
 
-// Grinyak et al. 2018: d = (u_i + u_j) / 2 * r.
-template <class T>
-struct MeanCost {
-  static constexpr Capabilities caps = raster_rule;
-  static double pair(double a, double b) { return 0.5 * (a + b); }
-  const T* u;
-  StepBounds bounds(const Passability& p) const { return raster_bounds(p); }
-  template <class Cell>
-  double operator()(std::int64_t v, std::int64_t w, int, double r, double, Cell&&) const {
-    return pair(double(u[v]), double(u[w])) * r;
-  }
+// Grinyak et al. 2022: d = max(u_i, u_j) * r.
+struct MaxRule {
+  static double pair(double a, double b) { return std::max(a, b); }
 };
+template <class T>
+using MaxCost = PairCost<T, MaxRule>;
+
+// Grinyak et al. 2018: d = (u_i + u_j) / 2 * r.
+struct MeanRule {
+  static double pair(double a, double b) { return 0.5 * (a + b); }
+};
+template <class T>
+using MeanCost = PairCost<T, MeanRule>;
 
 // The exact line integral of the piecewise-constant field along the straight step.
 template <class T>

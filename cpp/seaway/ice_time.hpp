@@ -65,12 +65,7 @@ class IceSeasonTime {
   template <class Cell>
   Step step(std::int64_t v, int o, double r_km, double t_h, Cell&& cell) const {
     const double* from = s_.valid_from_h;
-    // The search relaxes a pixel's steps one after another at the same time: find its chart once.
-    if (t_h != memo_t_) {
-      memo_t_ = t_h;
-      memo_k_ = std::max<std::int64_t>(std::int64_t(std::upper_bound(from, from + s_.frames, t_h) - from) - 1, 0);
-    }
-    const std::int64_t k = memo_k_;
+    const std::int64_t k = chart_at(t_h);
     Step best{t_h, t_h + duration(v, o, r_km, k, cell)};
     // Later charts can only help if they start before the best arrival so far.
     for (std::int64_t j = k + 1; j < s_.frames && from[j] < best.arrive_h; ++j) {
@@ -79,12 +74,29 @@ class IceSeasonTime {
     }
     return best;
   }
+  // The cell(m) of step o from v outside the search: the flat index of its m-th length share.
+  auto shares_of(std::int64_t v, int o) const {
+    return [this, v, o](std::size_t m) {
+      const CellShare& c = st_[std::size_t(o)].shares[m];
+      return at(v, c.di, c.dj);
+    };
+  }
   Step step(std::int64_t v, int o, double r_km, double t_h) const {
-    const auto& shares = st_[std::size_t(o)].shares;
-    return step(v, o, r_km, t_h, [&](std::size_t m) { return at(v, shares[m].di, shares[m].dj); });
+    return step(v, o, r_km, t_h, shares_of(v, o));
   }
 
- private:
+  // The index of the chart valid at t_h (the first before departure). The search relaxes a
+  // pixel's steps one after another at the same time: the chart is found once.
+  std::int64_t chart_at(double t_h) const {
+    if (t_h != memo_t_) {
+      const double* from = s_.valid_from_h;
+      memo_t_ = t_h;
+      memo_k_ = std::max<std::int64_t>(std::int64_t(std::upper_bound(from, from + s_.frames, t_h) - from) - 1, 0);
+    }
+    return memo_k_;
+  }
+  const IceSeries& series() const { return s_; }
+
   // The flat index of the pixel (di, dj) from v, across the antimeridian on wrapping grids.
   std::int64_t at(std::int64_t v, int di, int dj) const {
     const std::int64_t row = v / g_.cols;
@@ -108,6 +120,7 @@ class IceSeasonTime {
     return sum * r_km;
   }
 
+ private:
   const Geometry& g_;
   const std::vector<Offset>& st_;
   IceSeries s_;

@@ -86,7 +86,8 @@ class LazyLabels {
         written_[p] = zeroed_earlier;
       }
   }
-  // Give every page back to the kernel (zero pages again on the next write).
+  // Give every page back to the kernel (zero pages again on the next write). Linux only: there
+  // MADV_DONTNEED makes private anonymous pages read back as zeros; elsewhere (macOS) it is a hint.
   void release() {
     madvise(cost_, n_ > 0 ? n_ * 8 : 1, MADV_DONTNEED);
     madvise(pred_, n_ ? n_ : 1, MADV_DONTNEED);

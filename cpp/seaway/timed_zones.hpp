@@ -1,4 +1,4 @@
-// Zones closed during a time window, for time routes (issue 11): a step that touches a closed
+// Zones closed during a time window, for time routes: a step that touches a closed
 // zone (either end inside) must end by the time the zone closes or start once it has opened
 // again; otherwise the ship waits at the step's start until the zone opens. A step touches a
 // zone when one of its ends or any pixel its closed segment meets lies in it (the land rule's

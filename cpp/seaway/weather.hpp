@@ -35,7 +35,7 @@ struct Vessel {
   SpeedLoss speed_loss = SpeedLoss::khokhlov;
   // For STAWAVE-1: waterline breadth and length (m), calm-water resistance (kN) at speed_kn.
   double beam_m = 0, length_m = 0, calm_resistance_kn = 0;
-  double max_wind_ms = 25, max_wave_m = 5;  // limits (Olovyannikov 2025); also danger-zone winds (004)
+  double max_wind_ms = 25, max_wave_m = 5;  // limits (Olovyannikov 2025); also danger-zone winds (Sotnikova 2009)
 };
 
 // Speed through water in wind waves, Khokhlov (Olovyannikov 2025, eq. 8): h3 the 3 % wave height (m),

@@ -108,10 +108,23 @@ def rewrite(lines):
     return out
 
 
+_ATTRIBUTES = {}
+
+
 def _process(app, what, name, obj, options, lines):
     lines[:] = rewrite(lines)
+    if what in ("data", "attribute"):
+        _ATTRIBUTES[name] = list(lines)
+
+
+def _keep_attribute(app, what, name, obj, options, lines):
+    """Undo napoleon on a constant's or attribute's docstring: it reads the first line as
+    "type: description", but these are prose ("name -> value: meaning")."""
+    if what in ("data", "attribute") and name in _ATTRIBUTES:
+        lines[:] = _ATTRIBUTES.pop(name)
 
 
 def setup(app):
     app.connect("autodoc-process-docstring", _process, priority=400)  # before napoleon (500)
+    app.connect("autodoc-process-docstring", _keep_attribute, priority=600)  # and after it
     return {"parallel_read_safe": True, "parallel_write_safe": True}

@@ -5,14 +5,23 @@ join each pixel to the pixels of the k x k square around it (Dijkstra and exact 
 
 from importlib.metadata import PackageNotFoundError, version
 
-from .engine import PreparedChart, cost_field, prepare, route
+from .engine import (
+    PreparedChart,
+    SnapError,
+    SnappedEnds,
+    cost_field,
+    explain_no_route,
+    prepare,
+    route,
+    snap_ends,
+)
 from .errors import NoRouteError
 from .fleet import route_many
 from .result import Leg, Route
 from .smoothing import smooth
 
 __all__ = ["route", "cost_field", "prepare", "PreparedChart", "Route", "NoRouteError", "Leg",
-           "smooth", "route_many"]
+           "smooth", "route_many", "snap_ends", "SnappedEnds", "SnapError", "explain_no_route"]
 try:
     __version__ = version("seaway")  # one version: pyproject.toml's, from the package metadata
 except PackageNotFoundError:  # run from a source tree that was never installed

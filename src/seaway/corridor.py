@@ -49,10 +49,12 @@ class Corridor:
 
     @property
     def shape(self):
+        """(rows, layers) of the corridor's grid."""
         return self.lat.shape
 
     @property
     def m(self) -> int:
+        """Rows on each side of the great circle."""
         return self.lat.shape[0] // 2
 
     @property

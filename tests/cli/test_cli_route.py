@@ -72,12 +72,17 @@ def test_route_netcdf_all_outputs(chart_nc, tmp_path):
     gpx = ET.parse(outs[1]).getroot()
     assert len(gpx.findall(".//{http://www.topografix.com/GPX/1/1}rtept")) == len(wps)
     rows = outs[3].read_text().splitlines()
+    head, rows = [x for x in rows if x.startswith("#")], [x for x in rows if not x.startswith("#")]
+    assert head[1].startswith("# speed in ice: Andreeva 2021: V = F x V0, V0 12 kn")  # not open water's
+    assert head[2:4] == ["# start 73.00000,61.00000 (requested 73,61)",
+                         "# end 73.00000,75.00000 (requested 73,75)"]  # the ends used and asked for
     assert rows[0].startswith("waypoint,lat,lon,leg,course_deg") and len(rows) == len(wps) + 1
     assert "sea_ice_concentration_max" in rows[0]
     assert (tmp_path / "r.png").stat().st_size > 10_000
     page = outs[4].read_text()  # the interactive map: the same route, one popup per waypoint
     assert page.count('.bindPopup("') == len(wps) and "L.polyline(" in page
-    assert "ice: WMO colour code by total concentration" in page  # CT is in the chart file
+    assert "ice: WMO colour code by stage of development" in page  # a stage chart: by stage
+    assert "ice free" in page and "thick first-year ice" in page  # the legend: open water too
     # the route never enters the island's closed squares: every waypoint is water
     assert np.all(~ds.land.values[tuple(np.rint(r.points).astype(int).T)])
 
@@ -116,6 +121,10 @@ def test_route_errors(chart_nc, args, code, message):
 def test_route_snap_and_missing_file(chart_nc, tmp_path):
     path, _ = chart_nc
     done = run("route", str(path), "--from", "73,61", "--to", "74,67", "--snap")
+    assert done.returncode == 1  # 36.8 km is farther than --snap-km's 20 km
+    assert ("the nearest point the ship may use is 74.0000,65.8000, 36.8 km away, farther than "
+            "--snap-km 20: give a point in water the ship may use, or --snap-km 37") in done.stderr
+    done = run("route", str(path), "--from", "73,61", "--to", "74,67", "--snap", "--snap-km", "40")
     assert done.returncode == 0, done.stderr
     assert "end 74,67 is on an impassable pixel (land): moved 36.8 km to 74.0000,65.8000" in done.stderr
     done = run("route", str(tmp_path / "none.nc"), "--from", "73,61", "--to", "74,67")

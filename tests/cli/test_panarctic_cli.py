@@ -138,9 +138,12 @@ def test_an_end_on_land_or_in_forbidden_ice_is_named_with_the_nearest_usable_poi
     assert float(m.group(3)) == pytest.approx(dist, abs=0.05)
     assert "--snap" in done.stderr
     # --snap: the same point, said on stderr, and the route ends there.
-    snapped = run(*args, "--snap", "-q")  # a snap is said even with --quiet
+    far = run(*args, "--snap", "-q")  # farther than --snap-km (20 km by default): refused
+    assert far.returncode == 1 and "farther than --snap-km 20: give a point in water" in far.stderr
+    snapped = run(*args, "--snap", "--snap-km", "100", "-q")  # a snap is said even with --quiet
     assert snapped.returncode == 0, snapped.stderr
-    m = re.search(r"moved ([\d.]+) km to ([-\d.]+),([-\d.]+) \(--snap\)", snapped.stderr)
+    m = re.search(r"moved ([\d.]+) km to ([-\d.]+),([-\d.]+) \(--snap, at most 100 km\)",
+                  snapped.stderr)
     assert m and words[0] in snapped.stderr
     assert float(m.group(1)) == pytest.approx(dist, abs=0.05)
     assert (float(m.group(2)), float(m.group(3))) == pytest.approx((lat, lon), abs=1e-4)

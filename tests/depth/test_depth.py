@@ -147,9 +147,10 @@ def test_cli_depth_draft_least_depth_and_refusals(ob_file, ob_chart):
     props = json.loads(outs[0].read_text())["properties"]
     lat, lon = props["least_depth_at"]
     assert props["least_depth_m"] == pytest.approx(float(z.sel(lat=lat, lon=lon)), abs=1e-9)
-    header = outs[1].read_text().splitlines()[0].split(",")
+    rows = [x for x in outs[1].read_text().splitlines() if not x.startswith("#")]  # '#': the head
+    header = rows[0].split(",")
     assert header[-2:] == ["depth_mean", "depth_min"]  # the least depth of each leg
-    legs = [line.split(",") for line in outs[1].read_text().splitlines()[2:]]
+    legs = [line.split(",") for line in rows[2:]]
     assert min(float(r[-1]) for r in legs) == pytest.approx(props["least_depth_m"], abs=0.05)
     assert "draft 8 m + UKC 0.8 m = 8.8 m needed" in done.stderr
     assert "elevation positive up (CF attribute positive = 'up')" in done.stderr
@@ -163,7 +164,9 @@ def test_cli_depth_draft_least_depth_and_refusals(ob_file, ob_chart):
     assert "end 69,73.5 is on an impassable pixel (too shallow: depth 10.0 m < draft 12 m + UKC " \
            "1.2 m)" in deep.stderr
     assert "the nearest point the ship may use is" in deep.stderr
-    snapped = run(*common, "--draft", "12", "--snap")
+    far = run(*common, "--draft", "12", "--snap")  # the nearest deep water is 241 km away
+    assert far.returncode == 1 and "farther than --snap-km 20" in far.stderr
+    snapped = run(*common, "--draft", "12", "--snap", "--snap-km", "300")
     assert snapped.returncode == 0, snapped.stderr
     moved = snapped.stderr.split("moved ")[1]
     lat, lon = (float(v) for v in moved.split(" to ")[1].split(" ")[0].split(","))

@@ -15,8 +15,9 @@ def test_no_route_error_is_a_value_error():
     assert issubclass(seaway.NoRouteError, ValueError)
     c = C.copy()
     c[:, 2] = np.inf
-    with pytest.raises(ValueError, match="choose another end point"):
+    with pytest.raises(ValueError, match="impassable pixels keep them apart") as e:
         seaway.route(c, (0, 0), (0, 4))
+    assert "check the land mask" not in str(e.value)  # a cost of inf, not land, closes the way
 
 
 # --- start and end ------------------------------------------------------------------------

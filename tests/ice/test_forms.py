@@ -2,8 +2,6 @@
 and open water freely navigable; on the real CIS and DMI charts and on a synthetic chart shaped
 like AARI's winter pan-Arctic charts (most polygons FA 08, SA 99, CT 92)."""
 
-import warnings
-
 import numpy as np
 import pytest
 
@@ -19,6 +17,7 @@ shapely = pytest.importorskip("shapely")
 pytest.importorskip("rasterio")
 from seaway.ice.grids import latlon_grid  # noqa: E402
 from seaway.ice.sigrid import read_sigrid3  # noqa: E402
+from support.sigrid import write_chart  # noqa: E402
 
 CIS = ("ice_charts_sigrid3", "cis_eastern_arctic", "cis_SGRDREA_20201102T.gpkg")
 DMI = ("ice_charts_sigrid3", "dmi_greenland", "201405011000_SouthWest_RIC.shp")
@@ -26,15 +25,7 @@ START, END = (73.0, 61.0), (73.0, 79.0)  # water at both ends, fast ice between
 
 
 def _write(path, rows):
-    import pyogrio.raw
-    geoms = np.array(shapely.to_wkb([g for g, _ in rows]), dtype=object)
-    names = ["POLY_TYPE", "CT", "CA", "SA", "FA", "CB", "SB", "FB", "CC", "SC", "FC"]
-    fields = [np.array([attrs.get(n, "-9") for _, attrs in rows], dtype=object) for n in names]
-    with warnings.catch_warnings():
-        warnings.filterwarnings("ignore", message=".*winding", category=RuntimeWarning)
-        pyogrio.raw.write(str(path), geoms, fields, fields=names, geometry_type="Polygon",
-                          crs="EPSG:4326", driver="ESRI Shapefile")
-    return path
+    return write_chart(path, rows)
 
 
 def _dense_km(route, inside, n=400):

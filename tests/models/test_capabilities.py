@@ -7,15 +7,25 @@ import numpy as np
 import pytest
 
 import seaway
-from support.reference import reference_costs
 from seaway import _core
-from seaway.models import EDGE_COSTS, EdgeCost, EnteredPixel, Fuel, IceSeasonTime, TravelTime, WaveDanger
+from seaway.models import (
+    EDGE_COSTS,
+    EdgeCost,
+    EnteredPixel,
+    Fuel,
+    IceSeasonTime,
+    IceWeatherTime,
+    TravelTime,
+    WaveDanger,
+)
+from support.reference import reference_costs
 
 FLAGS = ("static", "symmetric", "turn_penalty", "time_dependent", "smoothable")
 # Python class -> the engine classes its engine() returns.
 PAIRS = [(EdgeCost, [EDGE_COSTS[name] for name in EDGE_COSTS]), (EnteredPixel, [_core.EnteredPixelCost]),
          (TravelTime, [_core.TravelTimeModel, _core.ZonedTravelTimeModel]), (Fuel, [_core.FuelModel]),
-         (WaveDanger, [_core.WaveDangerModel]), (IceSeasonTime, [_core.IceSeasonModel])]
+         (WaveDanger, [_core.WaveDangerModel]), (IceSeasonTime, [_core.IceSeasonModel]),
+         (IceWeatherTime, [_core.IceWeatherModel])]
 
 
 @pytest.mark.parametrize("model, engines", PAIRS, ids=[p[0].__name__ for p in PAIRS])
@@ -37,7 +47,7 @@ def _overloads(fn) -> str:
 def test_each_search_is_bound_for_exactly_the_models_that_can_take_it(search, needs):
     doc = _overloads(search)
     models = [c for c in vars(_core).values() if isinstance(c, type) and hasattr(c, "capabilities")]
-    assert len(models) == 10
+    assert len(models) == 11
     for cls in models:
         able = all(cls.capabilities[n] for n in needs)
         assert (f"seaway._core.{cls.__name__}" in doc) == able, (cls.__name__, needs)

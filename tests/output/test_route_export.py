@@ -110,7 +110,10 @@ def test_csv_read_back(tmp_path, equator):
     equator.speed_kn = 10
     export.write(equator, tmp_path / "r.csv")
     with open(tmp_path / "r.csv", newline="") as f:
-        rows = list(csv.DictReader(f))
+        lines = f.readlines()
+    head = [x for x in lines if x.startswith("#")]  # the route's figures, then the column names
+    assert head[0].startswith("# seaway route: ") and head[1].startswith("# start 0.00000,")
+    rows = list(csv.DictReader(x for x in lines if not x.startswith("#")))
     assert [int(x["waypoint"]) for x in rows] == [1, 2, 3]
     assert float(rows[1]["lon"]) == pytest.approx(2.0) and float(rows[1]["course_deg"]) == 90.0
     assert float(rows[2]["cumulative_km"]) == pytest.approx(equator.length, rel=1e-6)

@@ -1,5 +1,6 @@
 """File helpers: atomic writes (write_atomically, replace_atomically: never a half-written
-file) and checks on input files before they are read lazily.
+file; write_all: several files all or nothing), output paths checked before any work
+(check_output), and checks on input files before they are read lazily.
 
 A truncated classic NetCDF file (CDF-1, CDF-2 or CDF-5) opens without complaint and the
 netCDF library returns fill values (zeros) for the bytes past its end: a cost raster would
@@ -12,6 +13,14 @@ from __future__ import annotations
 import os
 import struct
 import tempfile
+from collections.abc import Callable, Iterable
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    import xarray as xr
+
+    #: A file name as the API takes it.
+    PathLike = str | os.PathLike[str]
 
 # nc_type -> bytes per value
 _SIZES = {1: 1, 2: 1, 3: 2, 4: 4, 5: 4, 6: 8, 7: 1, 8: 2, 9: 4, 10: 8, 11: 8}
@@ -19,37 +28,38 @@ _DIMENSION, _VARIABLE, _ATTRIBUTE = 10, 11, 12
 
 
 class _Header:
-    def __init__(self, data: bytes, version: int):
+    def __init__(self, data: bytes, version: int) -> None:
         self.data, self.pos = data, 4
         self.big = version == 5  # CDF-5: 8-byte counts and sizes
         self.offset64 = version in (2, 5)
 
-    def _take(self, fmt):
+    def _take(self, fmt: str) -> int:
         size = struct.calcsize(fmt)
         if self.pos + size > len(self.data):
             raise EOFError
+        v: int
         (v,) = struct.unpack_from(fmt, self.data, self.pos)
         self.pos += size
         return v
 
-    def count(self):
+    def count(self) -> int:
         return self._take(">Q" if self.big else ">I")
 
-    def int32(self):
+    def int32(self) -> int:
         return self._take(">I")
 
-    def offset(self):
+    def offset(self) -> int:
         return self._take(">Q" if self.offset64 else ">I")
 
-    def skip(self, n):
+    def skip(self, n: int) -> None:
         self.pos += (n + 3) // 4 * 4
         if self.pos > len(self.data):
             raise EOFError
 
-    def name(self):
+    def name(self) -> None:
         self.skip(self.count())
 
-    def attributes(self):
+    def attributes(self) -> None:
         tag, n = self.int32(), self.count()
         if tag not in (0, _ATTRIBUTE):
             raise ValueError("bad attribute list")
@@ -92,13 +102,13 @@ def _classic_data_end(head: bytes, version: int) -> int | None:
         else:
             fixed_end = max(fixed_end, begin + size)
     if records and numrecs:
-        pad = (lambda s: s) if len(records) == 1 else (lambda s: (s + 3) // 4 * 4)
+        pad: Callable[[int], int] = (lambda s: s) if len(records) == 1 else (lambda s: (s + 3) // 4 * 4)
         recsize = sum(pad(s) for _, s in records)
         fixed_end = max(fixed_end, max(b + (numrecs - 1) * recsize + s for b, s in records))
     return fixed_end
 
 
-def check_netcdf(path) -> None:
+def check_netcdf(path: PathLike) -> None:
     """Raise ValueError naming `path` when a classic NetCDF file is cut short (or its header
     is unreadable); other files pass unchecked."""
     path = os.fspath(path)
@@ -122,33 +132,112 @@ def check_netcdf(path) -> None:
                          f"header places data up to byte {need}; download or copy it again")
 
 
-def write_atomically(path, text: str) -> None:
+def write_atomically(path: PathLike, text: str) -> None:
     """Write `text` to a temporary file beside `path`, then rename it over `path`."""
-    def write(fd, tmp):
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
-            f.write(text)
-    replace_atomically(path, write, ".tmp")
+    write_all([(path, text)])
 
 
-def replace_atomically(path, write, suffix: str) -> None:
+def replace_atomically(path: PathLike, write: Callable[[int, str], None], suffix: str) -> None:
     """write(fd, temporary path) fills a temporary file beside `path`, which is then given the
     permissions of a newly created file (mkstemp's are 0600: others could not read the
-    route) and renamed over `path`; on any error the temporary file is removed."""
+    route) and renamed over `path`; on any error the temporary file is removed, and an OSError
+    names `path` (never the temporary file)."""
     target = os.path.abspath(os.fspath(path))
-    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(target), prefix=".seaway-", suffix=suffix)
+    tmp = _temporary(target, suffix)
     try:
-        write(fd, tmp)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
-        os.replace(tmp, target)
-    except BaseException:
+        try:
+            write(os.open(tmp, os.O_WRONLY), tmp)
+        except OSError as exc:
+            raise _named(exc, path) from None
+        _publish([(tmp, target, path)])
+    finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
-        raise
 
 
-def open_netcdf(path, hint: str, **kwargs):
+def check_output(path: PathLike, formats: dict[str, str], option: str = "--out") -> str:
+    """The format of an output file named by its extension (`formats`: {".ext": name}), checked
+    before any work is done: ValueError naming the fix when the extension is unknown, the path
+    is a directory, its directory is missing or not writable, or the file exists read-only."""
+    path = os.fspath(path)
+    if os.path.isdir(path):
+        raise ValueError(f"{option} {path} is a directory; give a file name inside it")
+    ext = os.path.splitext(path)[1].lower()
+    if ext not in formats:
+        raise ValueError(f"{option} {path}: cannot tell the format from the extension "
+                         f"{ext or '(none)'!r}; use one of {', '.join(sorted(formats))}")
+    folder = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(folder):
+        raise ValueError(f"{option} {path}: the directory {folder} does not exist; create it first")
+    if not os.access(folder, os.W_OK | os.X_OK):
+        raise ValueError(f"{option} {path}: the directory {folder} is not writable; choose another")
+    if os.path.exists(path) and not os.access(path, os.W_OK):
+        raise ValueError(f"{option} {path} exists and is read-only; remove it or choose another name")
+    return formats[ext]
+
+
+def write_all(files: Iterable[tuple[PathLike, str | bytes]]) -> None:
+    """Write several files all or nothing: `files` is [(path, str or bytes), ...]. Each goes to a
+    temporary file beside its target; only when every one is written are they renamed over
+    their targets (with a new file's usual permissions). On any failure every temporary file is
+    removed, no target is touched, and the OSError names the target, never a temporary file."""
+    staged: list[tuple[str, str, PathLike]] = []
+    try:
+        for path, data in files:
+            target = os.path.abspath(os.fspath(path))
+            tmp = _temporary(target, ".tmp")
+            staged.append((tmp, target, path))
+            try:
+                fd = os.open(tmp, os.O_WRONLY | os.O_TRUNC)
+                if isinstance(data, (bytes, bytearray)):
+                    with os.fdopen(fd, "wb") as f:
+                        f.write(data)
+                else:
+                    with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
+                        f.write(data)
+            except OSError as exc:
+                raise _named(exc, path) from None
+        for _, target, path in staged:  # what would make a rename fail, before the first one
+            if os.path.isdir(target):
+                raise IsADirectoryError(21, f"{os.fspath(path)}: cannot write it (a directory)")
+        _publish(staged)
+    finally:
+        for tmp, _, _ in staged:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+
+
+def _temporary(target: str, suffix: str) -> str:
+    """A new empty temporary file beside `target`; OSError naming `target` if it cannot be made."""
+    try:
+        fd, tmp = tempfile.mkstemp(dir=os.path.dirname(target), prefix=".seaway-", suffix=suffix)
+    except OSError as exc:
+        raise _named(exc, target) from None
+    os.close(fd)
+    return tmp
+
+
+def _publish(staged: Iterable[tuple[str, str, PathLike]]) -> None:
+    """Give each staged (temporary, target, name) file a new file's permissions, then rename it
+    over its target."""
+    umask = os.umask(0)
+    os.umask(umask)
+    for tmp, target, name in staged:
+        try:
+            os.chmod(tmp, 0o666 & ~umask)
+            os.replace(tmp, target)
+        except OSError as exc:
+            raise _named(exc, name) from None
+
+
+def _named(exc: OSError, path: PathLike) -> OSError:
+    """The OSError for `path`, with the system's reason but not the temporary file's name."""
+    reason = exc.strerror or str(exc).split(": '")[0]
+    text = f"{os.fspath(path)}: cannot write it ({reason})"
+    return type(exc)(exc.errno, text) if exc.errno is not None else type(exc)(text)
+
+
+def open_netcdf(path: PathLike, hint: str, **kwargs: Any) -> xr.Dataset:
     """xarray.open_dataset(path) after check_netcdf (a truncated classic file would read as
     zeros); any failure becomes ValueError naming the file and `hint` (what the file should be)."""
     import xarray as xr
@@ -163,7 +252,7 @@ def open_netcdf(path, hint: str, **kwargs):
         raise ValueError(f"{path}: cannot read it as NetCDF ({exc}); {hint}") from None
 
 
-def read_geotiff(path, band: int = 1):
+def read_geotiff(path: PathLike, band: int = 1) -> xr.DataArray:
     """One band of a north-up GeoTIFF as a DataArray on pixel-centre coordinates: (lat, lon) when
     its CRS is geographic or absent, else (y, x) with the CRS in attrs["crs"]; nodata -> NaN;
     units, positive and standard_name from the band's tags in attrs. Needs rasterio."""

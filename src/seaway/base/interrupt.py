@@ -16,16 +16,21 @@ from __future__ import annotations
 import contextlib
 import threading
 import time
+from collections.abc import Callable, Iterator
+from typing import Any, TypeVar
 
 from .. import _core
 
-_listener = None  # callback(settled pixels) while a `reporting` block runs
+T = TypeVar("T")
+
+#: callback(settled pixels) while a `reporting` block runs.
+_listener: Callable[[int], None] | None = None
 POLL_S = 0.1  # how often the waiting main thread looks at the search (and calls the listener)
 PROGRESS_EVERY_S = 1.0  # SettledProgress says at most this often
 
 
 @contextlib.contextmanager
-def reporting(callback):
+def reporting(callback: Callable[[int], None]) -> Iterator[None]:
     """Within the block, a search run by interruptible() in the main thread calls
     callback(settled pixels so far) each time the waiting main thread polls it (every POLL_S);
     the callback throttles (see SettledProgress)."""
@@ -41,7 +46,8 @@ class SettledProgress:
     """A `reporting` callback that says "searching: N pixels settled (P % of the chart)" at
     most once every `every_s` seconds of `clock`, and only when N has grown."""
 
-    def __init__(self, say, pixels: int, every_s: float | None = None, clock=time.monotonic):
+    def __init__(self, say: Callable[[str], None], pixels: int, every_s: float | None = None,
+                 clock: Callable[[], float] = time.monotonic) -> None:
         every_s = PROGRESS_EVERY_S if every_s is None else every_s
         self.say, self.pixels, self.every_s, self.clock = say, max(int(pixels), 1), every_s, clock
         self.due, self.last = clock() + every_s, 0
@@ -55,7 +61,7 @@ class SettledProgress:
                  "of the chart)")
 
 
-def _stop(finished: threading.Event, token) -> None:
+def _stop(finished: threading.Event, token: _core.CancelToken) -> None:
     """Cancel the search and wait until it has returned, even if more Ctrl-Cs arrive meanwhile:
     the search stops within 4096 expansions and gives its workspace back to the chart's pool,
     so the next query reuses it instead of allocating a second one."""
@@ -68,20 +74,20 @@ def _stop(finished: threading.Event, token) -> None:
             continue
 
 
-def interruptible(search):
+def interruptible(search: Callable[[_core.CancelToken | None], T]) -> T:
     """Run `search(cancel_token)` so that Ctrl-C stops it promptly; returns its result.
 
     The main thread waits on an Event, not Thread.join: in CPython 3.11 a KeyboardInterrupt
     that interrupts join() marks the thread as stopped while it still runs (bpo-45274's
     cleanup releases the running thread's own lock), so a later join() returned at once and
-    the cancelled search kept its workspace (issue 13)."""
+    the cancelled search kept its workspace."""
     if threading.current_thread() is not threading.main_thread():
         return search(None)
     token = _core.CancelToken()
-    outcome = {}
+    outcome: dict[str, Any] = {}  # "value": the search's T, or "error": what it raised
     finished = threading.Event()
 
-    def work():
+    def work() -> None:
         try:
             outcome["value"] = search(token)
         except BaseException as exc:  # handed to the main thread below
@@ -101,4 +107,5 @@ def interruptible(search):
         raise
     if "error" in outcome:
         raise outcome["error"]
-    return outcome["value"]
+    value: T = outcome["value"]
+    return value

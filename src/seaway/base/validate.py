@@ -8,8 +8,9 @@ import numbers
 import numpy as np
 
 
-def number(value, name: str, *, minimum=None, above=None, maximum=None, integer=False,
-           what=None, example=None) -> float:
+def number(value: object, name: str, *, minimum: float | None = None, above: float | None = None,
+           maximum: float | None = None, integer: bool = False, what: str | None = None,
+           example: object = None) -> float:
     """`value` as a float (int if integer=True), or TypeError (not a number) / ValueError (NaN,
     infinite or out of bounds) whose message names `name`: "{name} must be {what}, got ...".
 
@@ -28,6 +29,7 @@ def number(value, name: str, *, minimum=None, above=None, maximum=None, integer=
     ok_type = numbers.Integral if integer else numbers.Real
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, ok_type):
         raise TypeError(message.format(type(value).__name__ + " "))
+    # mypy narrows value to numbers.Real, whose stub has no __int__; integer=True checked Integral
     v = int(value) if integer else float(value)  # type: ignore[call-overload]
     if not (np.isfinite(v) and (minimum is None or v >= minimum) and (above is None or v > above)
             and (maximum is None or v <= maximum)):

@@ -3,6 +3,9 @@ latitude, longitude, y or x, and which variable of a forecast plays which role."
 
 from __future__ import annotations
 
+from collections.abc import Hashable, Mapping
+from typing import Any
+
 LAT_NAMES = ("lat", "latitude", "nav_lat")
 LON_NAMES = ("lon", "longitude", "long", "nav_lon")
 Y_NAMES = ("y", "yc", "northing")
@@ -34,7 +37,7 @@ GRID_VECTORS = {
 }
 
 
-def coord_role(name: str, attrs: dict) -> str | None:
+def coord_role(name: Hashable, attrs: Mapping[Any, Any]) -> str | None:
     """'lat', 'lon', 'y' or 'x' for a coordinate, by its name or CF attributes."""
     lname = str(name).lower()
     std = str(attrs.get("standard_name", "")).lower()

@@ -7,12 +7,13 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import numpy.typing as npt
 
 from ..base.units import EARTH_RADIUS_KM
 from .raster import Chart
 
 
-def _row_gaps(mask: np.ndarray, wrap: bool) -> np.ndarray:
+def _row_gaps(mask: npt.NDArray[np.bool_], wrap: bool) -> npt.NDArray[np.float64]:
     """Per pixel, the column distance (in pixels) to the nearest True pixel of its own row
     (inf when the row has none); columns wrap around on global charts."""
     rows, cols = mask.shape
@@ -23,11 +24,11 @@ def _row_gaps(mask: np.ndarray, wrap: bool) -> np.ndarray:
     np.maximum.accumulate(left, axis=1, out=left)
     right = np.where(m, col, np.inf)
     right = np.minimum.accumulate(right[:, ::-1], axis=1)[:, ::-1]
-    gap = np.minimum(col - left, right - col)
+    gap: npt.NDArray[np.float64] = np.minimum(col - left, right - col)
     return gap[:, cols:2 * cols] if wrap else gap
 
 
-def distance_to(mask: np.ndarray, chart: Chart, limit: float) -> np.ndarray:
+def distance_to(mask: npt.ArrayLike, chart: Chart, limit: float) -> npt.NDArray[np.float64]:
     """Distance from every pixel centre to the nearest True pixel centre of `mask` (0 on the
     mask), exact up to `limit` and inf beyond it: great-circle km on lat/lon charts (sphere of
     R = 6371.0088 km), Euclidean chart units on planar charts (scipy.ndimage's exact EDT).

@@ -14,9 +14,13 @@ unpacked with the variable's encoding before they are compared (CF 1.11 section 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
+
+if TYPE_CHECKING:
+    import xarray as xr
 
 #: Words in a flag meaning that make the flagged pixel land.
 LAND_WORDS = ("land", "coast", "lake", "ice_shelf", "shelf_ice")
@@ -27,12 +31,12 @@ class Flagged:
     """What flags_out found: the data with flags and out-of-range values set to NaN, the pixels
     the flags call land, and one sentence per kind of flag."""
 
-    values: Any  # the DataArray, flagged pixels NaN
-    land: np.ndarray | None = None
-    notes: list = field(default_factory=list)
+    values: xr.DataArray  # flagged pixels NaN
+    land: npt.NDArray[np.bool_] | None = None
+    notes: list[str] = field(default_factory=list)
 
 
-def _unpack(da, values):
+def _unpack(da: xr.DataArray, values: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """Attribute values in packed units -> the units of the decoded data."""
     v = np.atleast_1d(np.asarray(values, dtype=float))
     enc = getattr(da, "encoding", {}) or {}
@@ -47,13 +51,13 @@ def _is_land(meaning: str) -> bool:
     return any(word in m for word in LAND_WORDS)
 
 
-def has_flags(da) -> bool:
+def has_flags(da: object) -> bool:
     attrs = getattr(da, "attrs", {})
     return any(k in attrs for k in ("flag_values", "flag_masks", "valid_range", "valid_min",
                                     "valid_max"))
 
 
-def flags_out(da, name: str = "") -> Flagged:
+def flags_out(da: xr.DataArray, name: str = "") -> Flagged:
     """The data of `da` (a DataArray) without its CF flags; see the module's docstring."""
     name = name or str(da.name)
     attrs = da.attrs

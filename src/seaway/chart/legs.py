@@ -20,14 +20,24 @@ planar units) inside pixels of cost u_k, priced by the model's own rule (the C++
   length; a leg inside one pixel costs l_0 u_0. A stencil step of the engine costs what the
   engine charges (max(u_i, u_j) r or (u_i + u_j)/2 r: only its two ends count).
 A piece lying exactly on a pixel boundary is charged the larger of the two sides.
-tests/reference_legs.py keeps the former numpy implementation as the check of the C++ one."""
+tests/support/reference_legs.py keeps the former numpy implementation as the check of the C++ one."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from ..base import sphere as geo
+
+if TYPE_CHECKING:
+    from .raster import Chart
+
+    #: A point in index space: fractional (row, col).
+    Vertex = npt.NDArray[np.floating] | Sequence[float]
 
 SUBDIVIDE = 4.0  # index-space length of the pieces a great-circle leg is followed by (legs.hpp)
 
@@ -37,7 +47,7 @@ class Segments:
     the chart's cost raster (e.g. _core.MaxCost(chart.values); seaway.models.EdgeCost.segments
     builds it), with the land rule of a k x k stencil (`neighbourhood`)."""
 
-    def __init__(self, chart, model, neighbourhood: int = 3):
+    def __init__(self, chart: Chart, model: _core.RasterRule, neighbourhood: int = 3) -> None:
         self.chart, self.half = chart, (neighbourhood - 1) // 2
         g = chart.grid
         grid = _core.Grid()
@@ -47,22 +57,22 @@ class Segments:
         # reads chart.values and chart.land in place: NaN, inf, negative and land are impassable
         self.pricer = _core.LegPricer(model, chart.land, grid, self.half)
 
-    def coords(self, pts) -> np.ndarray:
+    def coords(self, pts: npt.ArrayLike) -> npt.NDArray[np.float64]:
         return index_coords(self.chart, pts)
 
-    def is_step(self, p, q) -> bool:
+    def is_step(self, p: Vertex, q: Vertex) -> bool:
         d = np.abs(np.asarray(q, float) - p)
         return bool(np.all(p == np.round(p)) and np.all(q == np.round(q)) and d.max() <= self.half)
 
-    def leg(self, p, q) -> tuple[float, float]:
+    def leg(self, p: Vertex, q: Vertex) -> tuple[float, float]:
         """(cost, length) of the leg p -> q; (inf, length) if it is forbidden."""
         return self.pricer.leg(float(p[0]), float(p[1]), float(q[0]), float(q[1]))
 
-    def cost(self, pts) -> float:
+    def cost(self, pts: Sequence[Vertex] | npt.NDArray[np.floating]) -> float:
         return float(sum(self.leg(a, b)[0] for a, b in zip(pts[:-1], pts[1:])))
 
 
-def leg_path(chart, p, q, straight: bool) -> np.ndarray:
+def leg_path(chart: Chart, p: Vertex, q: Vertex, straight: bool) -> npt.NDArray[np.float64]:
     """Vertices in index space of the leg p -> q: the straight segment (planar charts, engine
     steps) or the great circle every <= SUBDIVIDE pixels (geographic charts)."""
     p, q = np.asarray(p, float), np.asarray(q, float)
@@ -85,18 +95,32 @@ def leg_path(chart, p, q, straight: bool) -> np.ndarray:
     return path
 
 
-def index_coords(chart, pts) -> np.ndarray:
+def index_coords(chart: Chart, pts: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """(n, 2) lat/lon (longitude in the chart's convention) or y/x of fractional (row, col)."""
     p = np.asarray(pts, float).reshape(-1, 2)
     g = chart.grid
+    a, b = chart.axes  # (lat, lon) or (y, x): a chart from as_chart always has them
     if chart.geographic:
         lon = g.lon0 + p[:, 1] * g.dlon
-        lon = lon % 360.0 if np.nanmax(chart.lon) > 180 else geo.wrap_lon(lon)
+        lon = lon % 360.0 if np.nanmax(b) > 180 else geo.wrap_lon(lon)
         return np.column_stack([g.lat0 + p[:, 0] * g.dlat, lon])
-    return np.column_stack([chart.y[0] + p[:, 0] * _step(chart.y, g.dy),
-                            chart.x[0] + p[:, 1] * _step(chart.x, g.dx)])
+    return np.column_stack([a[0] + p[:, 0] * _step(a, g.dy), b[0] + p[:, 1] * _step(b, g.dx)])
 
 
-def _step(v, default):
+def _step(v: npt.ArrayLike, default: float) -> float:
     v = np.asarray(v, float)
     return float((v[-1] - v[0]) / (v.size - 1)) if v.size > 1 else float(default)
+
+
+def turning_points(vertices: npt.ArrayLike) -> npt.NDArray[np.int64]:
+    """Indices of the vertices of the polyline `vertices` ((n, 2) row, col) where its
+    direction changes, with both ends."""
+    v = np.asarray(vertices, float)
+    if len(v) < 3:
+        return np.arange(len(v))
+    d = np.diff(v, axis=0)
+    cross = d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0]
+    dot = (d[:-1] * d[1:]).sum(axis=1)
+    scale = np.hypot(*d[:-1].T) * np.hypot(*d[1:].T)
+    turn = (np.abs(cross) > 1e-9 * scale) | (dot <= 0)
+    return np.concatenate([[0], np.flatnonzero(turn) + 1, [len(v) - 1]]).astype(np.int64)

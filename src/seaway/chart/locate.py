@@ -4,13 +4,15 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Sequence
+
 import numpy as np
 
 from ..base.units import EARTH_RADIUS_KM
 from .raster import Chart
 
 
-def nearest_passable(chart: Chart, rc) -> tuple[int, int] | None:
+def nearest_passable(chart: Chart, rc: Sequence[int]) -> tuple[int, int] | None:
     ok = np.isfinite(chart.values) & (chart.values >= 0)
     if chart.land is not None:
         ok &= chart.land == 0
@@ -22,7 +24,7 @@ def nearest_passable(chart: Chart, rc) -> tuple[int, int] | None:
     return int(r), int(c)
 
 
-def describe(chart: Chart, rc) -> str:
+def describe(chart: Chart, rc: tuple[int, int]) -> str:
     r, c = rc
     if chart.geographic:
         lat, lon = chart.axes
@@ -30,8 +32,24 @@ def describe(chart: Chart, rc) -> str:
     return f"pixel ({r}, {c})"
 
 
-def locate(chart: Chart, point, name: str) -> tuple[int, int]:
-    """The pixel of a start or end point: (lat, lon) on geographic charts, (row, col) otherwise."""
+def locate(chart: Chart, point: Iterable[float], name: str) -> tuple[int, int]:
+    """The pixel of a start or end point: (lat, lon) on geographic charts, (row, col) otherwise;
+    ValueError when it is off the chart or impassable."""
+    r, c = pixel_of(chart, point, name)
+    if not chart.passable((r, c)):
+        near = nearest_passable(chart, (r, c))
+        hint = (
+            f"the nearest passable pixel is {describe(chart, near)}"
+            if near
+            else "no pixel of the chart is passable"
+        )
+        raise ValueError(f"{name} is on an impassable pixel (land, NaN or infinite cost): {describe(chart, (r, c))}; {hint}")
+    return r, c
+
+
+def pixel_of(chart: Chart, point: Iterable[float], name: str) -> tuple[int, int]:
+    """The pixel holding a point, passable or not: (lat, lon) on geographic charts, (row, col)
+    otherwise; ValueError when it is off the chart."""
     try:
         a, b = (float(v) for v in point)
     except (TypeError, ValueError):
@@ -70,14 +88,6 @@ def locate(chart: Chart, point, name: str) -> tuple[int, int]:
                 f"{name} (row {r}, col {c}) lies outside the chart of {rows} rows x {cols} columns; "
                 f"give a (row, col) pixel index with 0 <= row < {rows} and 0 <= col < {cols}"
             )
-    if not chart.passable((r, c)):
-        near = nearest_passable(chart, (r, c))
-        hint = (
-            f"the nearest passable pixel is {describe(chart, near)}"
-            if near
-            else "no pixel of the chart is passable"
-        )
-        raise ValueError(f"{name} is on an impassable pixel (land, NaN or infinite cost): {describe(chart, (r, c))}; {hint}")
     return r, c
 
 

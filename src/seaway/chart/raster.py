@@ -6,27 +6,35 @@ All validation happens here, so the C++ core only sees consistent input."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from ..base.validate import number
 from .cf import coord_role
 from .flags import flags_out, has_flags
 
+if TYPE_CHECKING:
+    import xarray as xr
+
+    #: A chart's cost raster as the engine reads it.
+    Costs = npt.NDArray[np.float32] | npt.NDArray[np.float64]
+
 
 @dataclass
 class Chart:
     """A validated raster: cost values, land mask and grid geometry."""
 
-    values: np.ndarray  # (rows, cols) float32 or float64, C-contiguous
-    land: np.ndarray | None  # (rows, cols) uint8 or None
+    values: Costs  # (rows, cols) float32 or float64, C-contiguous
+    land: npt.NDArray[np.uint8] | None  # (rows, cols) uint8 or None
     grid: _core.Grid
-    lat: np.ndarray | None = None  # pixel-centre latitudes (geographic grids)
-    lon: np.ndarray | None = None
-    y: np.ndarray | None = None  # pixel-centre y / x (planar grids)
-    x: np.ndarray | None = None
-    template: object = None  # the DataArray the cost came in, for DataArray results
+    lat: npt.NDArray[np.floating] | None = None  # pixel-centre latitudes (geographic grids)
+    lon: npt.NDArray[np.floating] | None = None
+    y: npt.NDArray[np.floating] | None = None  # pixel-centre y / x (planar grids)
+    x: npt.NDArray[np.floating] | None = None
+    template: xr.DataArray | None = None  # the DataArray the cost came in, for DataArray results
     lowest: float = float("nan")  # the smallest cost, NaN ignored (NaN: not known or all NaN)
 
     @property
@@ -37,13 +45,13 @@ class Chart:
     def shape(self) -> tuple[int, int]:
         return self.values.shape
 
-    def passable(self, rc) -> bool:
+    def passable(self, rc: tuple[int, int]) -> bool:
         r, c = rc
         u = self.values[r, c]
         return bool(np.isfinite(u) and u >= 0 and (self.land is None or not self.land[r, c]))
 
     @property
-    def axes(self) -> tuple[np.ndarray, np.ndarray]:
+    def axes(self) -> tuple[npt.NDArray[np.floating], npt.NDArray[np.floating]]:
         """The pixel-centre coordinates along rows and columns: (lat, lon) on geographic charts,
         (y, x) on planar ones."""
         a, b = (self.lat, self.lon) if self.geographic else (self.y, self.x)
@@ -51,13 +59,14 @@ class Chart:
             raise ValueError("the chart has no pixel-centre coordinates")
         return a, b
 
-    def pixel_coords(self, pixels: np.ndarray) -> np.ndarray:
+    def pixel_coords(self, pixels: npt.NDArray[np.integer]) -> npt.NDArray[np.float64]:
         """(n, 2) lat/lon (geographic) or y/x (planar) of pixel centres."""
         a, b = self.axes
         return np.column_stack([a[pixels[:, 0]], b[pixels[:, 1]]])
 
 
-def from_dataarray(da):
+def from_dataarray(da: xr.DataArray) -> tuple[npt.NDArray[Any], dict[str, npt.NDArray[np.float64]],
+                                               xr.DataArray]:
     """Values in (row, col) order and the 1-D coordinates found along each dimension."""
     if da.ndim != 2:
         raise ValueError(
@@ -92,7 +101,7 @@ def from_dataarray(da):
     return np.asarray(da.values), {}, da
 
 
-def _regular_step(values: np.ndarray, name: str) -> float:
+def _regular_step(values: npt.NDArray[np.float64], name: str) -> float:
     if values.ndim != 1:
         raise ValueError(f"{name} must be 1-D (pixel centres along one axis), got shape {values.shape}")
     if not np.all(np.isfinite(values)):
@@ -111,7 +120,7 @@ def _regular_step(values: np.ndarray, name: str) -> float:
     return float(step)
 
 
-def _land_mask(land: np.ndarray) -> np.ndarray:
+def _land_mask(land: npt.NDArray[np.generic]) -> npt.NDArray[np.uint8]:
     """The land mask as uint8 0/1: bool, or integers/floats holding only 0 (sea) and 1 (land).
     Anything else (NaN, 2, 0.5, -1, strings) is refused rather than silently read as land."""
     if land.dtype == np.bool_:
@@ -126,16 +135,19 @@ def _land_mask(land: np.ndarray) -> np.ndarray:
             f"land must hold only 0 (sea) and 1 (land), got {int(bad.sum())} other value(s), e.g. "
             f"{land[r, c]!r} at pixel ({r}, {c}); give a bool mask, e.g. land=np.isnan(mask) | "
             "(mask > 0.5) to say how such values should be read")
-    return (land == 1).astype(np.uint8)
+    mask: npt.NDArray[np.uint8] = (land == 1).astype(np.uint8)  # (ndarray.__eq__ is untyped)
+    return mask
 
 
-def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negative=False) -> Chart:
+def as_chart(cost: npt.ArrayLike | xr.DataArray, *, lat: npt.ArrayLike | None = None,
+             lon: npt.ArrayLike | None = None, dx: float = 1.0, dy: float = 1.0,
+             land: npt.ArrayLike | xr.DataArray | None = None, allow_negative: bool = False) -> Chart:
     """Validate the user's raster and coordinates and build the engine's view of them."""
     template = None
-    coords: dict = {}
+    coords: dict[str, npt.NDArray[np.float64]] = {}
     flag_land = None
     if hasattr(cost, "dims") and hasattr(cost, "coords"):  # an xarray.DataArray
-        values, coords, template = from_dataarray(cost)
+        values, coords, template = from_dataarray(cast("xr.DataArray", cost))
         if has_flags(template):  # CF flags and values outside valid_range are never costs
             flagged = flags_out(template, "cost")
             values, flag_land = np.asarray(flagged.values.values), flagged.land
@@ -176,8 +188,8 @@ def as_chart(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, allow_negat
     mask = None
     if land is not None:
         if hasattr(land, "dims") and template is not None and set(land.dims) == set(template.dims):
-            land = land.transpose(*template.dims)  # same (row, col) order as the cost
-        land_arr = np.asarray(land.values if hasattr(land, "dims") else land)
+            land = cast("xr.DataArray", land).transpose(*template.dims)  # the cost's (row, col) order
+        land_arr = np.asarray(cast("xr.DataArray", land).values if hasattr(land, "dims") else land)
         if land_arr.shape != values.shape:
             raise ValueError(f"land has shape {land_arr.shape} but cost has shape {values.shape}; give a mask of the same shape")
         mask = np.ascontiguousarray(_land_mask(land_arr))

@@ -1,7 +1,9 @@
 """The command line: ``seaway route CHART --from LAT,LON --to LAT,LON`` routes a ship across a
 chart file; ``seaway demo`` through the built-in synthetic winter Kara Sea chart, from the Kara
 Gate to the Vilkitsky Strait; ``seaway bench`` times the engine on the synthetic benchmark chart;
-``seaway season DATE=CHART ... --from LAT,LON --to LAT,LON`` routes through dated ice charts.
+``seaway season DATE=CHART ... --from LAT,LON --to LAT,LON`` routes through dated ice charts;
+``seaway route --forecast FILE`` routes through a weather forecast and ``seaway replan`` re-plans
+a voyage from where the ship is through a newer one.
 One module per command; common.py holds what they share."""
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from .bench import add_bench_command, run_bench
 from .common import EPILOG
 from .demo import add_demo_command
 from .demo import demo as run_demo
+from .replan import add_replan_command, run_replan
 from .route import add_route_command, run_route
 from .season import add_season_command, run_season
 
@@ -29,13 +32,14 @@ def build_parser() -> argparse.ArgumentParser:
     add_route_command(commands)
     add_bench_command(commands)
     add_season_command(commands)
+    add_replan_command(commands)
     return parser
 
 
 def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
     run = {"demo": run_demo, "route": run_route, "bench": run_bench,
-           "season": run_season}[args.command]
+           "season": run_season, "replan": run_replan}[args.command]
     try:
         return run(args)
     except (NoRouteError, ValueError, OSError, ImportError) as exc:

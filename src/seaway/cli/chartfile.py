@@ -14,18 +14,15 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..base.files import open_netcdf, read_geotiff
-from ..chart.cf import coord_role
 from ..chart.flags import flags_out, has_flags
 from ..ice import chart_impact
 from ..ice.codes import stage_name
 from ..ice.concentration import DEFAULT_STAGE, concentration_chart, is_concentration
 from ..ice.forms import DEFAULT_FAST_ICE, check_fast_ice
-from ..ice.grids import latlon_grid
-from ..ice.routegrid import route_grid
-from ..ice.sigrid import read_sigrid3
-from ..ice.vectorfile import check_vector_file
+from ..ice.impact import governing_stage
 from ..samples import ice_impact, kara_sea
-from .projected import find_projection, in_km
+from .projected import project_chart
+from .vectorchart import sigrid_chart
 
 NETCDF = (".nc", ".nc4", ".cdf", ".netcdf", ".h5", ".hdf5")
 GEOTIFF = (".tif", ".tiff", ".gtiff")
@@ -74,7 +71,10 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
         if ext in GEOTIFF:
             return _geotiff(path, variable, vessel)
         if ext in SIGRID:
-            ds, kind = _sigrid(path, grid, ends, notes), "SIGRID-3 chart"
+            try:
+                ds, kind = sigrid_chart(path, grid, ends, notes), "SIGRID-3 chart"
+            except ValueError as exc:
+                raise ChartError(str(exc)) from None
         else:
             try:
                 ds = open_netcdf(path, f"charts are NetCDF ({', '.join(NETCDF)}), GeoTIFF "
@@ -121,6 +121,12 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
     elif "stage_of_development" in ds or "SA" in ds:
         out.cost = _impact(ds, vessel or "Arc7", out.notes, fast_ice)
         out.description += f", ice impact for {vessel or 'Arc7'} (Grinyak et al. 2022)"
+        # along the legs and on the maps: the stage that governs (SIGRID-3: SA, open and bergy
+        # water ice free, fast ice's stated stage) and the form of ice (fast ice)
+        out.environment["stage_of_development"] = (_two_d(ds.stage_of_development, []) if "SA" not in ds
+                                                   else governing_stage(ds, fast_ice=fast_ice))
+        if "FA" in ds:
+            out.environment["FA"] = ds["FA"]
     else:
         two_d = [n for n in ds.data_vars if n != land_name and ds[n].ndim >= 2]
         if len(two_d) != 1:
@@ -142,7 +148,10 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
         if name in ds and ds[name].ndim >= 2:
             out.environment[name] = _two_d(ds[name], [])
     if source is not None:
-        _project(out, ds, source)
+        try:  # a projected chart with a CF grid mapping: routed in km, ends and outputs in lat/lon
+            project_chart(out, ds, source)
+        except ValueError as exc:
+            raise ChartError(str(exc)) from None
     out.date = _date(ds)
     return out
 
@@ -156,41 +165,6 @@ def _date(ds) -> str:
     elif ds.attrs.get("time_coverage_start"):
         text = str(ds.attrs["time_coverage_start"])[:16]
     return text.replace("T00:00", "").replace("T", " ")
-
-
-def _project(out: ChartData, ds, source) -> None:
-    """A chart on a projected grid with a known CRS: coordinates in km, the projection kept."""
-    try:
-        proj = find_projection(ds, source)
-    except ValueError as exc:
-        raise ChartError(str(exc)) from None
-    if proj is None:
-        return
-    try:
-        out.cost = in_km(out.cost)
-        out.land = None if out.land is None else in_km(out.land.astype(bool))
-        out.environment = {k: in_km(v) for k, v in out.environment.items()}
-    except (ValueError, KeyError, TypeError) as exc:
-        raise ChartError(f"{source.name}: {exc}") from None
-    out.projection = proj
-    _check_latlon(out, source, proj)
-    out.notes.append(f"projected chart ({proj.crs.name}, from {proj.source}): routed on its own "
-                     "grid in km; --from/--to and the outputs in lat/lon")
-
-
-def _check_latlon(out: ChartData, source, proj) -> None:
-    """A projected chart that also gives 2-D latitude/longitude: say how far they are from the
-    projection's (the route and outputs use the projection)."""
-    two = {coord_role(str(c.name), c.attrs): c for c in source.coords.values() if c.ndim == 2}
-    if "lat" not in two or "lon" not in two:
-        return
-    y, x = np.meshgrid(out.cost.y.values, out.cost.x.values, indexing="ij")
-    ll = proj.to_latlon(y.ravel(), x.ravel())
-    lat = np.asarray(two["lat"].transpose(*source.dims[-2:]).values, float).ravel()
-    err = np.nanmax(np.abs(ll[:, 0] - lat)) if lat.size == ll.shape[0] else 0.0
-    if err > 0.01:
-        out.notes.append(f"{source.name}: the file's latitudes and its projection differ by up to "
-                         f"{err:.2f} deg; the route and the outputs use the projection")
 
 
 def _land_name(ds):
@@ -246,65 +220,6 @@ def _impact(ds, vessel, notes, fast_ice=DEFAULT_FAST_ICE):
         return ice_impact(_two_d(ds.stage_of_development, notes), vessel)
     except ValueError as exc:
         raise ChartError(str(exc)) from None
-
-
-def _sigrid(path, grid, ends=None, notes=None):
-    """Rasterise a SIGRID-3 chart onto a lat/lon grid (seaway.ice.sigrid, the [ice] extra)."""
-    try:
-        import pyogrio
-    except ImportError as exc:
-        raise ChartError(f"{path}: reading SIGRID-3 charts needs the [ice] extra ({exc}): "
-                         'pip install "seaway[ice]"') from None
-    try:  # a directory, an empty file, a shapefile without .dbf/.shx or with a broken .prj
-        assumed = check_vector_file(path)
-    except ValueError as exc:
-        raise ChartError(str(exc)) from None
-    if notes is not None:
-        notes += assumed
-    if grid is None and ends is not None:
-        try:
-            info = pyogrio.read_info(path)
-        except Exception as exc:  # pyogrio's DataSourceError, ...
-            raise ChartError(f"{path}: cannot read it as a SIGRID-3 vector file ({exc})") from None
-        box = info["total_bounds"]
-        geographic = _in_degrees(info)
-        try:
-            target, note = route_grid(*ends, chart_bounds=box if geographic else None)
-        except ValueError as exc:
-            raise ChartError(f"{path}: {exc}") from None
-        notes.append(note)
-        try:
-            return read_sigrid3(path, target)
-        except ValueError as exc:
-            raise ChartError(str(exc)) from None
-    if grid is None:
-        info = pyogrio.read_info(path)
-        west, south, east, north = info["total_bounds"]
-        if not (-180 <= west <= east <= 360 and -90 <= south <= north <= 90):
-            raise ChartError(f"{path}: the chart is not in degrees ({info['crs']}); give the lat/lon "
-                             "grid to rasterise onto with --grid SOUTH,NORTH,WEST,EAST,RES")
-        res = max(north - south, east - west) / 1000
-        north = south + np.ceil((north - south) / res - 1e-9) * res  # whole pixels
-        east = west + np.ceil((east - west) / res - 1e-9) * res
-        grid = (south, north, west, east, res)
-    south, north, west, east, res = grid
-    try:
-        return read_sigrid3(path, latlon_grid(south, north, west, east, res))
-    except ValueError as exc:
-        raise ChartError(str(exc)) from None
-
-
-def _in_degrees(info) -> bool:
-    """Is a vector layer in geographic coordinates (its CRS, or degrees-sized bounds)?"""
-    crs = info.get("crs")
-    if crs:
-        try:
-            import pyproj
-            return bool(pyproj.CRS.from_user_input(crs).is_geographic)
-        except Exception:  # an unparsable CRS: judge by the numbers
-            pass
-    west, south, east, north = info["total_bounds"]
-    return bool(-180 <= west <= east <= 360 and -90 <= south <= north <= 90)
 
 
 def _geotiff(path, variable, vessel):

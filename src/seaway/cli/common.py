@@ -30,6 +30,25 @@ def point(text: str) -> tuple[float, float]:
     return a, b
 
 
+def add_ends(parser: argparse.ArgumentParser) -> None:
+    """--from and --to: the ends of a route."""
+    parser.add_argument("--from", dest="start", type=point, required=True, metavar="LAT,LON",
+                        help="start in decimal degrees (ROW,COL on charts with projected y/x)")
+    parser.add_argument("--to", dest="end", type=point, required=True, metavar="LAT,LON",
+                        help="end in decimal degrees (ROW,COL on charts with projected y/x)")
+
+
+def positive_km(text: str) -> float:
+    """argparse type for a distance in km (>= 0)."""
+    try:
+        km = float(text)
+    except ValueError:
+        km = float("nan")
+    if not (np.isfinite(km) and km >= 0):
+        raise argparse.ArgumentTypeError(f"expected a distance in km (>= 0), got {text!r}")
+    return km
+
+
 def grid(text: str) -> tuple:
     """argparse type for SOUTH,NORTH,WEST,EAST,RES (degrees)."""
     try:

@@ -1,4 +1,4 @@
-"""The constraint options of `seaway route` (issue 11): via-points, turn penalty, keep-away
+"""The constraint options of `seaway route`: via-points, turn penalty, keep-away
 buffers and zones, turned into seaway.route() keywords."""
 
 from __future__ import annotations

@@ -14,6 +14,7 @@ from ..base.sphere import distance_km
 from ..base.units import KM_PER_DEG, KM_PER_NM
 from ..engine.api import route
 from ..errors import NoRouteError
+from ..ice.noroute import explain_no_route
 from .common import CLI_METHODS, neighbourhood
 
 #: (name, lat, lon) of the demo's ends; each is snapped to the nearest water pixel of the chart.
@@ -63,7 +64,11 @@ def demo(args) -> int:
     start, start_text = _end(ds, u.values, KARA_GATE, args.ice_class)
     end, end_text = _end(ds, u.values, VILKITSKY_STRAIT, args.ice_class)
     t1 = time.perf_counter()
-    r = route(u, start, end, land=ds.land, neighbourhood=args.neighbourhood, method=args.method)
+    try:
+        r = route(u, start, end, land=ds.land, neighbourhood=args.neighbourhood, method=args.method)
+    except NoRouteError:  # say why from the ice: what closes the way, which class gets through
+        raise explain_no_route(ds, args.ice_class, start, end, cost=u,
+                               neighbourhood=args.neighbourhood) from None
     t_search = time.perf_counter() - t1
     km = r.length
     rows, cols = ds.land.shape

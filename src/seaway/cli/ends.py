@@ -3,34 +3,18 @@ ice by its SIGRID-3 stage and concentration, off the chart, too shallow for the 
 find the nearest point it may use.
 
 "Nearest point the ship may use": the pixel, by great-circle distance from the point as given,
-that the ship can reach from the other end (the engine's cost field from that end, so a
-snapped end never sits in a pocket cut off by land or ice); when the other end is impassable
-too, the nearest passable pixel."""
+in water that joins both ends (seaway.engine.snap.snap_ends: the engine's cost field, so a
+snapped end never sits in a pocket cut off by land or ice, and two impassable ends move into
+the same water); --snap moves an end at most --snap-km."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from ..base.sphere import distance_km
-from ..chart.locate import locate
 from ..chart.raster import as_chart
-from ..engine.api import cost_field
+from ..engine.snap import DEFAULT_SNAP_KM, SnapError, snap_ends
 from ..ice.codes import stage_name
-
-
-def _pixel(chart, p):
-    """(row, col) of the pixel holding p (lat, lon), as locate() picks it, or None off the grid."""
-    g = chart.grid
-    r = int(round((p[0] - g.lat0) / g.dlat))
-    c = int(round(((p[1] - g.lon0) / g.dlon + 0.5) % (360.0 / abs(g.dlon)) - 0.5))
-    if g.wrap:
-        c %= chart.shape[1]
-    rows, cols = chart.shape
-    return (r, c) if 0 <= r < rows and 0 <= c < cols else None
-
-
-def _km(lat, lon, p):
-    return distance_km(lat, lon, p[0], p[1])
 
 
 def _value(layers, name, rc):
@@ -76,54 +60,62 @@ def describe(layers, rc, vessel, reasons=(), ice_blocks=True) -> str:
     return "; ".join(parts)
 
 
-def check_ends(cost, land, layers, ends, *, vessel=None, snap=False, say=print,
-               neighbourhood=5, reasons=None, chart_cost=None):
-    """The ends (start, end) as (lat, lon), unchanged when passable; an impassable one raises
-    ValueError naming why and the nearest usable point, or with snap=True is moved there (and
-    `say` tells). reasons(rc) -> list of extra reasons for a pixel (e.g. too shallow);
-    chart_cost: the cost before those were applied (tells whether the ice itself forbids it)."""
+def check_ends(cost, land, layers, ends, *, vessel=None, snap=False, snap_km=DEFAULT_SNAP_KM,
+               say=print, neighbourhood=5, reasons=None, chart_cost=None, to_user=None,
+               asked=None):
+    """The ends (start, end) the route uses (seaway.engine.snap.snap_ends), and the sentences
+    saying how they moved. An impassable end raises ValueError naming why and the nearest
+    usable point joined to the other end, or with snap=True is moved there when that is at most
+    `snap_km` away (and `say` tells). reasons(rc) -> list of extra reasons for a pixel (e.g. too
+    shallow); chart_cost: the cost before those were applied (tells whether the ice itself
+    forbids it); to_user(point) -> (lat, lon): how a chart point (a projected chart's pixel)
+    reads for the user (default: as it is); asked: the ends as the user gave them (default
+    `ends`), for the messages."""
     chart = as_chart(cost, land=land)
-    if not chart.geographic:
-        return list(ends)
-    names = ("start", "end")
-    bad = []
-    for name, p in zip(names, ends):
-        try:
-            locate(chart, p, name)
-            bad.append(False)
-        except ValueError as exc:
-            if _pixel(chart, p) is None:
-                raise ValueError(str(exc)) from None
-            bad.append(True)
-    out = list(ends)
-    for k, (name, p) in enumerate(zip(names, ends)):
-        if not bad[k]:
-            continue
-        rc = _pixel(chart, p)
-        other = ends[1 - k]
-        if not bad[1 - k]:  # pixels the ship can reach from the other end
-            field = np.asarray(cost_field(cost, other, land=land, neighbourhood=neighbourhood))
-            usable = np.isfinite(field)
-            usable[_pixel(chart, other)] = True
-        else:
-            usable = np.isfinite(chart.values) & (chart.values >= 0)
-            if chart.land is not None:
-                usable &= chart.land == 0
-        base = np.asarray(getattr(chart_cost, "values", chart_cost), float) if chart_cost is not None else None
-        blocks = base is None or not np.isfinite(base[rc]) or (chart.land is not None and chart.land[rc])
-        what = describe(layers, rc, vessel, reasons(rc) if reasons else (), blocks)
-        here = f"{name} {p[0]:g},{p[1]:g} is on an impassable pixel ({what})"
-        cand = np.argwhere(usable)
-        if cand.size == 0:
-            raise ValueError(f"{here}; no pixel of the chart is usable from the other end")
-        km = _km(chart.lat[cand[:, 0]], chart.lon[cand[:, 1]], p)
-        i = int(np.argmin(km))
-        r, c = cand[i]
-        q = (float(chart.lat[r]), float(chart.lon[c]))
-        q = (q[0], (q[1] + 180.0) % 360.0 - 180.0)
-        if not snap:
-            raise ValueError(f"{here}; the nearest point the ship may use is {q[0]:.4f},{q[1]:.4f}, "
-                             f"{km[i]:.1f} km away: give it, or pass --snap to move the {name} there")
-        say(f"{here}: moved {km[i]:.1f} km to {q[0]:.4f},{q[1]:.4f} (--snap)")
-        out[k] = q
-    return out
+    base = None if chart_cost is None else np.asarray(getattr(chart_cost, "values", chart_cost), float)
+
+    def why(r, c):
+        blocks = base is None or not np.isfinite(base[r, c]) or (chart.land is not None and chart.land[r, c])
+        return describe(layers, (r, c), vessel, reasons((r, c)) if reasons else (), blocks)
+
+    show = to_user or (lambda p: p)
+    given = dict(zip(("start", "end"), asked or ends))
+    unit = "km" if chart.geographic or to_user else "chart units"
+    try:
+        snapped = snap_ends(cost, ends[0], ends[1], land=land, neighbourhood=neighbourhood,
+                            max_km=np.inf, why=why)
+    except SnapError as exc:  # no usable pixel joins the other end
+        raise ValueError("; ".join(_refusal(m, given[m.name], np.inf, snap, snap_km, show, unit)
+                                   for m in exc.moves)) from None
+
+    def km(m):  # a projected chart: great-circle km between the point asked for and the new one
+        if to_user is None:
+            return m.distance
+        (a, b), (c, d) = given[m.name], show(m.to)
+        return float(distance_km(a, b, c, d))
+
+    far = [m for m in snapped.moves if not (snap and km(m) <= snap_km)]
+    if far:
+        raise ValueError("; ".join(_refusal(m, given[m.name], km(m), snap, snap_km, show, unit)
+                                   for m in far))
+    notes = []
+    for m in snapped.moves:
+        notes.append(f"{m.name} {_pt(given[m.name])} is on an impassable pixel ({m.why}): moved "
+                     f"{km(m):.1f} {unit} to {_pt(show(m.to), 4)} (--snap, at most {snap_km:g} {unit})")
+        say(notes[-1])
+    return list(snapped.ends), notes
+
+
+def _pt(p, digits=None) -> str:
+    return ",".join(f"{v:g}" if digits is None else f"{v:.{digits}f}" for v in p)
+
+
+def _refusal(m, given, km, snap, snap_km, show, unit) -> str:
+    here = f"{m.name} {_pt(given)} is on an impassable pixel ({m.why})"
+    if m.to is None:
+        return f"{here}; no pixel of the chart the ship may use is joined to the other end"
+    there = f"the nearest point the ship may use is {_pt(show(m.to), 4)}, {km:.1f} {unit} away"
+    if not snap:
+        return f"{here}; {there}: give it, or pass --snap to move the {m.name} there"
+    return (f"{here}; {there}, farther than --snap-km {snap_km:g}: give a point in water the ship "
+            f"may use, or --snap-km {np.ceil(km):.0f} to move the {m.name} there")

@@ -106,4 +106,52 @@ def end_pixel(da_km, proj: Projection, p, name: str) -> tuple[int, int]:
     return min(int(round(r)), rows - 1), min(int(round(c)), cols - 1)
 
 
-__all__ = ["Projection", "find_projection", "in_km", "end_pixel"]
+def pixel_latlon(da_km, proj: Projection | None):
+    """For a projected chart: a function (row, col) pixel -> (lat, lon) of its centre, as ends
+    are shown to the user; None for a lat/lon chart."""
+    if proj is None:
+        return None
+    ys, xs = np.asarray(da_km.y.values), np.asarray(da_km.x.values)
+
+    def to_user(p):
+        lat, lon = proj.to_latlon([ys[int(p[0])]], [xs[int(p[1])]])[0]
+        return float(lat), float(lon)
+    return to_user
+
+
+def project_chart(out, ds, source) -> None:
+    """A chart (seaway.cli.chartfile.ChartData `out`) on a projected grid with a known CRS: its
+    rasters get coordinates in km, the projection is kept, and the notes say so. Nothing
+    changes when `source` (the file's cost variable) names no grid mapping; ValueError when its
+    grid mapping or coordinates cannot be used."""
+    proj = find_projection(ds, source)
+    if proj is None:
+        return
+    try:
+        out.cost = in_km(out.cost)
+        out.land = None if out.land is None else in_km(out.land.astype(bool))
+        out.environment = {k: in_km(v) for k, v in out.environment.items()}
+    except (ValueError, KeyError, TypeError) as exc:
+        raise ValueError(f"{source.name}: {exc}") from None
+    out.projection = proj
+    _check_latlon(out, source, proj)
+    out.notes.append(f"projected chart ({proj.crs.name}, from {proj.source}): routed on its own "
+                     "grid in km; --from/--to and the outputs in lat/lon")
+
+
+def _check_latlon(out, source, proj) -> None:
+    """A projected chart that also gives 2-D latitude/longitude: say how far they are from the
+    projection's (the route and outputs use the projection)."""
+    two = {coord_role(str(c.name), c.attrs): c for c in source.coords.values() if c.ndim == 2}
+    if "lat" not in two or "lon" not in two:
+        return
+    y, x = np.meshgrid(out.cost.y.values, out.cost.x.values, indexing="ij")
+    ll = proj.to_latlon(y.ravel(), x.ravel())
+    lat = np.asarray(two["lat"].transpose(*source.dims[-2:]).values, float).ravel()
+    err = np.nanmax(np.abs(ll[:, 0] - lat)) if lat.size == ll.shape[0] else 0.0
+    if err > 0.01:
+        out.notes.append(f"{source.name}: the file's latitudes and its projection differ by up to "
+                         f"{err:.2f} deg; the route and the outputs use the projection")
+
+
+__all__ = ["Projection", "find_projection", "in_km", "end_pixel", "project_chart", "pixel_latlon"]

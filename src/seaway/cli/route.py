@@ -5,30 +5,44 @@ from __future__ import annotations
 import dataclasses
 
 from ..base.units import KM_PER_NM
+from ..depth import check_draft
 from ..engine.api import route
+from ..engine.snap import DEFAULT_SNAP_KM
 from ..errors import NoRouteError
+from ..ice.speed import ice_speed
 from ..models import EDGE_COSTS
-from ..output import export
-from ..output.plot import plot_route
 from .chartfile import fast_ice, open_chart
 from .common import (
     CLI_METHODS,
     EPILOG,
     Progress,
+    add_ends,
     grid,
     neighbourhood,
     point,
+    positive_km,
     searching,
     tell,
 )
 from .constraints import add_constraint_options, constraint_options
-from .depth import for_route, why_no_route
+from .depth import for_route
 from .ends import check_ends
-from .projected import end_pixel
+from .forecast import EXAMPLE as FORECAST_EXAMPLE
+from .forecast import add_forecast_options, check_forecast_options, run_forecast_route
+from .noroute import ice_chart, why_no_route
+from .outputs import check_outputs, write_outputs
+from .projected import end_pixel, pixel_latlon
 
 
 def run_route(args) -> int:
+    check_forecast_options(args)
+    if args.forecast:  # weather routing (seaway.cli.forecast)
+        return run_forecast_route(args)
+    if args.chart is None:
+        raise ValueError("give a CHART file, or --forecast FILE to route through a forecast on its "
+                         "own grid")
     say = Progress("route", args.quiet)
+    planned = check_outputs(args.out, args.plot)  # before any work: nothing found is then lost
     say(f"reading {args.chart}")
     data = open_chart(args.chart, variable=args.variable, vessel=args.vessel,
                       land_variable=args.land_variable, grid=args.grid,
@@ -48,9 +62,11 @@ def run_route(args) -> int:
     cost, depth, shallow = for_route(args.depth, cost, draft=args.draft, ukc=args.ukc,
                                      variable=args.depth_variable, positive=args.depth_positive,
                                      say=say, crs=getattr(data.layers, "attrs", {}).get("crs"))
-    start, end = check_ends(cost, data.land, data.layers, (start, end), vessel=args.vessel,
-                            snap=args.snap, say=tell, neighbourhood=args.neighbourhood,
-                            reasons=shallow, chart_cost=chart_cost)
+    (start, end), moved = check_ends(cost, data.land, data.layers, (start, end), vessel=args.vessel,
+                                     snap=args.snap, snap_km=args.snap_km, say=tell,
+                                     neighbourhood=args.neighbourhood, reasons=shallow,
+                                     chart_cost=chart_cost, to_user=pixel_latlon(cost, data.projection),
+                                     asked=(args.start, args.end))
     rows, cols = cost.shape
     say(f"routing on {rows} x {cols} pixels ({data.description}; {args.method}, "
         f"{args.neighbourhood}x{args.neighbourhood} stencil, edge cost {args.edge_cost})")
@@ -64,11 +80,10 @@ def run_route(args) -> int:
         with searching(say, rows * cols * states):
             r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
                       edge_cost=args.edge_cost, method=args.method, **constraints)
-    except NoRouteError as exc:
-        if shallow is None:
-            raise
-        why = why_no_route(chart_cost, data.land, depth, start, end, args.draft, args.ukc)
-        raise NoRouteError(f"{exc}; {why}") from None
+    except NoRouteError:
+        used = any(v not in (None, []) for v in constraints.values())
+        raise why_no_route(data, cost, (start, end), args, depth=depth, shallow=shallow,
+                           constrained=used) from None
     say(f"found: cost {r.cost:.6g}, {len(r.pixels)} pixels, {r.stats.search.settled} settled")
     if constraints["via"] or constraints["turn_penalty"] is not None:
         say("not smoothed: smoothing would cut the via-points or ignore the turn penalty")
@@ -78,8 +93,13 @@ def run_route(args) -> int:
         done = r.stats.smoothing
         say(f"smoothed: cost {done.cost_before:.6g} -> {r.cost:.6g}, course changes "
             f"{done.course_changes_before} -> {done.course_changes_after}")
-    r.name = args.name
-    r.speed_kn = args.speed
+    r = dataclasses.replace(r, name=args.name, speed_kn=args.speed, notes=r.notes + tuple(moved),
+                            requested=(args.start, args.end))  # every output gives both ends
+    if args.speed and ice_chart(data, args):  # times from the speed in the ice, never open water's
+        knots = ice_speed(data.layers, args.vessel or "Arc7", args.speed, fast_ice=args.fast_ice,
+                          depth=depth if args.draft is not None else None, draft=args.draft)
+        r = r.with_ice_speed(knots)
+        tell(f"times from the speed in the ice: {knots.attrs['model']}")
     if data.environment:
         r = r.with_environment(data.environment)
     if depth is not None:  # --depth, over a chart's own depth variable
@@ -89,12 +109,9 @@ def run_route(args) -> int:
         y, x = r.coords[:, 0], r.coords[:, 1]
         r = dataclasses.replace(r, latlon=data.projection.to_latlon(y, x))
     print(r)
-    for path in args.out or []:
-        fmt = export.write(r, path)
-        say(f"wrote {path} ({fmt})")
-    if args.plot:
-        plot_route(planar if data.projection is not None else r, args.plot, title=_title(args, data, r))
-        say(f"wrote {args.plot} (PNG)")
+    shoal = sum(check_draft(args.draft, args.ukc)) if args.draft is not None else None
+    write_outputs(planned, r, planar=planar if data.projection is not None else None,
+                  title=_title(args, data, r), say=say, map_options={"shoal_m": shoal})
     return 0
 
 
@@ -110,15 +127,15 @@ def add_route_command(commands) -> None:
         "route", help="route a ship across a chart file and print, write and plot the route",
         description="Find the least-cost route across CHART from --from to --to, smooth it, print "
                     "its legs (course, distance, time, cost, ice along each leg) and optionally "
-                    "write it (GeoJSON, GPX, RTZ, CSV) and plot it (PNG).", epilog=EPILOG)
-    rp.add_argument("chart", metavar="CHART",
+                    "write it (GeoJSON, GPX, RTZ, CSV) and plot it (PNG). With --forecast: the "
+                    "quickest route through a weather forecast from --depart, with its schedule.",
+        epilog=f"{EPILOG} Weather routing, {FORECAST_EXAMPLE}")
+    rp.add_argument("chart", metavar="CHART", nargs="?",
                     help="chart file: NetCDF (.nc), GeoTIFF (.tif, needs rasterio), SIGRID-3 "
                          "(.shp/.gpkg, needs seaway.ice.sigrid), or 'kara' for the built-in "
-                         "synthetic Kara Sea chart")
-    rp.add_argument("--from", dest="start", type=point, required=True, metavar="LAT,LON",
-                    help="start in decimal degrees (ROW,COL on charts with projected y/x)")
-    rp.add_argument("--to", dest="end", type=point, required=True, metavar="LAT,LON",
-                    help="end in decimal degrees (ROW,COL on charts with projected y/x)")
+                         "synthetic Kara Sea chart; with --forecast it may be left out (the "
+                         "forecast's own grid) or be an ice chart (ice and weather in one voyage)")
+    add_ends(rp)
     rp.add_argument("--vessel", metavar="CLASS",
                     help="ice class (e.g. Arc7, Arc5): turns the chart's stage of development "
                          "into Grinyak et al. 2022's impact (default Arc7 on stage charts)")
@@ -167,16 +184,31 @@ def add_route_command(commands) -> None:
                     help="keep the raw pixel route (default: any-angle smoothing, never costlier)")
     rp.add_argument("--snap", action="store_true",
                     help="move a start or end on land, in ice the class may not enter or in too "
-                         "shallow water to the nearest pixel the ship can reach from the other end "
-                         "(default: stop with an error naming why, that point and its distance)")
+                         "shallow water to the nearest point the ship may use in water that joins "
+                         "both ends, at most --snap-km away; the ends asked for and used are in "
+                         "every output (default: stop with an error naming why, that point and "
+                         "its distance)")
+    rp.add_argument("--snap-km", type=positive_km, default=DEFAULT_SNAP_KM, metavar="KM",
+                    help=f"the farthest --snap moves an end (default {DEFAULT_SNAP_KM:g} km; "
+                         "farther: stop, naming the distance)")
     add_constraint_options(rp, point)
     rp.add_argument("--speed", type=float, metavar="KN",
-                    help="speed in knots: adds each leg's time and the voyage time")
+                    help="speed in open water, knots: adds each leg's time and the voyage time; "
+                         "on an ice chart the speed in the ice comes from a model named in the "
+                         "output: Andreeva 2021's V = F x V0 for Register classes, the IMO POLARIS "
+                         "speed limits for Polar Classes and Finnish-Swedish classes "
+                         "(seaway.ice.speed); with --forecast the calm-water speed (default 12, or the "
+                         "vessel file's)")
     rp.add_argument("--name", default="seaway route", help="route name in the outputs")
     rp.add_argument("--out", action="append", metavar="FILE",
                     help="write the route; the extension picks the format: .geojson/.json, .gpx, "
                          ".rtz (IEC 61174, for ECDIS), .csv, .html (interactive map, offline; "
-                         "needs seaway[plot]); may be repeated")
+                         "needs seaway[plot]); may be repeated. Every path is checked before the "
+                         "chart is read, and all files are written or none; each carries the ends "
+                         "asked for and used and what the route assumes")
     rp.add_argument("--plot", metavar="PNG",
-                    help="draw the chart, land and route to a PNG (needs seaway[plot])")
+                    help="draw the chart, land and route to a PNG (needs seaway[plot]): ice in the "
+                         "WMO colour code (by stage of development on stage charts, fast ice grey), "
+                         "with --depth/--draft the shoals and the least depth")
     rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")
+    add_forecast_options(rp)  # seaway.cli.forecast

@@ -13,8 +13,8 @@ from ..ice.routegrid import route_grid
 from ..ice.season import SeasonGrid, read_season
 from ..models import IceSeasonTime
 from ..output import export
-from .chartfile import _in_degrees
-from .common import EPILOG, Progress, grid, neighbourhood, point, tell
+from .common import EPILOG, Progress, add_ends, grid, neighbourhood, tell
+from .vectorchart import in_degrees
 
 
 def dated_chart(text: str) -> tuple[str, str]:
@@ -72,7 +72,7 @@ def _bounds(charts):
     boxes = []
     for _, path in charts:
         info = pyogrio.read_info(path)
-        if not _in_degrees(info):
+        if not in_degrees(info):
             return None
         boxes.append(info["total_bounds"])
     b = np.array(boxes, float)
@@ -137,10 +137,7 @@ def add_season_command(commands) -> None:
                     help="SIGRID-3 charts with the date each is valid from (2026-07-01=a.shp "
                          "2026-07-02=b.shp ...), or one NetCDF file with a time dimension of CT "
                          "(or sea_ice_area_fraction) and SA or thickness")
-    sp.add_argument("--from", dest="start", type=point, required=True, metavar="LAT,LON",
-                    help="start in decimal degrees (ROW,COL on charts with projected y/x)")
-    sp.add_argument("--to", dest="end", type=point, required=True, metavar="LAT,LON",
-                    help="end in decimal degrees (ROW,COL on charts with projected y/x)")
+    add_ends(sp)
     sp.add_argument("--vessel", default="Arc7", metavar="CLASS", help="ice class (default Arc7)")
     sp.add_argument("--speed", type=float, default=12.0, metavar="KN",
                     help="open-water speed in knots (default 12)")

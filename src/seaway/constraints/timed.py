@@ -4,12 +4,27 @@ open or closed in time windows (the engine's ZonedTravelTimeModel)."""
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
+from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
 from .. import _core
 from ..chart.raster import as_chart
 from .zones import KeepAway, Zone, constraint_factor, rasterise_zone
+
+if TYPE_CHECKING:
+    import xarray as xr
+
+
+class TimedGrid(Protocol):
+    """What zones with time windows read of a forecast (seaway.weather.ForecastGrid): its grid
+    and its departure (None: no time axis)."""
+
+    @property
+    def template(self) -> xr.DataArray: ...
+    @property
+    def departure(self) -> np.datetime64 | None: ...
 
 
 def hard_only(km, keep_away, land) -> np.ndarray:
@@ -38,7 +53,8 @@ def _hours(t, forecast) -> float:
         raise ValueError(f"a zone window time must be a datetime or hours after departure, got {t!r}") from None
 
 
-def timed_zone_engine(forecast, base, zones):
+def timed_zone_engine(forecast: TimedGrid, base: _core.TravelTimeModel,
+                      zones: Iterable[Zone]) -> _core.ZonedTravelTimeModel:
     """The engine's TravelTime model with `zones` (at most 8 exclusions, each closed always or in
     its `active` window) rasterised on the forecast's grid (a seaway.weather.ForecastGrid)."""
     zones = list(zones)

@@ -14,12 +14,18 @@ turn_penalty=...)`)."""
 from __future__ import annotations
 
 import math
+from collections.abc import Collection
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from ..chart.distance import distance_to
 from ..chart.raster import Chart, as_chart
+
+if TYPE_CHECKING:
+    import xarray as xr
 
 
 @dataclass(frozen=True)
@@ -211,8 +217,11 @@ def constraint_factor(chart: Chart, keep_away=(), zones=(), *, chart_crs=None) -
     return factor
 
 
-def constrain(cost, *, keep_away=(), zones=(), lat=None, lon=None, dx=1.0, dy=1.0, land=None,
-              chart_crs=None):
+def constrain(cost: npt.ArrayLike | xr.DataArray, *, keep_away: KeepAway | Collection[KeepAway] = (),
+              zones: Zone | Collection[Zone] = (), lat: npt.ArrayLike | None = None,
+              lon: npt.ArrayLike | None = None, dx: float = 1.0, dy: float = 1.0,
+              land: npt.ArrayLike | xr.DataArray | None = None,
+              chart_crs: object = None) -> npt.NDArray[np.float64] | xr.DataArray:
     """The cost raster with keep-away buffers and zones applied: cost x factor, inf where
     excluded. A DataArray in gives a DataArray out (same coordinates); a numpy array gives a
     float64 array. Arguments as in seaway.route(); `chart_crs` reprojects zones with a `crs`

@@ -1,8 +1,8 @@
-"""Water depth and draft (issue 10 part 2): a bathymetry raster resampled onto a chart's grid,
+"""Water depth and draft: a bathymetry raster resampled onto a chart's grid,
 pixels shallower than the draft plus an under-keel clearance made impassable, and the least
 depth along a route.
 
-Reading: seaway.bathymetry.open_bathymetry (NetCDF or GeoTIFF; ETOPO/GEBCO elevation or
+Reading: seaway.depth.open_bathymetry (NetCDF or GeoTIFF; ETOPO/GEBCO elevation or
 depth positive down, told by the CF attributes, or guessed and said so).
 
 Resampling (`depth_on_grid`), per axis: where the chart's pixels are larger than the

@@ -2,13 +2,29 @@
 
 from __future__ import annotations
 
+from collections.abc import Collection
+from typing import TYPE_CHECKING
+
+import numpy as np
+import numpy.typing as npt
+
 from ..result.route import Route
 from . import methods
 from .prepared import PreparedChart
 
+if TYPE_CHECKING:
+    import xarray as xr
 
-def prepare(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-            directions="full", edge_cost="max", landmarks=0, keep_away=(), zones=()) -> PreparedChart:
+    from ..constraints import KeepAway, Zone
+    from .constrained import Point, TurnPenalty, Via
+
+
+def prepare(cost: npt.ArrayLike | xr.DataArray, *, lat: npt.ArrayLike | None = None,
+            lon: npt.ArrayLike | None = None, dx: float = 1.0, dy: float = 1.0,
+            land: npt.ArrayLike | xr.DataArray | None = None, neighbourhood: int = 5,
+            directions: str = "full", edge_cost: str = "max", landmarks: int = 0,
+            keep_away: KeepAway | Collection[KeepAway] = (),
+            zones: Zone | Collection[Zone] = ()) -> PreparedChart:
     """Validate and prepare a chart once for many routes; arguments as in route().
     landmarks=N (optional) also tabulates N landmarks for edge_cost (4 N bytes per pixel), so
     that later exact queries run A* with the landmark bound (PreparedChart.prepare_landmarks)."""
@@ -17,9 +33,13 @@ def prepare(cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhoo
                          landmarks=landmarks, keep_away=keep_away, zones=zones)
 
 
-def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-          directions="full", edge_cost="max", method="auto", weight=None, via=(),
-          turn_penalty=None, keep_away=(), zones=()) -> Route:
+def route(cost: npt.ArrayLike | xr.DataArray, start: Point, end: Point, *,
+          lat: npt.ArrayLike | None = None, lon: npt.ArrayLike | None = None, dx: float = 1.0,
+          dy: float = 1.0, land: npt.ArrayLike | xr.DataArray | None = None,
+          neighbourhood: int = 5, directions: str = "full", edge_cost: str = "max",
+          method: str = "auto", weight: float | None = None, via: Via | None = (),
+          turn_penalty: TurnPenalty | None = None, keep_away: KeepAway | Collection[KeepAway] = (),
+          zones: Zone | Collection[Zone] = ()) -> Route:
     """The least-cost route from `start` to `end` over the raster `cost`.
 
     cost: 2-D numpy array or xarray.DataArray of cost per unit length (>= 0; inf or NaN is
@@ -55,8 +75,12 @@ def route(cost, start, end, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, ne
                                       turn_penalty=turn_penalty)
 
 
-def cost_field(cost, start, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-               directions="full", edge_cost="max", keep_away=(), zones=()):
+def cost_field(cost: npt.ArrayLike | xr.DataArray, start: Point, *,
+               lat: npt.ArrayLike | None = None, lon: npt.ArrayLike | None = None,
+               dx: float = 1.0, dy: float = 1.0, land: npt.ArrayLike | xr.DataArray | None = None,
+               neighbourhood: int = 5, directions: str = "full", edge_cost: str = "max",
+               keep_away: KeepAway | Collection[KeepAway] = (),
+               zones: Zone | Collection[Zone] = ()) -> npt.NDArray[np.float64] | xr.DataArray:
     """The accumulated least cost from `start` to every pixel (inf where unreachable).
 
     Takes the same arguments as route() (no via points or turn penalty: a field has no single

@@ -4,8 +4,11 @@ turn penalty (the expanded-state search of cpp/seaway/turns.hpp). Used by Prepar
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Sequence
+from typing import TYPE_CHECKING, cast
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from ..base.interrupt import interruptible
@@ -17,8 +20,21 @@ from ..result.stats import Constraints, RouteStats, SearchStats
 from .methods import EDGE_COST_NAMES
 from .result import Search, no_route
 
+if TYPE_CHECKING:
+    from ..models.base import CostModel
+    from .prepared import PreparedChart
 
-def turn_table(turn_penalty) -> tuple[list[float], list[float]] | None:
+    #: A start, end or via point: (lat, lon) on geographic charts, (row, col) on planar ones.
+    Point = Iterable[float]
+    #: Via points: a list of points or an (n, 2) array of them.
+    Via = Sequence[Point] | npt.NDArray[np.number]
+    #: A cost per degree of course change, or a table {angle_deg: cost} / [(angle_deg, cost)].
+    TurnPenalty = float | dict[float, float] | Iterable[tuple[float, float]]
+    #: (angles in degrees, costs) of a turn penalty.
+    Turns = tuple[list[float], list[float]]
+
+
+def turn_table(turn_penalty: TurnPenalty | None) -> Turns | None:
     """(angles in degrees, costs) of a turn penalty given as a cost per degree of course change
     (a number) or a table {angle_deg: cost} / [(angle_deg, cost), ...], linear between its
     points and flat beyond them; None for no penalty."""
@@ -53,7 +69,7 @@ def turn_table(turn_penalty) -> tuple[list[float], list[float]] | None:
     return angles, costs
 
 
-def incoming_offset(prepared, pixels: np.ndarray) -> int:
+def incoming_offset(prepared: PreparedChart, pixels: npt.NDArray[np.int64]) -> int:
     """The stencil index of a path's last step (for the next leg's first turn), or -1."""
     if len(pixels) < 2:
         return -1
@@ -64,7 +80,7 @@ def incoming_offset(prepared, pixels: np.ndarray) -> int:
     return _core.offset_index(prepared.router, di, dj)
 
 
-def via_list(via) -> list:
+def via_list(via: Via | None) -> list[Point]:
     """The via points as a list of points (a single point is refused: it is ambiguous)."""
     if via is None:
         return []
@@ -77,7 +93,7 @@ def via_list(via) -> list:
     return list(via)
 
 
-def _check_turn_model(model):
+def _check_turn_model(model: CostModel) -> None:
     if not model.turn_penalty:
         raise ValueError(
             f"turn_penalty works with the static edge costs {EDGE_COST_NAMES}, not the {model.name!r} "
@@ -85,21 +101,23 @@ def _check_turn_model(model):
             "clock that the penalty would shift); route without turn_penalty, or on a static cost")
 
 
-def search_leg(prepared, s, e, weight, model, turns, incoming, method="astar") -> Search:
+def search_leg(prepared: PreparedChart, s: tuple[int, int], e: tuple[int, int], weight: float,
+               model: CostModel, turns: Turns | None, incoming: int, method: str = "astar") -> Search:
     """The search of one leg between located pixels; `method` as resolved by
     seaway.engine.methods. The turn search is Dijkstra for "dijkstra" and A* (weighted if asked)
     for every other method: it has no bidirectional or landmark form."""
     if turns is None:
         return prepared.search(s, e, weight, model, method)
     weight = 0.0 if method == "dijkstra" else (weight if method == "astar" else 1.0)
-    engine = model.engine(prepared)
+    engine = cast("_core.RasterRule", model.engine(prepared))  # a turn_penalty model (checked)
     angles, costs = turns
     return Search.from_core(interruptible(lambda cancel: _core.route_turns(
         prepared.router, engine, prepared.flat(s), prepared.flat(e), weight, angles, costs,
         incoming, cancel)))
 
 
-def route_constrained(prepared, start, end, model, method, weight, via, turn_penalty):
+def route_constrained(prepared: PreparedChart, start: Point, end: Point, model: CostModel, method: str,
+                      weight: float, via: Via | None, turn_penalty: TurnPenalty | None) -> Route:
     """PreparedChart.route with via points and/or a turn penalty: one search per leg, each
     optimal between consecutive points; with a turn penalty, a leg starts with the previous
     leg's last step, so the course change at a via point is charged. A time model's next leg

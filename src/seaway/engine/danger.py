@@ -6,8 +6,10 @@ listed. Called by seaway.weather.route_time (cpp/seaway/danger_time.hpp searches
 from __future__ import annotations
 
 import dataclasses
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from ..base.interrupt import interruptible
@@ -18,11 +20,19 @@ from ..result.stats import Danger, DangerLeg
 from .methods import heuristic_weight
 from .result import Search, to_route
 
+if TYPE_CHECKING:
+    from ..models.forecast import TravelTime
+    from ..result.route import Route
+    from .constrained import Point
+    from .prepared import PreparedChart
 
-def danger_stretches(route, danger_h, start_h) -> tuple[DangerLeg, ...]:
+
+def danger_stretches(route: Route, danger_h: npt.NDArray[np.float64],
+                     start_h: float) -> tuple[DangerLeg, ...]:
     """Consecutive steps in danger merged: where (start, end as lat/lon), when (hours after
     departure) and for how long (hours)."""
     coords = route.coords
+    assert route.step_costs is not None  # a route as found (to_route)
     elapsed = np.concatenate([[0.0], np.cumsum(route.step_costs)]) + start_h
     out, i, n = [], 0, len(danger_h)
     while i < n:
@@ -40,12 +50,14 @@ def danger_stretches(route, danger_h, start_h) -> tuple[DangerLeg, ...]:
     return tuple(out)
 
 
-def least_danger_route(prepared, model, start, end, method):
+def least_danger_route(prepared: PreparedChart, model: TravelTime, start: Point, end: Point,
+                       method: str) -> Route | None:
     """The lexicographic (hours in danger, hours) route under a TravelTime model (its zones
     included), or None when even the hard limits leave no route."""
     fc, vessel = model.forecast, model.vessel
     chart = prepared.chart
     s, e = locate(chart, start, "start"), locate(chart, end, "end")
+    hard: _core.TravelTimeModel | _core.ZonedTravelTimeModel
     hard = _core.TravelTimeModel(fc.engine(), vessel.to_core(danger=False), model.best_speed_kn)
     if model.zones:
         hard = timed_zone_engine(fc, hard, model.zones)

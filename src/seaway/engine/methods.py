@@ -26,6 +26,7 @@ Methods (all exact except weighted A*):
 from __future__ import annotations
 
 import time
+from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
@@ -33,6 +34,11 @@ from ..base.validate import number
 from ..models.base import EDGE_COSTS
 from . import costmodel
 from .result import Search
+
+if TYPE_CHECKING:
+    from .. import _core
+    from ..models.base import CostModel
+    from .prepared import PreparedChart
 
 EDGE_COST_NAMES = tuple(EDGE_COSTS)
 METHODS = ("auto", "dijkstra", "astar", "bidirectional", "landmarks")
@@ -49,7 +55,7 @@ ASTAR_CONTRAST = 2.0
 BIDIRECTIONAL_LANDMARKS = True
 
 
-def check_options(neighbourhood, directions) -> None:
+def check_options(neighbourhood: int, directions: str) -> None:
     """Refuse a stencil size or direction set the engine does not take, naming the fix."""
     if isinstance(neighbourhood, bool) or not isinstance(neighbourhood, (int, np.integer)):
         raise TypeError(f"neighbourhood must be an odd integer from 3 to 15, got {neighbourhood!r}")
@@ -62,7 +68,7 @@ def check_options(neighbourhood, directions) -> None:
         raise ValueError(f"directions must be one of {DIRECTIONS}, got {directions!r}")
 
 
-def heuristic_weight(method, weight) -> float:
+def heuristic_weight(method: str, weight: float | None) -> float:
     """The A* weight of `method` (0 for the methods without one); validates both."""
     if method not in METHODS:
         raise ValueError(f"method must be one of {METHODS}, got {method!r}")
@@ -77,7 +83,8 @@ def heuristic_weight(method, weight) -> float:
         example=1.5)
 
 
-def resolve(prepared, model, method: str, weight=None) -> str:
+def resolve(prepared: PreparedChart, model: CostModel, method: str,
+            weight: float | None = None) -> str:
     """The method that answers the query; refuses a method the model does not allow."""
     if method == "auto" and weight is not None:
         return "astar"
@@ -111,42 +118,51 @@ def resolve(prepared, model, method: str, weight=None) -> str:
 PUBLIC = {"bidirectional A*": "bidirectional", "landmarks one thread": "landmarks"}
 
 
-def refine(prepared, model, method: str, requested: str, s, e) -> str:
+def refine(prepared: PreparedChart, model: CostModel, method: str, requested: str,
+           s: tuple[int, int], e: tuple[int, int]) -> str:
     """The search that answers the query s -> e (located pixels): for "auto" on a chart with
     landmarks, the cheapest by the cost model (seaway.engine.costmodel); else `method`."""
-    if requested != "auto" or method != "landmarks":
+    landmarks = prepared.landmarks_for(model)
+    if requested != "auto" or method != "landmarks" or landmarks is None:
         return method
-    lm = prepared.landmarks_for(model)
-    times = costmodel.estimate(prepared, model, prepared.landmark_sample(model), lm.table, s, e,
-                               low_contrast(prepared))
+    times = costmodel.estimate(prepared, model, prepared.landmark_sample(model), landmarks.table,
+                               s, e, low_contrast(prepared))
     return min(times, key=lambda m: times[m])
 
 
-def search(prepared, engine, s: int, e: int, method: str, weight: float, model, cancel) -> Search:
+def search(prepared: PreparedChart, engine: _core.Model, s: int, e: int, method: str,
+           weight: float, model: CostModel, cancel: _core.CancelToken | None) -> Search:
     """The search between flat pixels s and e by `method` (a public method, or a search the cost
     model names: "bidirectional A*", "landmarks one thread")."""
     router = prepared.router
     method = {"bidirectional A*": "bidirectional"}.get(method, method)
+    # resolve() let "bidirectional" through for static models only, "landmarks" for symmetric
+    # static ones with their tables (the capabilities, which the types cannot see)
     if method == "landmarks one thread":
-        return Search.from_core(router.route_landmarks(engine, prepared.landmarks_for(model), s, e,
-                                                       False, cancel))
+        landmarks = prepared.landmarks_for(model)
+        assert landmarks is not None
+        return Search.from_core(router.route_landmarks(
+            cast("_core.RasterRule", engine), landmarks, s, e, False, cancel))
     if method == "bidirectional":
-        return Search.from_core(router.route_bidirectional(engine, s, e, low_contrast(prepared),
-                                                           cancel))
+        return Search.from_core(router.route_bidirectional(
+            cast("_core.StaticModel", engine), s, e, low_contrast(prepared), cancel))
     if method == "landmarks":
-        return Search.from_core(router.route_landmarks(engine, prepared.landmarks_for(model), s, e,
-                                                       BIDIRECTIONAL_LANDMARKS, cancel))
+        landmarks = prepared.landmarks_for(model)
+        assert landmarks is not None
+        return Search.from_core(router.route_landmarks(
+            cast("_core.RasterRule", engine), landmarks, s, e, BIDIRECTIONAL_LANDMARKS, cancel))
     return Search.from_core(router.route(engine, s, e, weight, cancel))
 
 
-def low_contrast(prepared) -> bool:
+def low_contrast(prepared: PreparedChart) -> bool:
     """The chart's passable costs span at most ASTAR_CONTRAST."""
     lo, hi, _ = prepared.router.cost_range  # found while the chart was prepared
     span = hi / lo if lo > 0 else np.inf
     return span <= ASTAR_CONTRAST
 
 
-def build_landmarks(prepared, count, model, seed_rc, cancel):
+def build_landmarks(prepared: PreparedChart, count: int, model: CostModel, seed_rc: tuple[int, int],
+                    cancel: _core.CancelToken | None) -> tuple[_core.Landmarks, float]:
     """The landmark tables of `model` on `prepared`, and the seconds it took."""
     if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
         raise TypeError(f"landmarks must be an integer from 1 to 64, got {count!r}")
@@ -157,5 +173,6 @@ def build_landmarks(prepared, count, model, seed_rc, cancel):
                          f"not {model.name!r}")
     t0 = time.perf_counter()
     seed = seed_rc[0] * prepared.chart.shape[1] + seed_rc[1]
-    lm = prepared.router.build_landmarks(model.engine(prepared), int(count), int(seed), cancel)
+    engine = cast("_core.RasterRule", model.engine(prepared))  # symmetric and static: checked above
+    lm = prepared.router.build_landmarks(engine, int(count), int(seed), cancel)
     return lm, time.perf_counter() - t0

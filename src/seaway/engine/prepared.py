@@ -7,7 +7,11 @@ constraints) is a method or property of it: `router` (the C++ prepared chart), `
 
 from __future__ import annotations
 
+from collections.abc import Collection, Hashable
+from typing import TYPE_CHECKING, TypedDict
+
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from ..base.interrupt import interruptible
@@ -20,6 +24,23 @@ from . import costmodel, methods
 from .constrained import route_constrained
 from .result import Search, no_route, to_route
 
+if TYPE_CHECKING:
+    import xarray as xr
+
+    from ..constraints import KeepAway, Zone
+    from .constrained import Point, TurnPenalty, Via
+
+
+class LandmarkStats(TypedDict):
+    """What prepare_landmarks() reports (PreparedChart.landmark_stats[model name])."""
+
+    count: int
+    seconds: float
+    bytes: int
+    bytes_per_pixel: float
+    #: The landmarks' (row, col).
+    pixels: list[tuple[int, int]]
+
 
 class PreparedChart:
     """A chart validated and prepared once for many routes, under any cost model.
@@ -30,8 +51,21 @@ class PreparedChart:
     land arrays are read in place: do not modify them while the PreparedChart is in use.
     `edge_cost` is the default model of route() and cost_field()."""
 
-    def __init__(self, cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, neighbourhood=5,
-                 directions="full", edge_cost="max", landmarks=0, keep_away=(), zones=()):
+    chart: Chart
+    model: CostModel
+    neighbourhood: int
+    directions: str
+    router: _core.Router
+    landmark_stats: dict[str, LandmarkStats]
+    _landmarks: dict[str, _core.Landmarks]
+    _dims: tuple[Hashable, ...] | None
+
+    def __init__(self, cost: npt.ArrayLike | xr.DataArray, *, lat: npt.ArrayLike | None = None,
+                 lon: npt.ArrayLike | None = None, dx: float = 1.0, dy: float = 1.0,
+                 land: npt.ArrayLike | xr.DataArray | None = None, neighbourhood: int = 5,
+                 directions: str = "full", edge_cost: str = "max", landmarks: int = 0,
+                 keep_away: KeepAway | Collection[KeepAway] = (),
+                 zones: Zone | Collection[Zone] = ()) -> None:
         methods.check_options(neighbourhood, directions)
         model = EdgeCost(edge_cost)
         if keep_away or zones:  # rasterised once, with the chart (seaway.constraints)
@@ -44,8 +78,8 @@ class PreparedChart:
             self.prepare_landmarks(landmarks)
 
     @classmethod
-    def from_chart(cls, chart: Chart, neighbourhood, directions, model: CostModel,
-                   land_rule="segment") -> PreparedChart:
+    def from_chart(cls, chart: Chart, neighbourhood: int, directions: str, model: CostModel,
+                   land_rule: str = "segment") -> PreparedChart:
         """A prepared chart from a validated Chart, with engine options the public API does not
         offer ("axis" directions, the "pixel" land rule: seaway.compat)."""
         self = cls.__new__(cls)
@@ -53,7 +87,8 @@ class PreparedChart:
         self._dims = None
         return self
 
-    def _setup(self, chart, neighbourhood, directions, model, land_rule):
+    def _setup(self, chart: Chart, neighbourhood: int, directions: str, model: CostModel,
+               land_rule: str) -> None:
         check_tiny(chart, neighbourhood)
         self.chart, self.model = chart, model
         self.neighbourhood, self.directions = neighbourhood, directions
@@ -61,7 +96,8 @@ class PreparedChart:
                                         directions, land_rule)
         self._landmarks, self._samples, self.landmark_stats = {}, {}, {}
 
-    def prepare_landmarks(self, count=8, *, model=None) -> dict:
+    def prepare_landmarks(self, count: int = 8, *,
+                          model: CostModel | str | None = None) -> LandmarkStats:
         """Tabulate the least costs from `count` landmark pixels (float32, 4 bytes per pixel
         each) for `model` (default the chart's edge_cost), so that method="landmarks" (and
         "auto") answers later queries by A* with the landmark bound. Returns the stats:
@@ -75,12 +111,12 @@ class PreparedChart:
         self._landmarks[model.name] = lm
         self._samples[model.name] = costmodel.make_sample(lm.table, self.chart.shape[1])
         px = [divmod(int(p), self.chart.shape[1]) for p in lm.pixels]
-        self.landmark_stats[model.name] = stats = dict(
+        self.landmark_stats[model.name] = stats = LandmarkStats(
             count=len(px), seconds=seconds, bytes=lm.bytes, bytes_per_pixel=lm.bytes / self.chart.values.size,
             pixels=px)
         return stats
 
-    def landmarks_for(self, model: CostModel):
+    def landmarks_for(self, model: CostModel) -> _core.Landmarks | None:
         """The landmark tables prepared for `model`, or None."""
         return self._landmarks.get(model.name)
 
@@ -93,18 +129,20 @@ class PreparedChart:
         """The name of the default model."""
         return self.model.name
 
-    def flat(self, rc) -> int:
+    def flat(self, rc: tuple[int, int]) -> int:
         """The flat index of pixel (row, col)."""
         return rc[0] * self.chart.shape[1] + rc[1]
 
-    def search(self, s, e, weight, model: CostModel, method="astar") -> Search:
+    def search(self, s: tuple[int, int], e: tuple[int, int], weight: float, model: CostModel,
+               method: str = "astar") -> Search:
         """The search between two located pixels (cost inf if unreachable)."""
         engine = model.engine(self)
         return interruptible(lambda cancel: methods.search(self, engine, self.flat(s), self.flat(e),
                                                            method, weight, model, cancel))
 
-    def route(self, start, end, *, model=None, method="auto", weight=None, via=(),
-              turn_penalty=None) -> Route:
+    def route(self, start: Point, end: Point, *, model: CostModel | str | None = None,
+              method: str = "auto", weight: float | None = None, via: Via | None = (),
+              turn_penalty: TurnPenalty | None = None) -> Route:
         """The least-cost route from `start` to `end` under `model` (a seaway.models.CostModel
         or an edge-cost name; default the chart's edge_cost), through the `via` points in order
         and with an optional turn penalty (seaway.engine.constrained). See seaway.route."""
@@ -122,7 +160,8 @@ class PreparedChart:
             raise no_route(self, model, (("start", s), ("end", e)))
         return model.finish(to_route(self, found, model, methods.PUBLIC.get(used, used)), found.per_step)
 
-    def cost_field(self, start, *, model=None):
+    def cost_field(self, start: Point, *,
+                   model: CostModel | str | None = None) -> npt.NDArray[np.float64] | xr.DataArray:
         """The accumulated least cost from `start` to every pixel (inf where unreachable) under
         `model` (default the chart's edge_cost); a DataArray chart gives a DataArray, in the
         dimension order it came in."""

@@ -36,7 +36,7 @@ from .impact import ICE_IMPACT, chart_impact, ice_impact
 
 #: The modules that route (they import the engine, which imports the formulas above): loaded on
 #: first use, so that the cost models can read the ice classes without a cycle.
-_ROUTING = ("pareto", "season", "summary")
+_ROUTING = ("pareto", "season", "summary", "noroute")
 
 
 def __getattr__(name):
@@ -44,5 +44,6 @@ def __getattr__(name):
         return importlib.import_module(f"{__name__}.{name}")
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
-__all__ = ["andreeva", "classes", "codes", "impact", "polaris", "pareto", "season", "summary", "CLASSES",
+__all__ = ["andreeva", "classes", "codes", "impact", "polaris", "pareto", "season", "summary",
+           "noroute", "CLASSES",
            "IceClass", "class_names", "get_class", "ICE_IMPACT", "ice_impact", "chart_impact"]

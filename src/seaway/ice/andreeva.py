@@ -23,6 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..base.units import KM_PER_NM
+from .codes import STAGE_CODES
 
 NSR_K = 0.006  # Andreeva 2021: largest vertical roughness index at 95 % on the NSR
 
@@ -67,6 +68,20 @@ def f2(thickness, h_pass):
     h = np.asarray(thickness, dtype=float)
     f = np.where(h < h_pass, 1.0 - h / h_pass, 0.0)
     return np.clip(np.nan_to_num(f, nan=0.0), 0.0, 1.0)
+
+
+def stage_thickness(stage, rule="upper") -> np.ndarray:
+    """Typical thickness h (m) of WMO stage codes (seaway.ice.codes.STAGE_CODES): the upper end of
+    the WMO-No. 259 range ("upper", conservative: thick first-year 2.0 m) or its middle ("mid");
+    0 for ice free (55); NaN for stages without a thickness (old ice, glacier ice, unknown), so
+    f2 = 0 there; multi-year ice (no upper end) gives inf."""
+    if rule not in ("upper", "mid"):
+        raise ValueError(f"rule must be 'upper' or 'mid', got {rule!r}")
+    codes = np.asarray(getattr(stage, "values", stage), dtype=float)
+    h = np.full(codes.shape, np.nan)
+    for code, (_, (lo, hi)) in STAGE_CODES.items():
+        h[codes == code] = hi if rule == "upper" else 0.5 * (lo + hi)
+    return h
 
 
 def f3(lane_width, fairway_width):

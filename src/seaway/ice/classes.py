@@ -58,7 +58,7 @@ def _rs(name, conc, h, pc, pc_assumed=True):
     return IceClass(name, "RS", h, conc, name, pc, ("polaris_class",) if pc_assumed else ())
 
 
-#: Every class, by canonical name, weakest first within each system.
+#: Every class (IceClass), by canonical name, weakest first within each system.
 CLASSES = {c.name: c for c in [
     IceClass("none", "none", 0.0, 0.0, "none", "not ice strengthened"),
     # Russian Register, Grinyak et al. 2022 Table 1.

@@ -170,5 +170,6 @@ def stage_rank(code: float) -> int:
 
 def thickest_first_year(codes) -> float | None:
     """The most severe first-year stage (FIRST_YEAR, by SEVERITY) among `codes`, or None."""
-    present = {int(c) for c in np.asarray(codes, float).ravel() if math.isfinite(c)} & set(FIRST_YEAR)
+    values = np.asarray(codes, float)
+    present = [c for c in FIRST_YEAR if (values == c).any()]  # vectorised: charts are large
     return float(max(present, key=SEVERITY.index)) if present else None

@@ -7,14 +7,18 @@ chart: by total concentration (CT, for charts whose stage of development is fair
 e.g. Arctic summer) and by stage of development (SoD, for charts of high, fairly uniform
 concentration, e.g. Arctic winter). Stage codes are SIGRID-3's (seaway.ice.codes).
 
-Checked (2026-12, issue 13): the concentration RGB values of ice free 0-100-255, < 1/10
+Checked (2026-12): the concentration RGB values of ice free 0-100-255, < 1/10
 150-200-255, 1-3/10 140-255-160 and 4-6/10 255-255-0 against the approved proposal's colour
 table (J. Falkingham for the IICWG colour sub-group, "Ice Chart Colour Standard", JCOMM ETSI,
 October 2002); the class names and colours (orange 7-8/10, red 9-10/10, grey fast ice) against
 Environment Canada's "Interpreting ice charts", chapter 2. The 7-8/10 value 255-125-7 and the
 stage-of-development RGB values below are the standard's as recalled, NOT yet checked against
-the TR-24 table itself (it was not reachable from here). Fast ice (grey) needs a form-of-ice
-attribute that a raster chart here does not carry, so it is not drawn.
+the TR-24 table itself (it was not reachable from here).
+
+Fast ice is grey in both codes (Environment Canada, chapter 2: "Grey: fast ice"; 150-150-150 in
+the IICWG proposal, J. Falkingham 2001): `classes(..., fast=mask)` draws the pixels whose form of
+ice is fast ice (SIGRID-3 FA 08) so, over their stage or concentration colour. Land on the maps
+is therefore not grey (seaway.output.style.LAND_COLOUR).
 """
 
 from __future__ import annotations
@@ -54,6 +58,7 @@ STAGE_RGB = {
     97: (200, 0, 0),       # multi-year ice
 }
 UNDEFINED = ("undefined ice", (255, 255, 255))
+FAST_ICE = ("fast ice", (150, 150, 150))
 
 
 def tenths(concentration) -> np.ndarray:
@@ -68,13 +73,21 @@ def tenths(concentration) -> np.ndarray:
     return c
 
 
-def classes(ice, code: str):
+def classes(ice, code: str, fast=None):
     """Classify an ice raster for a map: (index array with -1 where there is no value,
     [(label, (r, g, b)), ...] of the classes the index refers to).
 
     code: "concentration" (values in tenths, percent or a fraction) or "stage" (SIGRID-3
-    stage-of-development codes)."""
-    values = np.asarray(ice, float)
+    stage-of-development codes). fast: optional mask of fast ice (form FA 08), drawn as fast
+    ice whatever its stage or concentration."""
+    index, table = _classes(np.asarray(ice, float), code)
+    if fast is not None and np.asarray(fast, bool).any():
+        index[np.asarray(fast, bool)] = len(table)
+        table.append(FAST_ICE)
+    return index, table
+
+
+def _classes(values, code):
     index = np.full(values.shape, -1, np.int16)
     if code == "concentration":
         t = tenths(values)

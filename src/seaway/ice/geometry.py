@@ -92,6 +92,7 @@ def fix_lonlat(geom):
 
 
 def fix_planar(geom):
+    """A valid polygon for a planar geometry (repaired with shapely.make_valid; empty for None)."""
     import shapely
 
     if geom is None or geom.is_empty:

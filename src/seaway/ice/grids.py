@@ -27,10 +27,12 @@ class Grid:
 
     @property
     def geographic(self) -> bool:
+        """True for a lat/lon grid, False for a projected one (y/x in km)."""
         return self.crs == GEOGRAPHIC
 
     @property
     def shape(self) -> tuple:
+        """(rows, cols)."""
         return (len(self.y), len(self.x))
 
     @property
@@ -47,6 +49,7 @@ class Grid:
         return (dx, 0.0, x0, 0.0, dy, y0)
 
     def dims(self) -> tuple:
+        """The dimension names: ("lat", "lon") or ("y", "x")."""
         return ("lat", "lon") if self.geographic else ("y", "x")
 
     def coords(self) -> dict:

@@ -60,7 +60,7 @@ def derive_table(ice_class) -> dict:
     return table
 
 
-#: Impact tables by class name: every RS class and 'none' (derived; Arc7 and Arc5 are the
+#: Impact tables by class name, for every RS class and 'none' (derived; Arc7 and Arc5 are the
 #: paper's tables exactly). Other classes use their RS equivalent's entry unless you add one.
 ICE_IMPACT = {name: derive_table(name) for name in class_names("RS") + ["none"]}
 

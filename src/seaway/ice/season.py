@@ -1,4 +1,4 @@
-"""A season of ice charts: routes through ice that changes during the voyage (issue 10).
+"""A season of ice charts: routes through ice that changes during the voyage.
 
 A season is an ice chart Dataset (see seaway.ice) with a `time` dimension: CT (tenths) with SA
 (WMO stage) and/or `thickness` (m), and `land`. Build one from SIGRID-3 files with their dates
@@ -28,6 +28,10 @@ Speed of a class in a chart's ice (knots), `speed=`:
   `other_factor` is f1 * f3 (1 by default; e.g. andreeva.f1(draft, depth) for depth).
 * a table {WMO stage: knots} or {stage: {max CT tenths: knots, ...}} read on the governing stage
   (55 ice free, 99 unknown) and total concentration; a stage the table lacks raises.
+* "class": the class's own model (seaway.ice.speed): Andreeva 2021 as above for Register classes,
+  the IMO POLARIS speed limits for Polar and Finnish-Swedish classes (V0 in normal operation,
+  the circular's limit under elevated risk, closed under special consideration: POLARIS's
+  levels are then the class's limits, the concentration limit is not applied).
 Either way, unknown ice (NaN CT, stage 99, old ice without a thickness), land and pixels off the
 chart are closed, and with `concentration_limit=True` (default) so is ice above the class's
 independent-navigation concentration (Grinyak et al. 2022 Table 1: Arc4-Arc6 6/10, Arc7-Arc8 8/10).
@@ -35,7 +39,11 @@ independent-navigation concentration (Grinyak et al. 2022 Table 1: Arc4-Arc6 6/1
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
+import numpy.typing as npt
 import xarray as xr
 
 from ..base.files import open_netcdf
@@ -45,11 +53,25 @@ from ..engine.prepared import PreparedChart
 from ..models import EdgeCost, IceSeasonTime
 from . import andreeva
 from .classes import get_class
-from .codes import ICE_FREE, STAGE_CODES
+from .codes import ICE_FREE
 from .impact import governing_stage
 from .sigrid import read_sigrid3
+from .speed import ice_speed
 
-__all__ = ["read_season", "as_season", "SeasonGrid", "andreeva_speed_kn", "table_speed_kn",
+if TYPE_CHECKING:
+    import datetime
+    import os
+
+    from . import classes  # classes.IceClass: one name in the API pages (seaway.ice re-exports it)
+
+    #: A season: its Dataset or a NetCDF file of it.
+    SeasonLike = xr.Dataset | str | os.PathLike[str]
+    #: A departure: a date numpy.datetime64 takes (None: the season's first chart).
+    Departure = str | datetime.date | np.datetime64 | None
+    #: Speeds by WMO stage: {stage: knots} or {stage: {max CT tenths: knots}}.
+    SpeedTable = Mapping[float, float | Mapping[float, float]]
+
+__all__ = ["read_season", "as_season", "SeasonGrid", "andreeva_speed_kn", "table_speed_kn", "class_speed_kn",
            "route_season", "arrival_field"]
 
 
@@ -126,10 +148,7 @@ def andreeva_speed_kn(frame, ice_class, v0_kn, *, h_pass_m=None, stage_thickness
     else:
         if stage_thickness not in ("upper", "mid"):
             raise ValueError(f"stage_thickness must be 'upper' or 'mid', got {stage_thickness!r}")
-        stage = governing_stage(frame).values
-        h = np.full(ct.shape, np.nan)
-        for code, (_, (lo, hi)) in STAGE_CODES.items():
-            h[stage == code] = hi if stage_thickness == "upper" else 0.5 * (lo + hi)
+        h = andreeva.stage_thickness(governing_stage(frame), stage_thickness)
     h = np.where(ct == 0, 0.0, h)
     speed = andreeva.f2(h, h_pass) * np.asarray(other_factor, dtype=float) * v0_kn
     return np.where(_closed(frame, ct, ice_class, concentration_limit), 0.0, speed)
@@ -161,12 +180,24 @@ def table_speed_kn(frame, ice_class, table, *, concentration_limit=True) -> np.n
     return np.where(_closed(frame, ct, ice_class, concentration_limit), 0.0, speed)
 
 
+def class_speed_kn(frame, ice_class, v0_kn, *, concentration_limit=True, **options) -> np.ndarray:
+    """The class's own model on one chart (knots; 0 where closed): seaway.ice.speed's Andreeva
+    2021 for Register classes (with the concentration limit), IMO POLARIS for the others."""
+    if get_class(ice_class).system in ("RS", "none"):
+        return andreeva_speed_kn(frame, ice_class, v0_kn, concentration_limit=concentration_limit, **options)
+    if "SA" not in frame:
+        raise ValueError(f"POLARIS ({get_class(ice_class).name}) reads the stages of the ice (SA); "
+                         "the season has none: give a Register class, or speed='andreeva'")
+    v = np.asarray(ice_speed(frame, ice_class, v0_kn).values, float)
+    return np.where(_closed(frame, np.asarray(frame["CT"].values, float), ice_class, False), 0.0, v)
+
+
 class SeasonGrid:
     """A season of ice charts on one grid: the chart to route on (prepare()) and, for a class,
     speed and departure, the engine's frames (hours_per_km()). One prepared chart serves every
     class and departure; land is where every chart (or `land`) has land or no chart."""
 
-    def __init__(self, season, land=None):
+    def __init__(self, season: SeasonLike, land: npt.ArrayLike | xr.DataArray | None = None) -> None:
         self.ds = as_season(season)
         self.times = self.ds["time"].values
         ct = self.ds["CT"]
@@ -213,18 +244,22 @@ class SeasonGrid:
                              "or add charts that cover the departure")
         return dep, int(np.searchsorted(t, dep, side="right")) - 1
 
-    def hours_per_km(self, ice_class, v0_kn, departure=None, speed="andreeva", **speed_options):
+    def hours_per_km(self, ice_class: str | classes.IceClass, v0_kn: float, departure: Departure = None,
+                     speed: str | SpeedTable = "andreeva", **speed_options: Any
+                     ) -> tuple[npt.NDArray[np.float32], npt.NDArray[np.float64], np.datetime64]:
         """(hours per km float32 (frames, rows, cols) from the chart valid at departure on, inf
         where closed; validity of each in hours after departure; departure)."""
         if not (np.isfinite(v0_kn) and v0_kn > 0):
             raise ValueError(f"v0_kn must be a positive speed in knots, got {v0_kn!r}")
         dep, k0 = self.departure_frames(departure)
-        if not (callable(getattr(speed, "get", None)) or (isinstance(speed, str) and speed == "andreeva")):
-            raise ValueError(f"speed must be 'andreeva' or a table {{stage: knots}}, got {speed!r}")
+        if not (callable(getattr(speed, "get", None)) or (isinstance(speed, str) and speed in ("andreeva", "class"))):
+            raise ValueError(f"speed must be 'andreeva', 'class' or a table {{stage: knots}}, got {speed!r}")
         hours = np.empty((self.times.size - k0,) + self.shape, np.float32)
         for i, k in enumerate(range(k0, self.times.size)):  # frame by frame: no 7-frame float64 copies
             frame = self.ds.isel(time=k)
-            if isinstance(speed, str):
+            if speed == "class":
+                v = class_speed_kn(frame, ice_class, v0_kn, **speed_options)
+            elif isinstance(speed, str):
                 v = andreeva_speed_kn(frame, ice_class, v0_kn, **speed_options)
             else:
                 v = table_speed_kn(frame, ice_class, speed, **speed_options)

@@ -7,7 +7,7 @@ route_fuel and route_safest build a model and call it."""
 
 from .base import EDGE_COSTS, CostModel, EdgeCost, EnteredPixel, TurnPenalised, as_model
 from .forecast import Fuel, TravelTime, WaveDanger
-from .season import IceSeasonTime
+from .season import IceSeasonTime, IceWeatherTime
 
-__all__ = ["EDGE_COSTS", "CostModel", "EdgeCost", "EnteredPixel", "Fuel", "IceSeasonTime",
+__all__ = ["EDGE_COSTS", "CostModel", "EdgeCost", "EnteredPixel", "Fuel", "IceSeasonTime", "IceWeatherTime",
            "TravelTime", "TurnPenalised", "WaveDanger", "as_model"]

@@ -12,15 +12,21 @@ with its entry in `Models`, its class in cpp/register_models.cpp, and a CostMode
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Any, Protocol, TypeVar
+
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from ..chart.legs import Segments
 from .results import StepValues
 
+if TYPE_CHECKING:
+    from ..chart.raster import Chart
+
 #: The static edge costs over a raster of cost per unit length: name -> engine class. The
 #: public list: the API, the CLI choices and the error texts come from it.
-EDGE_COSTS = {
+EDGE_COSTS: dict[str, type[_core.RasterRule]] = {
     "max": _core.MaxCost,  # Grinyak et al. 2022: max(u_i, u_j) x length
     "mean": _core.MeanCost,  # Grinyak et al. 2018: (u_i + u_j) / 2 x length
     "integral": _core.IntegralCost,  # the exact line integral along the step
@@ -28,6 +34,39 @@ EDGE_COSTS = {
 }
 _PAIR_COSTS = {"max": _core.max_pair_costs, "mean": _core.mean_pair_costs,
                "length": _core.length_pair_costs}
+
+
+class Prepared(Protocol):
+    """What a model reads of a prepared chart (seaway.engine.PreparedChart, a layer above)."""
+
+    @property
+    def chart(self) -> Chart: ...
+    @property
+    def neighbourhood(self) -> int: ...
+
+
+class FoundRoute(Protocol):
+    """What a model reads and sets of a route as the search found it (seaway.result.route.Route,
+    a layer above), when it finishes it."""
+
+    @property
+    def cost(self) -> float: ...
+    @property
+    def pixels(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def coords(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def step_costs(self) -> npt.NDArray[np.float64] | None: ...
+    def costs(self) -> npt.NDArray[np.float64]: ...
+
+    speed_kn: float | None
+    #: seaway.result.stats.RouteStats (a layer above): a model replaces its `voyage` or `fuel`
+    #: with dataclasses.replace.
+    stats: Any
+
+
+#: The route a model finishes: a Route, given back as it came with the model's results added.
+RouteT = TypeVar("RouteT", bound=FoundRoute)
 
 
 class CostModel:
@@ -60,25 +99,26 @@ class CostModel:
         """The unit of a route's cost under this model."""
         raise NotImplementedError
 
-    def engine(self, prepared):
+    def engine(self, prepared: Prepared) -> _core.Model:
         """The seaway._core model object for `prepared` (a PreparedChart); validates the pair."""
         raise NotImplementedError
 
-    def check_ends(self, prepared, start, end):
+    def check_ends(self, prepared: Prepared, start: tuple[int, int],
+                   end: tuple[int, int] | None) -> None:
         """Refuse a start or end pixel (row, col; end None for a cost field) this model can
         never use, naming why and the fix; the chart has checked land already."""
 
-    def finish(self, route, per_step: StepValues):
+    def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
         """The Route with what this model adds: its typed result built from the per-step values
         (seaway.models.results: a Voyage or FuelUse, put in route.stats with
         dataclasses.replace) and its speed."""
         return route
 
-    def no_route(self, where: str, prepared) -> str:
+    def no_route(self, where: str, prepared: Prepared) -> str:
         """The NoRouteError message; `where` names the start and end pixels."""
         return f"no route {where} under the {self.name} model"
 
-    def segments(self, chart, neighbourhood: int):
+    def segments(self, chart: Chart, neighbourhood: int) -> Segments:
         """Pricing and land test of arbitrary legs on `chart` (seaway.chart.legs)."""
         raise ValueError(
             f"the {self.name!r} model prices only the engine's steps, not arbitrary straight legs "
@@ -95,36 +135,46 @@ class EdgeCost(CostModel):
 
     static = symmetric = turn_penalty = smoothable = True
 
-    def __init__(self, rule: str = "max"):
+    def __init__(self, rule: str = "max") -> None:
         if rule not in EDGE_COSTS:
             raise ValueError(f"edge_cost must be one of {tuple(EDGE_COSTS)}, got {rule!r}")
         self.name = rule
 
-    def unit(self, geographic):
+    def unit(self, geographic: bool) -> str:
         length = "km" if geographic else "grid unit"
         return length if self.name == "length" else f"cost x {length}"  # length: r alone
 
-    def engine(self, prepared):
+    def engine(self, prepared: Prepared) -> _core.StaticModel:
         return EDGE_COSTS[self.name](prepared.chart.values)
 
-    def no_route(self, where, prepared):
+    def no_route(self, where: str, prepared: Prepared) -> str:
         k = prepared.neighbourhood
-        return (f"no route {where}: no chain of passable steps joins them with neighbourhood={k} "
-                "(separate water bodies, or a passage narrower than the land rule allows); try a "
-                "larger neighbourhood, check the land mask, or choose another end point")
+        chart = prepared.chart
+        closed = ~np.isfinite(chart.values) if chart.land is None else (
+            ~np.isfinite(chart.values) & (chart.land == 0))
+        if chart.land is not None and not closed.any():  # only the land can part them
+            return (f"no route {where}: no chain of passable steps joins them with neighbourhood="
+                    f"{k} (separate water bodies, or a passage narrower than the land rule allows); "
+                    "try a larger neighbourhood, check the land mask, or choose another end point")
+        return (f"no route {where}: no chain of passable steps joins them with neighbourhood={k}: "
+                "impassable pixels keep them apart (land, or a cost of inf or NaN, such as ice the "
+                "vessel may not enter), or a passage is narrower than the land rule allows; "
+                "seaway.engine.reach.explain_no_route (seaway.ice.noroute for ice charts) says "
+                "which, and how far the ship gets")
 
-    def segments(self, chart, neighbourhood):
+    def segments(self, chart: Chart, neighbourhood: int) -> Segments:
         return Segments(chart, EDGE_COSTS[self.name](chart.values), neighbourhood)
 
-    def pair_costs(self, a, b, length) -> np.ndarray:
+    def pair_costs(self, a: npt.ArrayLike, b: npt.ArrayLike,
+                   length: npt.ArrayLike) -> npt.NDArray[np.float64]:
         """Cost of steps of `length` between pixels of costs a and b, from the engine's rule
         ("integral" between two pixel centres: the mean rule, its value on axis steps)."""
         return _PAIR_COSTS.get(self.name, _core.mean_pair_costs)(a, b, length)
 
-    def __eq__(self, other):
+    def __eq__(self, other: object) -> bool:
         return isinstance(other, EdgeCost) and other.name == self.name
 
-    def __hash__(self):
+    def __hash__(self) -> int:
         return hash(("EdgeCost", self.name))
 
 
@@ -133,13 +183,13 @@ class EnteredPixel(EdgeCost):
 
     symmetric = turn_penalty = smoothable = False
 
-    def __init__(self):
+    def __init__(self) -> None:
         self.name = "entered"
 
-    def engine(self, prepared):
+    def engine(self, prepared: Prepared) -> _core.EnteredPixelCost:
         return _core.EnteredPixelCost(prepared.chart.values)
 
-    def segments(self, chart, neighbourhood):
+    def segments(self, chart: Chart, neighbourhood: int) -> Segments:
         return CostModel.segments(self, chart, neighbourhood)
 
 
@@ -150,14 +200,14 @@ class TurnPenalised(EdgeCost):
     smoothable = False
     turn_penalty = False  # it holds its penalties already
 
-    def segments(self, chart, neighbourhood):
+    def segments(self, chart: Chart, neighbourhood: int) -> Segments:
         raise ValueError(
             "a turn-penalty route's cost includes its turn penalties, which smoothing cannot "
             "price along new legs; use the route as found, or smooth a route found without "
             "turn_penalty")
 
 
-def as_model(model) -> CostModel:
+def as_model(model: CostModel | str) -> CostModel:
     """A CostModel from a model or an edge-cost name."""
     if isinstance(model, CostModel):
         return model

@@ -4,22 +4,54 @@ and wave danger (Olovyannikov 2025, Grinyak et al. 2018 and Sotnikova 2009)."""
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Iterable, Mapping, Sequence
+from typing import Protocol, cast
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from ..base.validate import number
 from ..chart.cf import STANDARD_NAMES
-from ..constraints import timed_zone_engine
+from ..constraints import Zone, timed_zone_engine
+from ..constraints.timed import TimedGrid
 from ..vessel import Vessel
-from .base import CostModel
-from .results import FuelUse, Voyage
+from .base import CostModel, Prepared, RouteT
+from .results import FuelUse, StepValues, Voyage
+
+
+class WeatherGrid(TimedGrid, Protocol):
+    """What the weather models read of a forecast (seaway.weather.ForecastGrid, a layer above):
+    float32 (frames, rows, cols) fields by role, the grid's shape, the engine's forecast."""
+
+    @property
+    def arrays(self) -> Mapping[str, npt.NDArray[np.float32]]: ...
+    @property
+    def shape(self) -> tuple[int, ...]: ...
+    def engine(self) -> _core.Forecast: ...
+    def best_extra_kn(self, vessel: Vessel, slowest_kn: float | None = None) -> float: ...
+    def describe(self) -> str: ...
+    def assumed(self, arrival: np.datetime64 | None) -> list[str]: ...
+    def frame_at(self, hours: float, roles: Sequence[str]) -> WeatherGrid: ...
+    def later(self, hours: float) -> WeatherGrid: ...
+
+
+class FuelRates(Protocol):
+    """A fuel curve (seaway.weather.FuelCurve, a layer above): fuel rate (t/h) at each engine
+    setting (calm-water speed, kn)."""
+
+    @property
+    def speeds_kn(self) -> Sequence[float]: ...
+    @property
+    def rates_t_per_h(self) -> Sequence[float]: ...
 
 
 class _OnForecast(CostModel):
     """A model whose fields come from a forecast (seaway.weather.ForecastGrid) on the chart's grid."""
 
-    def _check_chart(self, prepared):
+    forecast: WeatherGrid
+
+    def _check_chart(self, prepared: Prepared) -> None:
         if not prepared.chart.geographic:
             raise ValueError(f"the {self.name!r} model needs a lat/lon chart")
         if prepared.chart.shape != self.forecast.shape:
@@ -35,15 +67,18 @@ class TravelTime(_OnForecast):
     name = "time"
     time_dependent = chainable = True
 
-    def __init__(self, forecast, vessel: Vessel | None = None, zones=()):
+    def __init__(self, forecast: WeatherGrid, vessel: Vessel | None = None,
+                 zones: Zone | Iterable[Zone] = ()) -> None:
         vessel = Vessel() if vessel is None else vessel
-        vessel.check()
+        vessel.check(waves="wave_height" in forecast.arrays)
         if "wave_height" in forecast.arrays:
             vessel.check_waves(float(forecast.arrays["wave_height"].max()))
         self.forecast, self.vessel = forecast, vessel
         self.best_speed_kn = vessel.speed_kn + forecast.best_extra_kn(vessel)
+        self._engine: _core.TravelTimeModel | _core.ZonedTravelTimeModel
         self._engine = _core.TravelTimeModel(forecast.engine(), vessel.to_core(), self.best_speed_kn)
-        self.zones = (zones,) if hasattr(zones, "geometry") else tuple(zones)
+        self.zones: tuple[Zone, ...] = ((cast(Zone, zones),) if hasattr(zones, "geometry")
+                                        else tuple(zones))
         if self.zones:  # exclusions, open or closed in time windows (seaway.constraints)
             self._engine = timed_zone_engine(forecast, self._engine, self.zones)
 
@@ -52,27 +87,30 @@ class TravelTime(_OnForecast):
         route through via points)."""
         return TravelTime(self.forecast.later(hours), self.vessel, self.zones)
 
-    def unit(self, geographic):
+    def unit(self, geographic: bool) -> str:
         return "h"
 
-    def engine(self, prepared):
+    def engine(self, prepared: Prepared) -> _core.TravelTimeModel | _core.ZonedTravelTimeModel:
         self._check_chart(prepared)
         return self._engine
 
-    def finish(self, route, per_step):
+    def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
         """The route's Voyage (departure and arrival when the forecast has a time axis; waits
         for zones to open, per step: none without zones, unreported by the least-danger
         fallback, which gives no per-step values) and the vessel's speed."""
         wait_h = per_step.wait_h
         if wait_h is None and not self.zones:
             wait_h = np.zeros(len(route.costs()))
-        voyage = Voyage.along(route.cost, route.costs(), wait_h, self.forecast.departure,
-                              pixels=route.pixels, coords=route.coords)
+        fc = self.forecast
+        voyage = Voyage.along(route.cost, route.costs(), wait_h, fc.departure,
+                              pixels=route.pixels, coords=route.coords,
+                              forecast=fc.describe())
+        voyage = dataclasses.replace(voyage, assumptions=tuple(fc.assumed(voyage.arrival)))
         route.stats = dataclasses.replace(route.stats, voyage=voyage)
         route.speed_kn = self.vessel.speed_kn
         return route
 
-    def no_route(self, where, prepared):
+    def no_route(self, where: str, prepared: Prepared) -> str:
         return (f"no route {where} within the vessel's wind and wave limits (and danger zones) "
                 "of this forecast; try a later departure, other limits or another end point")
 
@@ -83,35 +121,47 @@ class Fuel(_OnForecast):
 
     name = "fuel"
 
-    def __init__(self, forecast, vessel: Vessel, fuel, time_value_t_per_h=0.0, at_hours=0.0):
+    def __init__(self, forecast: WeatherGrid, vessel: Vessel, fuel: FuelRates,
+                 time_value_t_per_h: float = 0.0, at_hours: float = 0.0) -> None:
         vessel.check()
         number(time_value_t_per_h, "time_value_t_per_h", minimum=0, what="a number >= 0")
         number(at_hours, "at_hours")
         self.forecast, self.vessel, self.fuel = forecast, vessel, fuel
-        self.time_value_t_per_h = float(time_value_t_per_h)
+        self.time_value_t_per_h, self.at_hours = float(time_value_t_per_h), float(at_hours)
         frame = forecast.frame_at(at_hours, ("current_east", "current_north", "wave_height",
                                              "wave_from", "wind_speed"))
         self._engine = _core.FuelModel(frame.engine(), vessel.to_core(), list(fuel.speeds_kn),
                                        list(fuel.rates_t_per_h), self.time_value_t_per_h,
                                        frame.best_extra_kn(vessel))
 
-    def unit(self, geographic):
+    def unit(self, geographic: bool) -> str:
         return "t (fuel + time value x h)"
 
-    def engine(self, prepared):
+    def engine(self, prepared: Prepared) -> _core.FuelModel:
         self._check_chart(prepared)
         return self._engine
 
-    def finish(self, route, per_step):
+    def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
         """The route's FuelUse: fuel, hours and the engine setting of each step."""
+        # the fuel search reports all three (FuelModel, cpp/models.hpp)
+        assert per_step.setting is not None and per_step.fuel_t is not None
+        assert per_step.hours is not None
         setting = per_step.setting.astype(np.int64)
         use = FuelUse(fuel_t=float(np.sum(per_step.fuel_t)), hours=float(np.sum(per_step.hours)),
                       speeds_kn=np.asarray(self.fuel.speeds_kn, dtype=np.float64)[setting],
                       time_value_t_per_h=self.time_value_t_per_h)
-        route.stats = dataclasses.replace(route.stats, fuel=use)
+        fc, hours = self.forecast, np.asarray(per_step.hours, dtype=np.float64)
+        departure = None if fc.departure is None else fc.departure + np.timedelta64(
+            int(round(self.at_hours * 3.6e12)), "ns")
+        voyage = Voyage.along(use.hours, hours, np.zeros(hours.size), departure, pixels=route.pixels,
+                              coords=route.coords, forecast=fc.describe())
+        said = (f"the fuel route reads the weather of one forecast frame, the one valid nearest "
+                f"{self.at_hours:g} h after the forecast's first time, for the whole voyage",)
+        voyage = dataclasses.replace(voyage, step_h=hours, assumptions=said)
+        route.stats = dataclasses.replace(route.stats, fuel=use, voyage=voyage)
         return route
 
-    def no_route(self, where, prepared):
+    def no_route(self, where: str, prepared: Prepared) -> str:
         return f"no route {where} at any engine setting within the vessel's limits"
 
 
@@ -121,7 +171,8 @@ class WaveDanger(_OnForecast):
 
     name = "wave danger"
 
-    def __init__(self, forecast, ship_length_m, speed_kn, at_hours=0.0):
+    def __init__(self, forecast: WeatherGrid, ship_length_m: float, speed_kn: float,
+                 at_hours: float = 0.0) -> None:
         number(ship_length_m, "ship_length_m", above=0, example=150.0)
         number(speed_kn, "speed_kn", above=0, example=12.0)
         number(at_hours, "at_hours")
@@ -134,16 +185,16 @@ class WaveDanger(_OnForecast):
         frame = forecast.frame_at(at_hours, roles)
         self._engine = _core.WaveDangerModel(frame.engine(), float(ship_length_m), self.speed_kn)
 
-    def unit(self, geographic):
+    def unit(self, geographic: bool) -> str:
         return "danger x km"
 
-    def engine(self, prepared):
+    def engine(self, prepared: Prepared) -> _core.WaveDangerModel:
         self._check_chart(prepared)
         return self._engine
 
-    def finish(self, route, per_step):
+    def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
         route.speed_kn = self.speed_kn
         return route
 
-    def no_route(self, where, prepared):
+    def no_route(self, where: str, prepared: Prepared) -> str:
         return f"no route at sea {where}"

@@ -6,10 +6,13 @@ sits below the route's."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Literal, NamedTuple
+from typing import TYPE_CHECKING, Literal, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
+
+if TYPE_CHECKING:
+    from .. import _core
 
 #: Waits shorter than this (hours) are rounding, not waits.
 WAIT_EPS_H = 1e-9
@@ -49,6 +52,15 @@ class Voyage:
     charts_used: tuple[np.datetime64, ...] = ()
     #: The ice class the route was found for (ice seasons; None for forecasts).
     ice_class: str | None = None
+    #: The forecast the route was found through (its files and the times they cover; None for
+    #: ice seasons alone).
+    forecast: str | None = None
+    #: What the voyage's times rest on beyond the data (persistence of a forecast or an ice
+    #: chart past its last time), in words; Route.assumptions lists them too.
+    assumptions: tuple[str, ...] = ()
+    #: Hours of each step when the route's cost is not hours (the fuel model); None when the
+    #: step costs are the hours.
+    step_h: npt.NDArray[np.float64] | None = None
 
     @property
     def hours_waiting(self) -> float | None:
@@ -66,7 +78,8 @@ class Voyage:
               wait_h: npt.NDArray[np.float64] | None, departure: np.datetime64 | None, *,
               pixels: npt.NDArray[np.int64], coords: npt.NDArray[np.float64],
               tick: Literal["s", "ms"] = "s", charts_used: tuple[np.datetime64, ...] = (),
-              ice_class: str | None = None) -> Voyage:
+              ice_class: str | None = None, forecast: str | None = None,
+              assumptions: tuple[str, ...] = ()) -> Voyage:
         """The voyage of a route of `hours` whose steps take `step_h` hours each (waits
         included), waiting `wait_h` hours before each step; `pixels` and `coords` are the
         route's vertices; times are rounded to `tick`."""
@@ -86,7 +99,8 @@ class Voyage:
                 Wait((int(px[i, 0]), int(px[i, 1])), (float(xy[i, 0]), float(xy[i, 1])),
                      at(float(cum[i])), float(waited[i]))
                 for i in np.flatnonzero(waited > WAIT_EPS_H))
-        return cls(float(hours), departure, at(hours), waited, stops, tuple(charts_used), ice_class)
+        return cls(float(hours), departure, at(hours), waited, stops, tuple(charts_used), ice_class,
+                   forecast, tuple(assumptions))
 
 
 @dataclass(frozen=True, eq=False)
@@ -124,7 +138,7 @@ class StepValues:
     wait_h: _Steps = None
 
     @classmethod
-    def from_core(cls, s: Any) -> StepValues:
+    def from_core(cls, s: _core.StepValues) -> StepValues:
         """From the C++ search's values (_core.StepValues)."""
         return cls(**{f: _floats(getattr(s, f)) for f in _FIELDS})
 
@@ -138,5 +152,5 @@ class StepValues:
 _FIELDS = ("setting", "hours", "fuel_t", "depart_h", "wait_h")
 
 
-def _floats(x: Any) -> _Steps:
+def _floats(x: npt.ArrayLike | None) -> _Steps:
     return None if x is None else np.asarray(x, dtype=np.float64)

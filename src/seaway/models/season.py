@@ -4,19 +4,28 @@ from __future__ import annotations
 
 import dataclasses
 import warnings
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
+from ..base.units import KM_PER_NM
 from ..base.validate import number
 from ..chart.locate import describe
 from ..ice.classes import get_class
-from .base import CostModel
-from .results import Voyage
+from ..vessel import Vessel
+from .base import CostModel, Prepared, RouteT
+from .results import StepValues, Voyage
+
+if TYPE_CHECKING:
+    from ..ice import classes  # classes.IceClass: one name in the API pages (seaway.ice re-exports it)
+    from ..ice.season import Departure, SeasonGrid, SeasonLike, SpeedTable
+    from .forecast import WeatherGrid
 
 
 class IceSeasonTime(CostModel):
-    """Hours through a season of ice charts (issue 10): each step crosses the chart valid when
+    """Hours through a season of ice charts: each step crosses the chart valid when
     the ship starts it, at the class's speed there (Andreeva 2021's V = F * V0 via seaway.ice.andreeva,
     or a table per stage and concentration); time-optimal and exact (FIFO). Waiting is allowed
     everywhere (without it the graph is not FIFO and no label-setting search is exact); routes
@@ -29,9 +38,12 @@ class IceSeasonTime(CostModel):
 
     name = "ice season time"
     time_dependent = True
+    #: Warn when the voyage outlasts the last chart's usual validity (it is recorded either way).
+    _warn_late = True
 
-    def __init__(self, season, ice_class="Arc7", v0_kn=12.0, *, departure=None, speed="andreeva",
-                 **speed_options):
+    def __init__(self, season: SeasonGrid | SeasonLike, ice_class: str | classes.IceClass = "Arc7",
+                 v0_kn: float = 12.0, *, departure: Departure = None,
+                 speed: str | SpeedTable = "andreeva", **speed_options: Any) -> None:
         from ..ice.season import (
             SeasonGrid,  # the season's own grid type (a convenience)
         )
@@ -41,24 +53,27 @@ class IceSeasonTime(CostModel):
         self.ice_class = get_class(ice_class).name
         self.hours_per_km, self.valid_from_h, self.departure = self.season.hours_per_km(
             ice_class, v0_kn, departure, speed, **speed_options)
-        self._open = np.isfinite(self.hours_per_km).any(axis=0)
+        # where some chart lets the class go; numpy types any(axis=0) as "bool or array"
+        self._open = cast("npt.NDArray[np.bool_]", np.isfinite(self.hours_per_km).any(axis=0))
         if not self._open.any():
             raise ValueError(f"class {self.ice_class} may go nowhere in any chart of the season from "
                              f"{self.departure} on; try a stronger class or other speeds")
         fastest = float(np.min(self.hours_per_km, where=self._open[None], initial=np.inf))
-        self._engine = _core.IceSeasonModel(self.hours_per_km, list(self.valid_from_h), fastest)
+        self._engine: _core.IceSeasonModel | _core.IceWeatherModel = _core.IceSeasonModel(
+            self.hours_per_km, list(self.valid_from_h), fastest)
 
-    def unit(self, geographic):
+    def unit(self, geographic: bool) -> str:
         return "h"
 
-    def engine(self, prepared):
+    def engine(self, prepared: Prepared) -> _core.IceSeasonModel | _core.IceWeatherModel:
         if prepared.chart.shape != self.season.shape:
             raise ValueError(f"the season's charts have {self.season.shape} pixels but the chart "
                              f"{prepared.chart.shape}: route on the season's grid "
                              "(seaway.ice.season.SeasonGrid.prepare)")
         return self._engine
 
-    def check_ends(self, prepared, start, end):
+    def check_ends(self, prepared: Prepared, start: tuple[int, int],
+                   end: tuple[int, int] | None) -> None:
         for name, rc in (("start", start), ("end", end)):
             if rc is None or self._open[rc]:
                 continue
@@ -73,9 +88,12 @@ class IceSeasonTime(CostModel):
                              f"may not enter in any chart from {self.departure} on (last chart: {ice}); "
                              f"{near}")
 
-    def finish(self, route, per_step):
+    def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
         """The route's Voyage: every wait, the charts its steps crossed (the one valid when each
         step departs) and the ice class."""
+        # found routes carry their step costs; the season's search reports each step's
+        # departure (IceSeasonModel, cpp/models.hpp)
+        assert route.step_costs is not None and per_step.depart_h is not None
         hours, cum = route.cost, np.concatenate([[0.0], np.cumsum(route.step_costs)])
         depart = per_step.depart_h
         used = np.unique(np.searchsorted(self.valid_from_h, depart, side="right") - 1)
@@ -83,15 +101,67 @@ class IceSeasonTime(CostModel):
         voyage = Voyage.along(hours, route.step_costs, depart - cum[:-1], self.departure,
                               pixels=route.pixels, coords=route.coords, tick="ms",
                               charts_used=tuple(times[k] for k in used), ice_class=self.ice_class)
-        route.stats = dataclasses.replace(route.stats, voyage=voyage)
         # No route.speed_kn: legs at one speed would contradict the per-step times and waits.
         if hours > self.valid_from_h[-1] + self.season.last_valid_h:
-            warnings.warn(f"the voyage arrives at {voyage.arrival}, beyond the last chart "
-                          f"({times[-1]}) and its usual validity; the last chart was assumed to hold",
-                          stacklevel=3)
+            said = (f"the voyage arrives at {voyage.arrival}, beyond the last chart "
+                    f"({times[-1]}) and its usual validity; the last chart was assumed to hold")
+            voyage = dataclasses.replace(voyage, assumptions=voyage.assumptions + (said,))
+            if self._warn_late:
+                warnings.warn(said, stacklevel=3)
+        route.stats = dataclasses.replace(route.stats, voyage=voyage)
         return route
 
-    def no_route(self, where, prepared):
+    def no_route(self, where: str, prepared: Prepared) -> str:
         return (f"no route for class {self.ice_class} {where} in any chart of the season from "
                 f"{self.departure} on, even waiting for the ice to clear; try a stronger class, "
                 "a larger neighbourhood or another end")
+
+
+class IceWeatherTime(IceSeasonTime):
+    """Hours through ice and weather at once (cpp/seaway/ice_weather.hpp): each step crosses the
+    ice chart valid when the ship starts it at the class's speed there (as IceSeasonTime), and the
+    forecast at that time changes that speed as it changes a calm-water speed (TravelTime:
+    Khokhlov's or STAWAVE-1's loss in waves, the wind and wave limits, currents); the class's
+    limits still close the ice it may not enter. Exact (FIFO) when the weather is; the ship may
+    wait for a later chart. `season` a seaway.ice.season.SeasonGrid (or what it takes);
+    `forecast` a seaway.weather.ForecastGrid on the season's grid, whose departure is the
+    voyage's; `vessel` a seaway.vessel.Vessel, its speed_kn the open-water speed V0.
+
+    Route.stats.voyage as IceSeasonTime's, with the forecast and what it assumes."""
+
+    name = "ice and weather time"
+    _warn_late = False  # the assumption is in Route.assumptions, which the CLI prints
+
+    def __init__(self, season: SeasonGrid | SeasonLike, forecast: WeatherGrid,
+                 ice_class: str | classes.IceClass = "Arc7", vessel: Vessel | None = None, *,
+                 speed: str | SpeedTable = "andreeva", **speed_options: Any) -> None:
+        vessel = Vessel() if vessel is None else vessel
+        vessel.check(waves="wave_height" in forecast.arrays)
+        super().__init__(season, ice_class, vessel.speed_kn, departure=forecast.departure,
+                         speed=speed, **speed_options)
+        if forecast.shape != self.season.shape:
+            raise ValueError(f"the forecast has {forecast.shape} pixels but the season's charts "
+                             f"{self.season.shape}: put it on their grid first "
+                             "(seaway.weather.files.on_grid)")
+        self.forecast, self.vessel = forecast, vessel
+        fastest_kn = 1.0 / (KM_PER_NM * float(np.min(self.hours_per_km, where=self._open[None],
+                                                     initial=np.inf)))
+        best = fastest_kn + forecast.best_extra_kn(vessel, slowest_kn=0.0)
+        assert isinstance(self._engine, _core.IceSeasonModel)  # set so by IceSeasonTime
+        self._engine = _core.IceWeatherModel(self._engine, forecast.engine(), vessel.to_core(),
+                                             1.0 / (KM_PER_NM * best))
+
+    def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
+        """IceSeasonTime's Voyage with the forecast and what it assumes."""
+        route = super().finish(route, per_step)
+        v = route.stats.voyage
+        said = tuple(self.forecast.assumed(v.arrival)) + v.assumptions
+        route.stats = dataclasses.replace(route.stats, voyage=dataclasses.replace(
+            v, forecast=self.forecast.describe(), assumptions=said))
+        return route
+
+    def no_route(self, where: str, prepared: Prepared) -> str:
+        return (f"no route for class {self.ice_class} {where} through the ice charts and the "
+                f"forecast from {self.departure} on (the class's ice limits, the vessel's wind and "
+                "wave limits), even waiting for the ice to clear; try a stronger class, another "
+                "departure or another end")

@@ -11,23 +11,28 @@ drawn on plain axes. A raster without an ice code (a cost, a cost field) keeps i
 
 from __future__ import annotations
 
-import os
-import textwrap
+import io
 
 import numpy as np
 
-from ..base.files import replace_atomically
+from ..base.files import write_all
 from ..base.units import KM_PER_NM
 from ..chart.raster import as_chart
 from ..ice.colours import classes
+from ..result.environment import least_depth
 from .style import (
     COAST_COLOUR,
     LAND_COLOUR,
     ROUTE_COLOUR,
+    SHOAL_COLOUR,
     axes_coords,
     edges,
+    fast_ice,
+    fit_title,
     ice_layer,
+    point_xy,
     route_xy,
+    shoals,
 )
 
 MAX_DRAWN = 700  # pixels along a side actually drawn (larger charts are subsampled)
@@ -54,13 +59,6 @@ def _cartopy():
 
 def _stride(shape) -> int:
     return max(1, int(np.ceil(max(shape) / MAX_DRAWN)))
-
-
-def _save(fig, path, dpi):
-    def write(fd, tmp):
-        os.close(fd)
-        fig.savefig(tmp, dpi=dpi, format="png")
-    replace_atomically(path, write, ".png")
 
 
 class _Map:
@@ -196,37 +194,24 @@ class _Map:
         handles, labels = list(extra) + handles, [h.get_label() for h in extra] + labels
         self.fig.legend(handles, labels, loc="outside right center", fontsize=8, frameon=False)
 
-    def save(self, path, dpi):
-        _save(self.fig, path, dpi)
-        self.plt.close(self.fig)
+    def png(self, dpi) -> bytes:
+        """The figure as PNG bytes (the figure is closed)."""
+        buffer = io.BytesIO()
+        try:
+            self.fig.savefig(buffer, dpi=dpi, format="png")
+        finally:
+            self.plt.close(self.fig)
+        return buffer.getvalue()
 
 
-def _shorten_path(word: str, room: int) -> str:
-    """A file path longer than `room` characters as '.../' and its last parts that fit."""
-    parts = word.split("/")
-    if len(word) <= room or len(parts) < 3:
-        return word
-    tail = parts[-1]
-    for part in reversed(parts[1:-1]):
-        if len(tail) + len(part) + 5 > room:
-            break
-        tail = part + "/" + tail
-    return ".../" + tail
+def plot_route(route, path, **options) -> None:
+    """Write a PNG map of the route over its chart (route_png(route, **options)), atomically."""
+    write_all([(path, route_png(route, **options))])
 
 
-def fit_title(text: str, width: int, lines: int = 3) -> str:
-    """`text` on at most `lines` lines of `width` characters: long paths shortened to their
-    last parts, then wrapped at spaces; what still does not fit ends in '...' (never cut at the
-    figure's edge)."""
-    words = [_shorten_path(w, width // 2) for w in text.split(" ")]
-    wrapped = textwrap.wrap(" ".join(words), width, break_long_words=True, break_on_hyphens=False,
-                            max_lines=lines, placeholder=" ...")
-    return "\n".join(wrapped)
-
-
-def plot_route(route, path, *, ice=None, code=None, values=None, label=None, title=None,
-               size=None, dpi=100, cmap="Blues"):
-    """Write a PNG map of the route over its chart.
+def route_png(route, *, ice=None, code=None, values=None, label=None, title=None, size=None,
+              dpi=100, cmap="Blues", shoal_m=None) -> bytes:
+    """A PNG map of the route over its chart, as bytes.
 
     ice: a raster on the chart's grid to draw in the WMO colour code (SIGRID-3 stage codes or
         concentration in tenths, percent or a fraction); default: the route's environment
@@ -235,7 +220,10 @@ def plot_route(route, path, *, ice=None, code=None, values=None, label=None, tit
     values: any other raster to draw instead, with a colour bar (`label` names it); with no ice
         and no values, the cost raster is drawn.
     size: (width, height) in inches (pixels = size x dpi); default 11 inches wide, as high as the
-        map's aspect needs."""
+        map's aspect needs.
+    shoal_m: with a depth environment (Route.with_environment({"depth": ...})), water shallower
+        than this (draft + UKC) is drawn as shoal; the route's least depth is marked either way.
+    Fast ice (an FA environment, form 08) is drawn as fast ice."""
     from matplotlib.colors import BoundaryNorm, ListedColormap
     from matplotlib.patches import Patch
 
@@ -249,7 +237,7 @@ def plot_route(route, path, *, ice=None, code=None, values=None, label=None, tit
     layer, kind = (None, None) if values is not None else ice_layer(route, ice, code)
     land = np.zeros(chart.shape, bool) if chart.land is None else chart.land.astype(bool)
     if layer is not None:
-        index, table = classes(layer, kind)
+        index, table = classes(layer, kind, fast=fast_ice(route) if ice is None else None)
         present = np.unique(index[(index >= 0) & ~land])
         colours = ListedColormap([np.array(rgb) / 255 for _, rgb in table])
         norm = BoundaryNorm(np.arange(len(table) + 1) - 0.5, len(table))
@@ -262,15 +250,27 @@ def plot_route(route, path, *, ice=None, code=None, values=None, label=None, tit
         im = m.raster(np.ma.masked_where(land | ~np.isfinite(v), v), cmap)
         m.fig.colorbar(im, ax=m.ax, label=label or "cost per unit length", shrink=0.7)
         what = label or "cost per unit length"
+    shoal = shoals(route, shoal_m)
+    if shoal is not None and (shoal & ~land).any():
+        m.raster(np.ma.masked_where(~shoal | land, np.ones(shoal.shape)),
+                 ListedColormap([SHOAL_COLOUR]), zorder=2.5)
+        patches.append(Patch(facecolor=SHOAL_COLOUR, edgecolor="#444444",
+                             label=f"shoal: shallower than {float(shoal_m):g} m (draft + UKC)"))
     if m.chart_land() or chart.geographic:
         patches.append(Patch(facecolor=LAND_COLOUR, edgecolor=COAST_COLOUR, label="land"))
     m.graticule()
     m.route(route)
+    if "depth" in route.environment:  # the shallowest point the route crosses
+        z, at = least_depth(route, route.environment["depth"])
+        if at is not None:
+            x, y = point_xy(chart, at)
+            m.ax.plot(x, y, "v", color=SHOAL_COLOUR, mec="black", ms=10, zorder=9,
+                      label=f"least depth {z:.1f} m", **m.kw)
     m.legend(patches)
     units = "km" if route.geographic else "units"
     nm = f" ({route.length / KM_PER_NM:.0f} nm)" if route.geographic else ""
     m.title(title or f"{route.name}: {route.length:.1f} {units}{nm}, cost {route.cost:.5g}; {what}")
-    m.save(path, dpi)
+    return m.png(dpi)
 
 
 def plot_cost_field(field, path, *, route=None, lat=None, lon=None, title=None, size=None,
@@ -292,4 +292,4 @@ def plot_cost_field(field, path, *, route=None, lat=None, lon=None, title=None, 
         m.route(route, waypoints=False)
         m.legend()
     m.title(title or "accumulated cost")
-    m.save(path, dpi)
+    write_all([(path, m.png(dpi))])

@@ -2,26 +2,35 @@
 "seaway[plot]") that open offline: no tile server, and Leaflet's JavaScript and CSS inlined from
 the copy the django-js-lib-leaflet package ships instead of linked from a CDN.
 
-Layers: the chart as an image (ice in the WMO colour code, seaway.ice.colours, else the cost
-raster; land grey), the land around it (global-land-mask, shipped with that package), and the
+Layers: the chart as an image (ice in the WMO colour code, seaway.ice.colours, fast ice grey,
+else the cost raster; land tan), the land around it (global-land-mask, shipped with that package), and the
 route with a popup at every waypoint: position, the course, distance and time of the leg that
 starts there, its cost, and the ice along it. Leaflet's map is Web Mercator, so the image stops
 at 85.05 degrees of latitude."""
 
 from __future__ import annotations
 
-import base64
 import html
 import re
-from importlib import resources
 
 import numpy as np
 
 from ..base import sphere as geo
 from ..base.files import write_atomically
 from ..ice.colours import classes, guess_code
-from ..result.environment import Category
-from .style import LAND_COLOUR, ROUTE_COLOUR, edges, ice_layer, route_xy
+from ..result.environment import Category, least_depth
+from ..result.schedule import schedule, short
+from .leaflet import inline_leaflet, legend_control, popup_element
+from .style import (
+    LAND_COLOUR,
+    ROUTE_COLOUR,
+    SHOAL_COLOUR,
+    edges,
+    fast_ice,
+    ice_layer,
+    route_xy,
+    shoals,
+)
 
 MERCATOR_LIMIT = 85.051128779806589  # Web Mercator's latitude limit
 MAX_IMAGE = 2000  # pixels along a side of the embedded chart image (larger charts subsampled)
@@ -33,56 +42,6 @@ def _folium():
     except ImportError:
         raise ImportError('interactive maps need folium: pip install "seaway[plot]"') from None
     return folium
-
-
-def _leaflet_files():
-    """(leaflet.js, leaflet.css with its images as data URLs) from django-js-lib-leaflet."""
-    try:
-        root = resources.files("js_lib_leaflet") / "static" / "js_lib_leaflet"
-        js, css = (root / "leaflet.js").read_text("utf-8"), (root / "leaflet.css").read_text("utf-8")
-    except (ModuleNotFoundError, FileNotFoundError):
-        raise ImportError('offline HTML maps need Leaflet\'s files: pip install "seaway[plot]" '
-                          "(django-js-lib-leaflet)") from None
-
-    def inline(match):
-        data = (root / match.group(1)).read_bytes()
-        return f"url(data:image/png;base64,{base64.b64encode(data).decode('ascii')})"
-    return js, re.sub(r"url\((images/[\w.-]+\.png)\)", inline, css)
-
-
-def _inline_leaflet(folium):
-    """An element that puts Leaflet itself into the page's <head> (under the names folium uses
-    for its CDN links, which the map no longer adds)."""
-    from branca.element import Element, MacroElement
-
-    class InlineLeaflet(MacroElement):
-        def render(self, **kwargs):
-            js, css = _leaflet_files()
-            head = self.get_root().header
-            head.add_child(Element(f"<style>{css}</style>"), name="leaflet_css")
-            head.add_child(Element(f"<script>{js}</script>"), name="leaflet")
-            super().render(**kwargs)
-    return InlineLeaflet()
-
-
-def _popup_element(text: str, max_width: int = 320):
-    """A Leaflet popup bound to its parent marker, its HTML given as a string: folium.Popup
-    builds its content with jQuery, which an offline page does not load."""
-    from branca.element import MacroElement
-    from jinja2 import Template
-
-    class Popup(MacroElement):
-        _template = Template(
-            "{% macro script(this, kwargs) %}"
-            "{{ this._parent.get_name() }}.bindPopup({{ this.text|tojson }}, "
-            "{maxWidth: {{ this.max_width }}});"
-            "{% endmacro %}")
-
-        def __init__(self):
-            super().__init__()
-            self._name = "Popup"
-            self.text, self.max_width = text, int(max_width)
-    return Popup()
 
 
 def _mercator_rows(rgba, lat_edges):
@@ -99,7 +58,7 @@ def _mercator_rows(rgba, lat_edges):
     return rgba[index], (south, north)
 
 
-def _chart_image(route, ice, code):
+def _chart_image(route, ice, code, shoal_m=None):
     """(RGBA uint8 image north-up, lat edges north first, lon edges, layer name, legend rows)."""
     chart = route.chart
     k = max(1, int(np.ceil(max(chart.shape) / MAX_IMAGE)))
@@ -108,7 +67,7 @@ def _chart_image(route, ice, code):
     rgba = np.zeros(chart.shape + (4,), np.uint8)
     legend = []
     if layer is not None:
-        index, table = classes(layer, kind)
+        index, table = classes(layer, kind, fast=fast_ice(route))
         colours = np.array([rgb for _, rgb in table], np.uint8).reshape(-1, 3)
         ok = index >= 0
         rgba[ok, :3], rgba[ok, 3] = colours[index[ok]], 255
@@ -121,7 +80,11 @@ def _chart_image(route, ice, code):
         lo, hi = (float(v[ok].min()), float(v[ok].max())) if ok.any() else (0.0, 1.0)
         rgba[ok] = (colormaps["viridis"]((v[ok] - lo) / (hi - lo or 1.0)) * 255).astype(np.uint8)
         name = f"cost per unit length ({lo:.3g} dark to {hi:.3g} light)"
-    rgba[land] = [int(LAND_COLOUR[i:i + 2], 16) for i in (1, 3, 5)] + [255]
+    shoal = shoals(route, shoal_m)
+    if shoal is not None and (shoal & ~land).any():  # water shallower than draft + UKC
+        rgba[shoal] = list(_rgb(SHOAL_COLOUR)) + [255]
+        legend.append((f"shoal: shallower than {float(shoal_m):g} m (draft + UKC)", _rgb(SHOAL_COLOUR)))
+    rgba[land] = list(_rgb(LAND_COLOUR)) + [255]
     lat = np.asarray(chart.lat, float)[::k]
     lon = geo.unwrap_lon(chart.lon)[::k]
     rgba = rgba[::k, ::k]
@@ -140,8 +103,12 @@ def _land_around(bounds):
     lon = np.linspace(west, east, 800)
     land = globe.is_land(lat[:, None], (lon[None, :] + 180.0) % 360.0 - 180.0)
     rgba = np.zeros(land.shape + (4,), np.uint8)
-    rgba[land] = [int(LAND_COLOUR[i:i + 2], 16) for i in (1, 3, 5)] + [255]
+    rgba[land] = list(_rgb(LAND_COLOUR)) + [255]
     return rgba, edges(lat), edges(lon)
+
+
+def _rgb(colour: str) -> tuple:
+    return tuple(int(colour[i:i + 2], 16) for i in (1, 3, 5))
 
 
 def _dms(value, pos, neg, width):
@@ -166,52 +133,69 @@ def _popup(route, number, point, leg, speed_kn):
     else:
         where = f"y {point[0]:.6g}, x {point[1]:.6g}"
     lines = [f"<b>waypoint {number}</b>", where]
+    last = number == len(route.waypoint_index)
+    if route.requested is not None and (number == 1 or last):  # an end: the one asked for
+        asked = route.requested[1 if last else 0]
+        lines[0] = f"<b>waypoint {number}: {'end' if last else 'start'}</b>"
+        lines.append(f"requested {_dms(asked[0], 'N', 'S', 2)} {_dms((asked[1] + 180) % 360 - 180, 'E', 'W', 3)}"
+                     if route.geographic else f"requested {asked[0]:g}, {asked[1]:g}")
+        lines += [html.escape(n) for n in route.notes if n.startswith("end " if last else "start ")]
+    timed = schedule(route)
+    if timed is not None and timed.departure is not None:  # the waypoint's ETA and ETD (UTC)
+        i = int(route.waypoint_index[number - 1])
+        if number > 1:
+            lines.append(f"ETA {short(timed.eta(i))} UTC")
+        if leg is not None:
+            lines.append(f"ETD {short(timed.etd(i))} UTC")
     if leg is None:
         lines.append(f"end: {route.length:.1f} {'km' if route.geographic else 'units'}, "
                      f"cost {route.cost:.6g} {html.escape(route.unit)}")
+        if timed is not None and timed.forecast:
+            lines.append(f"forecast {html.escape(timed.forecast)}")
+        if route.ice_speed is not None:
+            hours = sum(leg.time_h for leg in route.legs())
+            lines.append(html.escape(f"time {hours:.1f} h" if np.isfinite(hours) else "no time")
+                         + "; speed in ice: " + html.escape(route.ice_speed.model))
     else:
         dist = (f"{leg.distance_nm:.2f} nm ({leg.distance:.2f} km)" if leg.distance_nm is not None
                 else f"{leg.distance:.4g} units")
         lines += [f"leg {leg.number}: course {leg.course:05.1f}&deg;, {dist}"]
-        if leg.time_h is not None:
+        if leg.time_h is not None and route.ice_speed is not None:  # the speed in the ice
+            lines.append(f"time {leg.time_h:.2f} h at {leg.speed_kn:.3g} kn (mean, in ice)"
+                         if np.isfinite(leg.time_h) else "no time: no speed in part of its ice")
+        elif leg.time_h is not None and timed is not None:  # on a clock: the real time
+            made = f", {leg.speed_kn:.1f} kn made good" if leg.speed_kn is not None else ""
+            lines.append(f"time {leg.time_h:.2f} h{made}")
+        elif leg.time_h is not None:
             lines.append(f"time {leg.time_h:.2f} h at {speed_kn:g} kn")
         lines.append(f"cost {leg.cost:.6g} {html.escape(route.unit)}")
         lines += [html.escape(_ice_text(n, mv)) for n, mv in leg.environment.items()]
     return "<br>".join(lines)
 
 
-def _legend(name, rows):
-    """A fixed legend box (plain HTML/CSS, no JavaScript library)."""
-    items = "".join(f'<div><span style="display:inline-block;width:14px;height:10px;'
-                    f'background:rgb{tuple(rgb)};border:1px solid #444;margin-right:4px"></span>'
-                    f"{html.escape(label)}</div>" for label, rgb in rows)
-    return ('<div style="position:fixed;bottom:20px;left:10px;z-index:1000;background:white;'
-            'padding:6px 8px;border:1px solid #888;font:12px sans-serif">'
-            f"<b>{html.escape(name)}</b>{items}</div>")
-
-
-def explore(route, *, ice=None, code=None, speed_kn=None, zoom_start=None):
+def explore(route, *, ice=None, code=None, speed_kn=None, zoom_start=None, shoal_m=None):
     """A folium.Map of the route over its chart (geopandas' explore() style): the chart image
-    (ice in the WMO colour code when the route carries ice or `ice` is given, else the cost),
-    the land around it, and the route with a popup per waypoint. Works offline (see the module).
+    (ice in the WMO colour code when the route carries ice or `ice` is given, else the cost;
+    fast ice as fast ice), the land around it, and the route with a popup per waypoint, its
+    start a circle and its end a square; a legend (a Leaflet control in the bottom-right
+    corner, stacked with the others). Works offline (see the module).
 
-    ice, code: as in seaway.plot.plot_route. speed_kn: for the legs' times (default the
-    route's)."""
+    ice, code, shoal_m: as in seaway.plot.route_png (shoals and the least depth with a depth
+    environment). speed_kn: for the legs' times (default the route's)."""
     folium = _folium()
-    from branca.element import Element
     if not route.geographic or route.latlon is not None:
         raise ValueError("an interactive map needs a route on a lat/lon chart (not a planar or "
                          "corridor chart); use seaway.plot.plot_route for a PNG")
     if ice is not None:
         name = "stage_of_development" if (code or _guess(ice)) == "stage" else "sea_ice_concentration"
         route = route.with_environment({name: ice})
-    rgba, lat_e, lon_e, layer_name, legend = _chart_image(route, None, code)
+    rgba, lat_e, lon_e, layer_name, legend = _chart_image(route, None, code, shoal_m)
     x, y = route_xy(route, route.chart)
     centre = [float(np.mean(y)), float(np.mean(x))]
     m = folium.Map(location=centre, zoom_start=zoom_start or 4, tiles=None,
                    control_scale=True)
     m.default_js, m.default_css = [], []  # no CDN: _inline_leaflet puts Leaflet in the page
-    m.add_child(_inline_leaflet(folium))
+    m.add_child(inline_leaflet(folium))
     south, north = float(lat_e.min()), float(lat_e.max())
     pad = 0.15 * max(north - south, 1.0)
     around = (max(south - pad, -MERCATOR_LIMIT), min(north + pad, MERCATOR_LIMIT),
@@ -231,18 +215,42 @@ def explore(route, *, ice=None, code=None, speed_kn=None, zoom_start=None):
                     tooltip=f"{html.escape(route.name)}: {route.length:.1f} km "
                             f"({route.length / geo.KM_PER_NM:.1f} nm), cost {route.cost:.6g}"
                     ).add_to(line)
+    last = len(route.waypoint_index) - 1
     for n, i in enumerate(route.waypoint_index):
         leg = legs[n] if n < len(legs) else None
-        end = n in (0, len(route.waypoint_index) - 1)
-        marker = folium.CircleMarker(positions[i].tolist(), radius=7 if end else 4, weight=1,
-                                     color="black", fill=True, fill_opacity=1.0,
-                                     fill_color=ROUTE_COLOUR if end else "white").add_to(line)
-        marker.add_child(_popup_element(_popup(route, n + 1, route.coords[i], leg, speed)))
+        if n == last and n > 0:  # the end: a square, the start a circle
+            marker = folium.Marker(positions[i].tolist(), tooltip="end", icon=folium.DivIcon(
+                html=f'<div style="width:12px;height:12px;background:{ROUTE_COLOUR};'
+                     'border:2px solid black"></div>', icon_size=(16, 16), icon_anchor=(8, 8)))
+        else:
+            marker = folium.CircleMarker(positions[i].tolist(), radius=8 if n == 0 else 4, weight=1,
+                                         color="black", fill=True, fill_opacity=1.0,
+                                         tooltip="start" if n == 0 else None,
+                                         fill_color=ROUTE_COLOUR if n == 0 else "white")
+        marker.add_to(line)
+        marker.add_child(popup_element(_popup(route, n + 1, route.coords[i], leg, speed)))
+    rows = legend + [("land", _rgb(LAND_COLOUR))] + _marks(folium, route, line)
     folium.LayerControl(collapsed=False).add_to(m)
-    if legend:
-        m.get_root().html.add_child(Element(_legend(layer_name, legend)))
+    m.add_child(legend_control(layer_name, rows))
     m.fit_bounds([[float(np.min(y)), float(np.min(x))], [float(np.max(y)), float(np.max(x))]])
     return m
+
+
+def _marks(folium, route, line) -> list:
+    """The least-depth point (with a depth environment) on the map, and the legend rows of the
+    route's marks."""
+    dot = ('<span style="display:inline-block;width:10px;height:10px;border-radius:50%;'
+           'border:1px solid black;margin-right:4px;background:{}"></span>')
+    rows = [(dot.format(ROUTE_COLOUR) + "start", None),
+            (dot.format(ROUTE_COLOUR).replace("border-radius:50%;", "") + "end", None)]
+    if "depth" in route.environment:
+        z, at = least_depth(route, route.environment["depth"])
+        if at is not None:
+            text = f"least depth {z:.1f} m"
+            folium.CircleMarker(list(at), radius=6, weight=2, color="black", fill=True,
+                                fill_opacity=1.0, fill_color=SHOAL_COLOUR, tooltip=text).add_to(line)
+            rows.append((dot.format(SHOAL_COLOUR) + html.escape(text), None))
+    return rows
 
 
 def _guess(ice):

@@ -20,6 +20,8 @@ from ..chart.legs import index_coords, leg_path
 from ..ice.codes import form_name, stage_name, stage_rank
 from ..ice.forms import FREE_WATER
 
+__all__ = ["Numeric", "Category", "LEAST", "STAGES", "FORMS", "CATEGORICAL"]
+
 #: Environment variables whose least value along a leg matters (reported instead of the most).
 LEAST = frozenset({"depth"})
 #: Categorical variables: a leg reports the governing stage (STAGES) or the most frequent code.
@@ -122,6 +124,8 @@ def weighted_samples(route):
     route, smoothed or not."""
     v, steps = route.vertices, route.leg_lengths
     half = (route.neighbourhood - 1) // 2
+    if route.points is None and len(v) > 1:  # engine steps between pixel centres: vectorised
+        return _step_samples(v, steps)
     pix, km, idx = [], [], []
     for k, (p, q) in enumerate(zip(v[:-1], v[1:])):
         straight = bool(np.all(p == np.round(p)) and np.all(q == np.round(q)) and np.abs(q - p).max() <= half)
@@ -140,6 +144,18 @@ def weighted_samples(route):
     if not pix:
         return np.zeros((0, 2), np.int64), np.zeros(0), np.zeros(0, np.int64)
     return np.concatenate(pix), np.concatenate(km), np.concatenate(idx)
+
+
+def _step_samples(v, steps):
+    """weighted_samples of a route of engine steps (straight in index space, a few pixels long):
+    m = ceil(2 * the step's longest side) equal pieces per step, each standing for 1/m of it."""
+    d = np.diff(v, axis=0)
+    m = np.maximum(np.ceil(2 * np.abs(d).max(axis=1)).astype(np.int64), 1)
+    k = np.repeat(np.arange(len(d)), m)
+    first = np.repeat(np.cumsum(m) - m, m)
+    t = (np.arange(k.size) - first + 0.5) / m[k]
+    pix = np.rint(v[k] + t[:, None] * d[k]).astype(np.int64)
+    return pix, steps[k] / m[k], k
 
 
 def _piece_length(route, a, b) -> float:

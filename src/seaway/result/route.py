@@ -11,20 +11,15 @@ import numpy as np
 from .._core import haversine_km
 from ..base import sphere as geo
 from ..base.validate import number
-from ..chart.legs import index_coords, leg_path
+from ..chart.legs import index_coords, leg_path, turning_points
 from ..chart.raster import Chart
 from ..models.base import CostModel, EdgeCost
-from .environment import (  # noqa: F401 - extreme_name: part of this API
-    CATEGORICAL,
-    LEAST,
-    along,
-    extreme_name,
-    least_depth,
-    summarise,
-    values_at,
-)
+from .environment import along, extreme_name  # noqa: F401 - extreme_name: part of this API
+from .schedule import schedule
 from .stats import RouteStats
+from .summary import route_summary
 from .table import route_table
+from .timing import SpeedField, step_times
 
 
 @dataclass
@@ -44,10 +39,24 @@ class Leg:
     #: name -> the chart variable along the leg (seaway.result.environment): Numeric (mean, max)
     #: pairs ((mean, min) for LEAST) or, for stages and forms of ice, a Category.
     environment: dict
+    #: Leaves the first waypoint, reaches the last (on a clock: seaway.result.schedule) or None.
+    depart: np.datetime64 | None = None
+    arrive: np.datetime64 | None = None
 
 
 @dataclass
 class Route:
+    """A route a search returned: its pixels, cost and model, and what a navigator reads from it.
+
+    cost: the sum of the step costs, in the model's unit (``unit``: cost x km, h, t, ...).
+    pixels: (n, 2) (row, col) of its pixels, both ends included (``coords``: lat/lon or y/x).
+    method, stats: the search that found it and its figures (seaway.result.stats).
+    model, speed_kn: the cost model (seaway.models) and the speed of the leg table's times.
+
+    Waypoints are the ends and every course change: ``legs()``, ``summary()`` and ``str()`` give
+    the leg table; ``smoothed()`` removes the zig-zag, ``with_environment(ds)`` reports a chart's
+    variables along the legs, ``to_geojson()``, ``to_html()`` and seaway.export write it."""
+
     chart: Chart = field(repr=False)
     cost: float
     pixels: np.ndarray  # (n, 2) row, col; both ends included
@@ -67,15 +76,23 @@ class Route:
     #: name -> (rows, cols) array on the chart's grid: ice or weather reported along each leg.
     environment: dict = field(default_factory=dict, repr=False)
     name: str = "seaway route"
+    #: (start, end) as they were asked for, when recorded (seaway.engine.snap.SnappedEnds.record;
+    #: `seaway route` always records them): every output gives them beside the ends used.
+    requested: tuple | None = field(default=None, repr=False)
+    #: Sentences on how the route was set up (an end moved to usable water): in .assumptions.
+    notes: tuple = field(default=(), repr=False)
+    #: The speed in the ice its times come from (with_ice_speed; seaway.result.timing).
+    ice_speed: SpeedField | None = field(default=None, repr=False)
 
     @property
     def assumptions(self) -> tuple:
-        """What was assumed to build the chart the route was found on (e.g. the stage of fast
-        ice of unknown stage, seaway.ice.forms): the ``assumptions`` attribute of the cost
-        DataArray (chart_impact sets it); empty when nothing was assumed."""
+        """What the route rests on: what was assumed to build its chart (e.g. the stage of fast
+        ice of unknown stage, seaway.ice.forms: the ``assumptions`` attribute of the cost
+        DataArray, which chart_impact sets), then .notes (a moved end); empty when nothing."""
         attrs = getattr(self.chart.template, "attrs", None) or {}
         said = attrs.get("assumptions", ())
-        return (said,) if isinstance(said, str) else tuple(said)
+        voyage = self.stats.voyage.assumptions if self.stats.voyage is not None else ()
+        return ((said,) if isinstance(said, str) else tuple(said)) + tuple(self.notes) + tuple(voyage)
 
     @property
     def vertices(self) -> np.ndarray:
@@ -103,6 +120,7 @@ class Route:
 
     @property
     def geographic(self) -> bool:
+        """True on lat/lon charts (lengths in km, coords lat/lon), False on planar ones."""
         return self.latlon is not None or self.chart.geographic
 
     @property
@@ -143,14 +161,7 @@ class Route:
         """Indices of the vertices that are waypoints: both ends and every course change (on a
         corridor route, every node: each leg is a great circle between nodes)."""
         v = self.vertices
-        if len(v) < 3 or self.latlon is not None:
-            return np.arange(len(v))
-        d = np.diff(v, axis=0)
-        cross = d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0]
-        dot = (d[:-1] * d[1:]).sum(axis=1)
-        scale = np.hypot(*d[:-1].T) * np.hypot(*d[1:].T)
-        turn = (np.abs(cross) > 1e-9 * scale) | (dot <= 0)
-        return np.concatenate([[0], np.flatnonzero(turn) + 1, [len(v) - 1]])
+        return np.arange(len(v)) if self.latlon is not None else turning_points(v)
 
     @property
     def waypoints(self) -> np.ndarray:
@@ -159,12 +170,20 @@ class Route:
 
     @property
     def course_changes(self) -> int:
+        """The number of waypoints between the ends (each is a change of course)."""
         return max(len(self.waypoint_index) - 2, 0)
 
     def legs(self, speed_kn: float | None = None) -> list[Leg]:
         """The legs between consecutive waypoints, with course, distance, time, cost and the mean
         and maximum of each environment variable along the leg. speed_kn defaults to .speed_kn."""
         speed = self.speed_kn if speed_kn is None else number(speed_kn, "speed_kn", above=0)
+        ice = self.ice_speed if self.geographic else None
+        if ice is not None:  # times from the speed in the ice (seaway.result.timing)
+            if speed is not None and speed != ice.v0_kn:
+                raise ValueError(f"the route's speeds in ice are for {ice.v0_kn:g} kn in open water, "
+                                 f"not {speed:g} kn; make them again with with_ice_speed")
+            speed, hours_of = ice.v0_kn, step_times(self)[0]
+        timed = schedule(self)  # a route on a clock: its real times, not those at one speed
         wi, c = self.waypoint_index, self.coords
         steps, costs = self.leg_lengths, self.costs()
         out = []
@@ -178,8 +197,15 @@ class Route:
                 course = float(np.degrees(np.arctan2(b[1] - a[1], b[0] - a[0])) % 360.0)
                 nm = None
             hours = nm / speed if (speed and nm is not None) else None
-            out.append(Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm, speed,
-                           hours, float(costs[i:j].sum()), self._along(i, j)))
+            leg_speed = speed
+            if ice is not None and nm is not None:  # the leg's mean speed; 0 where it stops
+                hours = float(hours_of[i:j].sum())
+                leg_speed = nm / hours if 0 < hours < np.inf else (0.0 if hours else speed)
+            if timed is not None:  # the leg's real hours and the speed it makes good under way
+                hours, leg_speed = timed.leg(i, j, nm)
+            out.append(Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm, leg_speed,
+                           hours, float(costs[i:j].sum()), self._along(i, j),
+                           *((timed.etd(i), timed.eta(j)) if timed is not None else ())))
         return out
 
     def sample_pixels(self, i: int = 0, j: int | None = None) -> np.ndarray:
@@ -201,6 +227,14 @@ class Route:
     def _along(self, i: int, j: int) -> dict:
         return along(self, i, j)
 
+    def with_ice_speed(self, knots, model=None) -> Route:
+        """A copy whose times come from `knots`, the speed on the chart's grid (a DataArray from
+        seaway.ice.speed.ice_speed, whose attributes give the model and the open-water speed,
+        or an array with `model`): each leg's time is its length over the speed along it, its
+        speed the mean; speed_kn becomes the open-water speed."""
+        field = SpeedField.on(self.chart, knots, model)
+        return dataclasses.replace(self, ice_speed=field, speed_kn=field.v0_kn)
+
     def with_environment(self, data, names=None) -> Route:
         """A copy that reports `data` along each leg: an xarray.Dataset or a dict of DataArrays or
         arrays on the chart's grid (variables of another shape are skipped)."""
@@ -208,7 +242,7 @@ class Route:
         for name in (names or list(data.keys())):
             arr = data[name]
             template = self.chart.template
-            if hasattr(arr, "dims") and hasattr(template, "dims"):
+            if hasattr(arr, "dims") and template is not None:
                 if set(arr.dims) != set(template.dims):
                     continue
                 arr = arr.transpose(*template.dims)
@@ -218,32 +252,9 @@ class Route:
         return dataclasses.replace(self, environment=env)
 
     def summary(self, speed_kn: float | None = None) -> dict:
-        legs = self.legs(speed_kn)
-        speed = self.speed_kn if speed_kn is None else speed_kn
-        out = {"name": self.name, "start": tuple(map(float, self.coords[0])),
-               "end": tuple(map(float, self.coords[-1])), "cost": self.cost,
-               "length": self.length, "length_units": "km" if self.geographic else "grid units",
-               "legs": len(legs), "course_changes": self.course_changes,
-               "edge_cost": self.edge_cost, "cost_unit": self.unit,
-               "neighbourhood": self.neighbourhood}
-        if self.geographic:
-            length_nm = self.length / geo.KM_PER_NM
-            out["length_nm"] = length_nm
-            if speed:
-                out.update(speed_kn=float(speed), time_h=length_nm / speed)
-        for name, arr in self.environment.items():
-            if name in CATEGORICAL:  # the governing / most frequent category of the whole route
-                cat = summarise(name, values_at(arr, self.sample_pixels()))
-                out[f"{cat.rule.replace(' ', '_')}_{name}"] = str(cat)
-            elif name not in LEAST:
-                tops = [leg.environment[name].max for leg in legs]
-                tops = [v for v in tops if np.isfinite(v)]
-                out[f"max_{name}"] = float(max(tops)) if tops else None
-        if self.assumptions:
-            out["assumptions"] = list(self.assumptions)
-        if "depth" in self.environment:  # for depth the least matters (seaway.depth)
-            out["least_depth_m"], out["least_depth_at"] = least_depth(self, self.environment["depth"])
-        return out
+        """The route in figures (seaway.result.summary.route_summary): name, ends (and the ends
+        requested), cost, length, legs, time, the ice met, assumptions, least depth."""
+        return route_summary(self, speed_kn)
 
     def __str__(self) -> str:
         return route_table(self)

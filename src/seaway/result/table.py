@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from .environment import CATEGORICAL, STAGES, Category, extreme_name
+from .schedule import short
 
 
 def fmt_lat(v: float) -> str:
@@ -40,13 +41,30 @@ def route_table(route) -> str:
     dist = f"{s['length']:.1f} {units}" + (f" ({s['length_nm']:.1f} nm)" if geo else "")
     lines = [head, f"distance {dist}; cost {route.cost:.6g} {route.unit} (edge cost {route.edge_cost!r}, "
                    f"{route.neighbourhood}x{route.neighbourhood} stencil)"]
-    if "time_h" in s:
+    timed = route.stats.voyage is not None
+    if timed:  # a route on a clock: its real time, departure and arrival
+        lines.append(voyage_line(s))
+    elif "speed_model" in s:  # times from the speed in the ice
+        t = fmt_hours(s["time_h"]) if np.isfinite(s["time_h"]) else "none"
+        lines.append(f"time: {t} ({s['speed_kn']:g} kn in open water; in ice {s['speed_model']})")
+        if s.get("stopped_km"):
+            lines.append(f"no time: the model gives no speed on {s['stopped_km']:.1f} km of the route "
+                         "(ice as thick as the class passes, or closed to it): an icebreaker's escort")
+    elif "time_h" in s:
         lines[-1] += f"; {fmt_hours(s['time_h'])} at {s['speed_kn']:g} kn"
+    if "requested_start" in s:
+        lines.insert(1, f"requested {fmt_point(s['requested_start'], geo)} -> "
+                        f"{fmt_point(s['requested_end'], geo)}")
     lines += [f"assumed: {a}" for a in route.assumptions]
     if np.isfinite(s.get("least_depth_m", np.nan)):
         lines.append(f"least depth {s['least_depth_m']:.1f} m at {fmt_point(s['least_depth_at'], geo)}")
     env = list(route.environment)
-    cols = ["leg", "from", "to", "course", "nm" if geo else "", units, "kn", "hours", "cost"]
+    # One time: a route on a clock shows its real hours (its cost, when in hours, is the same
+    # figure and is left out), the speed made good under way and the arrival at each waypoint.
+    dated = timed and route.stats.voyage.departure is not None
+    cost_col = "" if timed and route.unit == "h" else "cost"
+    cols = ["leg", "from", "to", "course", "nm" if geo else "", units, "kn", "hours",
+            "ETA (UTC)" if dated else "", cost_col]
     cols += [(f"{n} ({'governing' if n in STAGES else 'most frequent'})" if n in CATEGORICAL
               else f"{n} mean/{extreme_name(n)}") for n in env]
     rows = []
@@ -54,8 +72,9 @@ def route_table(route) -> str:
         row = [str(leg.number), fmt_point(leg.start, geo), fmt_point(leg.end, geo),
                f"{leg.course:05.1f}", f"{leg.distance_nm:.1f}" if geo else "",
                f"{leg.distance:.1f}" if geo else f"{leg.distance:.4g}",
-               f"{leg.speed_kn:g}" if leg.speed_kn else "-",
-               f"{leg.time_h:.1f}" if leg.time_h is not None else "-", f"{leg.cost:.5g}"]
+               (f"{leg.speed_kn:.1f}" if timed else f"{leg.speed_kn:.3g}") if leg.speed_kn is not None else "-",
+               f"{leg.time_h:.1f}" if leg.time_h is not None else "-",
+               short(leg.arrive) if dated else "", f"{leg.cost:.5g}" if cost_col else ""]
         for n in env:
             value = leg.environment[n]
             if isinstance(value, Category):
@@ -73,3 +92,17 @@ def route_table(route) -> str:
                          for k, (c, w) in enumerate(zip(cells, width))).rstrip()
     lines += [line(cols)] + [line(r) for r in rows]
     return "\n".join(lines)
+
+
+def voyage_line(s: dict) -> str:
+    """The summary line of a route on a clock: departure, arrival, time, waits, forecast."""
+    text = f"voyage {fmt_hours(s['time_h'])}"
+    if "departure" in s:
+        text = f"departure {s['departure']}, arrival {s['arrival']}: " + text
+    if s.get("hours_waiting"):
+        text += f" ({fmt_hours(s['hours_waiting'])} waiting)"
+    text += f"; forecast {s['forecast']}" if "forecast" in s else ""
+    if "hours_in_danger" in s:
+        text += (f"\nthrough danger zones: {s['hours_in_danger']:.1f} h, the least possible "
+                 "(no route avoids them; Sotnikova 2009)")
+    return text

@@ -4,12 +4,15 @@ of least wave danger by heading, the least time in danger when no safe route exi
 engine settings, and re-planning during the voyage."""
 
 from ..base.units import KNOTS_PER_MS
-from ..vessel import Vessel
-from .forecast import STANDARD_NAMES, find_fields, open_forecast, to_latlon
+from ..vessel import Vessel  # noqa: F401 - the same class as seaway.vessel.Vessel, documented there
+from .files import decode_time, on_grid, open_forecasts
+from .forecast import STANDARD_NAMES, find_fields, grib_times, open_forecast, to_latlon
 from .fuel import FuelCurve, route_fuel, route_min_fuel, tradeoff
 from .grid import ForecastGrid
-from .routes import position_at, replan, rhumb_line_km, route_safest, route_time
+from .routes import position_at, replan, rhumb_line_km, route_ice_weather, route_safest, route_time
+from .sample import kara_autumn
 
-__all__ = ["ForecastGrid", "Vessel", "route_time", "route_safest", "rhumb_line_km", "position_at",
-           "replan", "KNOTS_PER_MS", "STANDARD_NAMES", "find_fields", "open_forecast", "to_latlon",
-           "FuelCurve", "route_fuel", "route_min_fuel", "tradeoff"]
+__all__ = ["ForecastGrid", "route_time", "route_ice_weather", "route_safest", "rhumb_line_km",
+           "position_at", "replan", "KNOTS_PER_MS", "STANDARD_NAMES", "find_fields", "open_forecast",
+           "grib_times", "to_latlon", "FuelCurve", "route_fuel", "route_min_fuel", "tradeoff",
+           "decode_time", "on_grid", "open_forecasts", "kara_autumn"]

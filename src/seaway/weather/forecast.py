@@ -4,28 +4,78 @@ time routing works on, with vector components turned to east/north."""
 
 from __future__ import annotations
 
+import difflib
+
 import numpy as np
 import xarray as xr
 
 from ..base.files import open_netcdf
 from ..chart.cf import GRID_VECTORS, STANDARD_NAMES  # noqa: F401 - part of this API
 
+#: The roles a forecast's fields play in the weather models.
+ROLES = tuple(STANDARD_NAMES)
+#: GRIB short names (ECMWF parameter database, as cfgrib names the variables) by role.
+GRIB_NAMES = {
+    "wave_height": ("swh", "htsgw"),
+    "wave_from": ("mwd",),
+    "wave_period": ("mwp", "pp1d"),
+    "wind_east": ("u10", "10u"),
+    "wind_north": ("v10", "10v"),
+    "wind_speed": ("si10", "ws10"),
+    "current_east": ("uo", "ocu", "uogrd"),
+    "current_north": ("vo", "ocv", "vogrd"),
+}
+
+
+#: Names users write for a role (for the hint of an unknown role).
+_ALIASES = {"wave_direction": "wave_from", "wave_dir": "wave_from", "mean_wave_direction": "wave_from",
+            "wave_to": "wave_from", "hs": "wave_height", "swh": "wave_height",
+            "significant_wave_height": "wave_height", "u10": "wind_east", "v10": "wind_north",
+            "wind_u": "wind_east", "wind_v": "wind_north", "current_u": "current_east",
+            "current_v": "current_north", "mean_wave_period": "wave_period"}
+
+
+def check_roles(variables: dict | None) -> dict:
+    """`variables` ({role: variable name}) with every role checked; an unknown role raises
+    ValueError naming the roles (and the closest one)."""
+    out = dict(variables or {})
+    for role in out:
+        if role not in ROLES:
+            near = _ALIASES.get(str(role).lower()) or next(iter(difflib.get_close_matches(str(role), ROLES, n=1)), None)
+            hint = f" (did you mean {near}?)" if near else ""
+            raise ValueError(f"unknown forecast role {role!r}{hint}; the roles are "
+                             f"{', '.join(ROLES)}")
+    return out
+
+
+def role_of(var) -> tuple[str, str] | None:
+    """(role, how it was found) of a forecast variable by its standard name or GRIB short name."""
+    std = var.attrs.get("standard_name")
+    for role, names in STANDARD_NAMES.items():
+        if std in names:
+            return role, f"standard name {std}"
+    short = str(var.attrs.get("GRIB_shortName") or var.name).lower()
+    for role, names in GRIB_NAMES.items():
+        if short in names:
+            return role, f"GRIB short name {short}"
+    return None
+
 
 def find_fields(ds, variables: dict | None = None) -> dict:
-    """The forecast's fields by role ('current_east', 'wave_height', ...), found by CF standard
-    name, or named explicitly in `variables` (role -> variable name)."""
+    """The forecast's fields by role ('current_east', 'wave_height', ...): named explicitly in
+    `variables` (role -> variable name; an unknown role or variable raises ValueError naming the
+    valid ones), else found by CF standard name, else by GRIB short name (GRIB_NAMES)."""
+    variables = check_roles(variables)
     out = {}
-    for role, names in STANDARD_NAMES.items():
-        if variables and role in variables:
-            if variables[role] not in ds:
-                raise ValueError(f"the forecast has no variable {variables[role]!r} for {role}; "
-                                 f"it has {sorted(ds.data_vars)}")
-            out[role] = ds[variables[role]]
-            continue
-        for var in ds.data_vars.values():
-            if var.attrs.get("standard_name") in names:
-                out[role] = var
-                break
+    for role, name in variables.items():
+        if name not in ds:
+            raise ValueError(f"the forecast has no variable {name!r} for {role}; it has "
+                             f"{sorted(map(str, ds.data_vars))}")
+        out[role] = ds[name]
+    for var in ds.data_vars.values():
+        hit = role_of(var)
+        if hit and hit[0] not in out and hit[0] not in variables:
+            out[hit[0]] = var
     if ("current_east" in out) != ("current_north" in out):
         raise ValueError("the forecast has only one current component; give both "
                          "eastward_sea_water_velocity and northward_sea_water_velocity")
@@ -33,15 +83,30 @@ def find_fields(ds, variables: dict | None = None) -> dict:
 
 
 def open_forecast(path, **kwargs) -> xr.Dataset:
-    """Open a NetCDF forecast, or a GRIB one through cfgrib (pip install cfgrib)."""
+    """Open a NetCDF forecast, or a GRIB one through cfgrib (pip install "seaway[grib]")."""
     path = str(path)
     if path.endswith((".grib", ".grib2", ".grb", ".grb2")):
         try:
             import cfgrib  # noqa: F401
         except ImportError:
-            raise ImportError(f"{path}: reading GRIB needs cfgrib: pip install cfgrib") from None
-        return xr.open_dataset(path, engine="cfgrib", **kwargs)
+            raise ImportError(f'{path}: reading GRIB needs cfgrib: pip install "seaway[grib]" '
+                              f"(cfgrib and eccodes)") from None
+        return grib_times(xr.open_dataset(path, engine="cfgrib", **kwargs), path)
     return open_netcdf(path, "a forecast is CF NetCDF (or GRIB through cfgrib)", **kwargs)
+
+
+def grib_times(ds: xr.Dataset, path="the GRIB forecast") -> xr.Dataset:
+    """cfgrib gives one forecast's frames along `step` (lead time), with their `valid_time`, and
+    `time` the analysis time; time routing reads a `time` axis of valid times, so `valid_time`
+    becomes it. A file holding several analyses (`time` and `step` both dimensions) is refused."""
+    if "step" not in ds.dims:
+        return ds
+    if "time" in ds.dims:
+        raise ValueError(f"{path} holds {ds.sizes['time']} analyses of {ds.sizes['step']} steps; "
+                         f"route on one: seaway.weather.grib_times(xr.open_dataset("
+                         f"path, engine='cfgrib').isel(time=0))")
+    ds = ds.drop_vars("time", errors="ignore").swap_dims(step="valid_time")
+    return ds.drop_vars("step", errors="ignore").rename(valid_time="time")
 
 
 def _axis(ds, name):

@@ -13,7 +13,36 @@ from ..engine.methods import check_options
 from ..engine.prepared import PreparedChart
 from ..models.base import EdgeCost
 from ..vessel import Vessel
+from .files import decode_time, unknown_fields_hint
 from .forecast import STANDARD_NAMES, find_fields
+
+
+def _departure(departure, t, persist) -> tuple[np.datetime64, list[str]]:
+    """(the departure, what it assumes): one outside the forecast's times is refused, or with
+    `persist` routed holding the nearest frame (persistence), said."""
+    try:
+        dep = t[0] if departure is None else np.datetime64(departure, "ns")
+    except (TypeError, ValueError):
+        raise ValueError(f"departure must be a time such as '2026-09-15T06:00' (ISO 8601) or a "
+                         f"datetime64, got {departure!r}") from None
+    if t[0] <= dep <= t[-1]:
+        return dep, []
+    side = "before the forecast's first time" if dep < t[0] else "after the forecast's last time"
+    gap = abs(dep - (t[0] if dep < t[0] else t[-1])) / np.timedelta64(1, "h")
+    span = f"{_iso(t[0])} to {_iso(t[-1])}"
+    if not persist:
+        raise ValueError(f"departure {_iso(dep)} is {gap:g} h {side} (the forecast covers {span}): "
+                         "the weather then is unknown; depart within the forecast, give a forecast "
+                         "that covers the departure, or pass --persist (persist=True) to hold its "
+                         "nearest frame")
+    held = "its first frame is held until the forecast begins" if dep < t[0] else \
+        "its last frame is held for the whole voyage"
+    return dep, [f"persistence: the departure {_iso(dep)} is {gap:g} h {side} ({span}); {held}"]
+
+
+def _iso(t) -> str:
+    """A time as YYYY-MM-DDTHH:MM (UTC)."""
+    return str(np.datetime_as_string(np.datetime64(t, "m"), unit="m"))
 
 
 def _time_axis(ds, departure):
@@ -28,8 +57,7 @@ def _time_axis(ds, departure):
     if step <= 0 or np.max(np.abs(np.diff(hours) - step)) > 1e-6:
         raise ValueError("forecast times must be regularly spaced and increasing; "
                          "resample it, e.g. ds.resample(time='6h').interpolate()")
-    dep = t[0] if departure is None else np.datetime64(departure)
-    return t.size, float((t[0] - dep) / np.timedelta64(1, "h")), step
+    return t.size, float((t[0] - departure) / np.timedelta64(1, "h")), step
 
 
 def _frames(field, chart_dims, frames) -> np.ndarray:
@@ -46,17 +74,35 @@ class ForecastGrid:
     """A forecast as the engine reads it: float32 (frames, rows, cols) fields by role (NaN set
     to 0), the time axis relative to `departure` (default the first time), and where the sea is
     (not NaN in every field). The models of seaway.models read it; prepare() gives the chart
-    to route on (its static cost: 1 per km)."""
+    to route on (its static cost: 1 per km).
 
-    def __init__(self, forecast, variables=None, departure=None):
+    A time axis that is not datetime64 is decoded first (seaway.weather.files.decode_time: CF
+    units, CDO's "day as %Y%m%d.%f", cfgrib's steps). A departure outside the forecast's times
+    is refused unless `persist` (then the nearest frame is held, and `assumptions` says so).
+    `source` names the forecast in the routes' outputs."""
+
+    def __init__(self, forecast, variables=None, departure=None, *, persist=False, source=None):
+        forecast = decode_time(forecast)
         fields = find_fields(forecast, variables)
         if not fields:
             raise ValueError("the forecast has no field seaway knows; mark them with CF standard "
                              f"names ({', '.join(n[0] for n in STANDARD_NAMES.values())}) or pass "
-                             "variables=")
+                             "variables={role: name}" + unknown_fields_hint(forecast))
         some = next(iter(fields.values()))
         dims = tuple(d for d in some.dims if d != "time")
-        self.frames, self.first_h, self.step_h = _time_axis(forecast, departure)
+        #: What routing through this forecast assumes (persistence), for the routes' outputs.
+        self.assumptions: list[str] = []
+        self.departure = None
+        times = forecast["time"].values if "time" in forecast.dims else None
+        if times is not None:
+            self.departure, self.assumptions = _departure(departure, times, persist)
+        elif departure is not None:
+            self.departure = np.datetime64(departure, "ns")
+            self.assumptions = ["the forecast has no time axis: its fields are held for the whole voyage"]
+        self.frames, self.first_h, self.step_h = _time_axis(forecast, self.departure)
+        #: The times the forecast covers (None without a time axis).
+        self.times = times
+        self.source = source or forecast.attrs.get("title") or "forecast in memory"
         arrays = {role: _frames(f, dims, self.frames) for role, f in fields.items()}
         self.dry = np.all([np.isnan(a).all(axis=0) for a in arrays.values()], axis=0)
         if "wind_speed" not in arrays and "wind_east" in arrays:
@@ -65,10 +111,6 @@ class ForecastGrid:
         self.arrays = {k: np.ascontiguousarray(np.nan_to_num(a, nan=0.0)) for k, a in arrays.items()}
         self.template = some.isel(time=0, drop=True) if "time" in some.dims else some
         self.shape = self.dry.shape
-        self.departure = None
-        if "time" in forecast.dims:
-            self.departure = (forecast["time"].values[0] if departure is None
-                              else np.datetime64(departure))
 
     def prepare(self, land=None, neighbourhood=5, keep_away=()) -> PreparedChart:
         """The forecast's lat/lon grid as a chart: land where every field is NaN or `land` is
@@ -83,7 +125,26 @@ class ForecastGrid:
             raise ValueError("weather routing needs a forecast on a lat/lon grid (coordinates lat/lon)")
         return PreparedChart.from_chart(chart, neighbourhood, "full", EdgeCost("max"))
 
+    def describe(self) -> str:
+        """The forecast in words, for the routes' outputs: its source and the times it covers."""
+        if self.times is None:
+            return f"{self.source} (no time axis)"
+        step = f", every {self.step_h:g} h" if self.frames > 1 else ""
+        return f"{self.source} ({_iso(self.times[0])} to {_iso(self.times[-1])}{step})"
+
+    def assumed(self, arrival) -> list[str]:
+        """What a voyage arriving at `arrival` assumes of this forecast: its persistence notes,
+        and its last frame held past its last time."""
+        out = list(self.assumptions)
+        if self.times is not None and arrival is not None and arrival > self.times[-1] and \
+                not any("last frame" in a for a in out):
+            hours = (arrival - self.times[-1]) / np.timedelta64(1, "h")
+            out.append(f"persistence: the voyage arrives {hours:.1f} h after the forecast's last "
+                       f"time ({_iso(self.times[-1])}); its last frame is held until then")
+        return out
+
     def engine(self) -> _core.Forecast:
+        """The forecast's fields as the C++ core's Forecast object."""
         return _core.Forecast(self.first_h, self.step_h, **self.arrays)
 
     def frame_at(self, hours, roles) -> ForecastGrid:
@@ -106,13 +167,15 @@ class ForecastGrid:
             out.departure = self.departure + np.timedelta64(int(round(hours * 3.6e12)), "ns")
         return out
 
-    def best_extra_kn(self, vessel: Vessel) -> float:
+    def best_extra_kn(self, vessel: Vessel, slowest_kn: float | None = None) -> float:
         """The most the weather can add to a calm-water speed: following seas under Khokhlov's
-        formula, plus the strongest current (for A*'s admissible bound)."""
+        formula, plus the strongest current (for A*'s admissible bound). slowest_kn: the least
+        speed the formula is applied to (default the vessel's; in ice, 0)."""
         extra, a = 0.0, self.arrays
+        v0 = vessel.speed_kn if slowest_kn is None else slowest_kn
         if vessel.speed_loss == "khokhlov" and "wave_height" in a:
             gain = (0.275 * np.pi - 0.745) * 1.32 * float(a["wave_height"].max())
-            extra += max(gain, 0.0) * (1 - 1.35e-6 * vessel.displacement_t * vessel.speed_kn)
+            extra += max(gain, 0.0) * (1 - 1.35e-6 * vessel.displacement_t * v0)
         if "current_east" in a:
             extra += float(np.hypot(a["current_east"], a["current_north"]).max()) * KNOTS_PER_MS
         return extra

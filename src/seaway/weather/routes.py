@@ -1,5 +1,5 @@
-"""Time-optimal and least-danger routes through forecasts of currents, wind and waves (papers
-001, 003 and 004), and re-planning during the voyage.
+"""Time-optimal and least-danger routes through forecasts of currents, wind and waves
+(Olovyannikov 2025, Grinyak et al. 2018, Sotnikova 2009), and re-planning during the voyage.
 
 A step's cost is its duration in hours. The weather is read at both ends of the step, at the
 time the ship starts it, linearly interpolated between forecast frames (held constant before
@@ -14,7 +14,7 @@ Physics (Olovyannikov 2025), computed in the C++ core for every step and course:
   D displacement in t, V in knots; valid for 5000-25000 t and 9-20 kn;
 * speed over ground holding the track through a current Vt at angle q to the course:
   V = Vt cos q + sqrt(V0^2 - (Vt sin q)^2). The paper prints a plus under the root; holding
-  the track means cancelling the cross current, which gives the minus (DOMAIN.md), and
+  the track means cancelling the cross current, which gives the minus, and
   Vt |sin q| >= V0 (the track cannot be held) is impassable;
 * impassable where the wind exceeds max_wind_ms (25 m/s) or the waves max_wave_m (5 m), and,
   for Sotnikova 2009's moving danger zones, where the wind exceeds danger_wind_ms (11 m/s) at the
@@ -29,21 +29,26 @@ from ..base.sphere import rhumb_line_km  # noqa: F401 - part of this API
 from ..engine.danger import least_danger_route
 from ..engine.methods import heuristic_weight
 from ..errors import NoRouteError
-from ..models import TravelTime, WaveDanger
+from ..ice.season import SeasonGrid
+from ..models import IceWeatherTime, TravelTime, WaveDanger
 from ..result.route import Route
 from ..vessel import Vessel
+from .files import on_grid
 from .grid import ForecastGrid
 
 
 def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=None, land=None,
                neighbourhood=5, method="astar", variables=None, zones=(), keep_away=(), via=(),
-               if_no_safe_route="least_danger") -> Route:
+               if_no_safe_route="least_danger", persist=False, source=None) -> Route:
     """The quickest route from `start` to `end` (lat, lon) through a forecast.
 
     forecast: xarray.Dataset on a regular lat/lon grid, optionally with a `time` dimension
         (regular steps, e.g. 6-hourly); fields found by CF standard name (STANDARD_NAMES) or
         `variables`. NaN in every field at a pixel marks land, as do True pixels of `land`.
-    departure: a datetime (numpy/pandas/str) within or before the forecast; default its first time.
+    departure: a datetime (numpy/pandas/str) within the forecast's times; default its first time.
+        One outside them is refused unless persist=True (its nearest frame held, said in
+        Route.assumptions). A time axis that is not decoded yet (CDO's "day as %Y%m%d.%f") is.
+    source: the forecast's name in the outputs (its files), default its title.
     zones: seaway.constraints.Zone exclusions, each optionally closed only in a time window
         (`active=(t0, t1)`): the ship waits or detours only while a zone is closed.
     keep_away: hard seaway.constraints.KeepAway buffers (from land or a boolean ice mask).
@@ -60,9 +65,8 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
     """
     if if_no_safe_route not in ("least_danger", "raise"):
         raise ValueError(f"if_no_safe_route must be 'least_danger' or 'raise', got {if_no_safe_route!r}")
-    vessel.check()
     heuristic_weight(method, None)
-    fc = ForecastGrid(forecast, variables, departure)
+    fc = ForecastGrid(forecast, variables, departure, persist=persist, source=source)
     model = TravelTime(fc, vessel, zones=zones)
     prepared = fc.prepare(land, neighbourhood, keep_away)
     try:
@@ -75,6 +79,36 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
         if r is None:
             raise
         return r
+
+
+def route_ice_weather(season, forecast, start, end, *, ice_class="Arc7", vessel: Vessel = Vessel(),
+                      departure=None, persist=False, variables=None, land=None, neighbourhood=5,
+                      method="astar", speed="andreeva", source=None, **speed_options) -> Route:
+    """The quickest route through ice and weather at once (seaway.models.IceWeatherTime): each
+    step crosses the ice chart valid when it starts at the class's speed (Andreeva 2021's
+    V = F x V0 with V0 = vessel.speed_kn, or a speed table: see seaway.ice.season), changed by
+    the forecast's currents and waves then as a calm-water speed is; the class's limits close
+    the ice it may not enter; the ship may wait for a later chart.
+
+    season: a season of ice charts (a Dataset or NetCDF path with a time axis, see
+        seaway.ice.season.as_season; or a SeasonGrid); one chart: expand_dims(time=[date]).
+    forecast: a forecast Dataset on a lat/lon grid; resampled onto the season's grid
+        (seaway.weather.files.on_grid) unless it is on it. departure, persist, variables: as in
+        route_time; the departure must lie within the season too.
+    Returns a Route whose cost is the passage time in hours, waits included; stats.voyage holds
+    departure, arrival, waits, the charts used, the forecast and what was assumed."""
+    heuristic_weight(method, None)
+    grid = season if isinstance(season, SeasonGrid) else SeasonGrid(season, land)
+    t = grid.template
+    lat, lon = (t[d].values for d in t.dims)
+    if not grid.prepare(neighbourhood).chart.geographic:
+        raise ValueError("routing through ice and weather needs the ice charts on a lat/lon grid; "
+                         "move them onto one first (seaway.weather.to_latlon)")
+    forecast, notes = on_grid(forecast, lat, lon, t.dims)
+    fc = ForecastGrid(forecast, variables, departure, persist=persist, source=source)
+    fc.assumptions += notes
+    model = IceWeatherTime(grid, fc, ice_class, vessel, speed=speed, **speed_options)
+    return grid.prepare(neighbourhood).route(start, end, model=model, method=method)
 
 
 def route_safest(forecast, start, end, *, ship_length_m, speed_kn, at_hours=0.0, land=None,

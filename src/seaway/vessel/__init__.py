@@ -7,11 +7,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _core
-from .base.validate import number
+from .. import _core
+from ..base.validate import number
 
 #: The speed-loss formulas of the engine (cpp/seaway/weather.hpp).
-SPEED_LOSSES = tuple(_core.SpeedLoss.__members__)
+SPEED_LOSSES: tuple[str, ...] = tuple(_core.SpeedLoss.__members__)
 
 @dataclass(frozen=True)
 class Vessel:
@@ -32,13 +32,14 @@ class Vessel:
     length_m: float | None = None  # waterline length
     calm_resistance_kn: float | None = None  # calm-water resistance at speed_kn, kN
 
-    def _outside(self, msg):
+    def _outside(self, msg: str) -> None:
         if self.outside_validity == "warn":
             warnings.warn(msg, stacklevel=4)
         else:
-            raise ValueError(msg + "; pass outside_validity='warn' to go on, or another speed_loss")
+            raise ValueError(msg + "; pass outside_validity='warn' to go on (in a vessel file: "
+                             "outside_validity = \"warn\"), or another speed_loss")
 
-    def check_waves(self, max_hs_m: float):
+    def check_waves(self, max_hs_m: float) -> None:
         """STAWAVE-1 holds for Hs <= 2.25 sqrt(L / 100) (ITTC 7.5-04-01-01.1)."""
         if self.speed_loss != "stawave1" or self.length_m is None:
             return
@@ -47,7 +48,9 @@ class Vessel:
             self._outside(f"STAWAVE-1 holds for significant heights up to 2.25 sqrt(L/100) = "
                           f"{limit:.2f} m; the forecast has {max_hs_m:.2f} m")
 
-    def check(self):
+    def check(self, waves: bool = True) -> None:
+        """Validate the numbers; `waves`: whether the forecast has waves (else the speed-loss
+        formula's range is not checked: it is not used)."""
         number(self.speed_kn, "speed_kn", above=0, what="positive", example=12.0)
         for name in ("displacement_t", "max_wind_ms", "max_wave_m"):
             number(getattr(self, name), name, above=0)
@@ -61,7 +64,7 @@ class Vessel:
             if not all(v is not None and np.isfinite(v) and v > 0 for v in sizes):
                 raise ValueError("speed_loss='stawave1' needs positive beam_m, length_m and "
                                  "calm_resistance_kn (kN at speed_kn)")
-        if self.speed_loss == "khokhlov":
+        if self.speed_loss == "khokhlov" and waves:
             inside = 5000 <= self.displacement_t <= 25000 and 9 <= self.speed_kn <= 20
             if not inside:
                 self._outside(f"Khokhlov's speed-loss formula holds for 5000-25000 t and 9-20 kn; "
@@ -85,3 +88,9 @@ class Vessel:
         v.beam_m, v.length_m = self.beam_m or 0.0, self.length_m or 0.0
         v.calm_resistance_kn = self.calm_resistance_kn or 0.0
         return v
+
+
+# Vessel files (TOML or JSON profiles): seaway.vessel.load(path or example name).
+from .profile import EXAMPLES, Profile, VesselFileError, load  # noqa: E402
+
+__all__ = ["EXAMPLES", "SPEED_LOSSES", "Profile", "Vessel", "VesselFileError", "load"]

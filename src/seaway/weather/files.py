@@ -1,0 +1,241 @@
+"""Forecast files as they come: one file per variable, CF NetCDF with or without standard names,
+NetCDF that CDO converted from GRIB (variables named var229, an absolute time axis "day as
+%Y%m%d.%f"), GRIB through cfgrib (the [grib] extra); merged into one Dataset whose fields the
+weather models find by role.
+
+* Roles (ROLES): found by CF standard name (STANDARD_NAMES), then by GRIB short name
+  (GRIB_NAMES: swh, mwd, mwp, u10, v10, uo, vo, ...), or given as {role: variable}; an unknown
+  role is refused naming the valid ones, and a file whose variables are only GRIB code numbers
+  (CDO's varNNN) is refused naming the flags that map them.
+* Time (decode_time): CF "UNIT since DATE" in the standard calendars, CDO's absolute "day as
+  %Y%m%d.%f", and cfgrib's lead times (`step` with `valid_time`) become a datetime64 `time`
+  axis; anything else is refused naming the time variable and how to fix it.
+* Several files are merged on time: on the span they share, every `step` hours (the finest
+  step of the files), linearly in time as the engine reads frames; on the first file's grid."""
+
+from __future__ import annotations
+
+import re
+import warnings
+
+import numpy as np
+import xarray as xr
+
+from ..chart.cf import STANDARD_NAMES, coord_role
+from .forecast import ROLES, check_roles, grib_times, open_forecast, role_of
+
+#: GRIB code numbers that CDO writes as varNNN, with their meaning in ECMWF's tables (a hint in
+#: the error only: a code number alone does not say which table it is from).
+CDO_CODES = {"var229": ("wave_height", "table 140: significant height of wind waves and swell"),
+             "var230": ("wave_from", "table 140: mean wave direction"),
+             "var232": ("wave_period", "table 140: mean wave period"),
+             "var165": ("wind_east", "table 128: 10 m eastward wind"),
+             "var166": ("wind_north", "table 128: 10 m northward wind"),
+             "var207": ("wind_speed", "table 128: 10 m wind speed")}
+_CDO_ABSOLUTE = re.compile(r"^\s*day\s+as\s+%Y%m%d(\.%f)?\s*$")
+
+
+def unknown_fields_hint(ds) -> str:
+    """A sentence naming the --forecast-variable flags for CDO's varNNN names, or ''."""
+    codes = [n for n in map(str, ds.data_vars) if n in CDO_CODES]
+    if not codes:
+        return ""
+    flags = " ".join(f"--forecast-variable {CDO_CODES[n][0]}={n}" for n in codes)
+    meaning = "; ".join(f"{n} = {CDO_CODES[n][1]}" for n in codes)
+    return (f"; its variables look like GRIB code numbers written by CDO ({meaning} in ECMWF's "
+            f"tables, but a code number alone does not say which table): if they are, map them "
+            f"with {flags} (variables={{role: name}} in the API)")
+
+
+def _time_name(ds) -> str | None:
+    for name, c in ds.coords.items():
+        if name == "time" or c.attrs.get("axis") == "T" or c.attrs.get("standard_name") == "time":
+            return str(name)
+    return None
+
+
+def decode_time(ds: xr.Dataset, source: str = "the forecast") -> xr.Dataset:
+    """`ds` with its time axis as datetime64 values in a dimension named `time` (see the
+    module docstring); a forecast without a time axis is returned unchanged."""
+    if "step" in ds.dims and "valid_time" in ds.coords:  # cfgrib: one run's frames along step
+        ds = grib_times(ds, source)
+    name = _time_name(ds)
+    if name is None:
+        return ds
+    t = ds[name]
+    if not np.issubdtype(t.dtype, np.datetime64):
+        ds = ds.assign_coords({name: (t.dims, _decode(t, source), _kept(t.attrs))})
+    if name != "time":
+        ds = ds.rename({name: "time"})
+    if "time" not in ds.dims and ds["time"].ndim == 0:
+        ds = ds.expand_dims("time")
+    if ds["time"].ndim != 1:
+        raise ValueError(f"{source}: its time variable {name!r} is not one axis ({ds['time'].dims})")
+    return ds
+
+
+def _kept(attrs):
+    return {k: v for k, v in attrs.items() if k not in ("units", "calendar")}
+
+
+def _decode(t, source) -> np.ndarray:
+    units = str(t.attrs.get("units", t.encoding.get("units", "")))
+    calendar = str(t.attrs.get("calendar", "standard")).lower()
+    fix = (f"give it CF units such as 'hours since 2026-09-15 00:00:00' (e.g. cdo -r setreftime or "
+           f"ncatted -a units,{t.name},o,c,'hours since ...')")
+    if calendar not in ("standard", "gregorian", "proleptic_gregorian"):
+        raise ValueError(f"{source}: its time variable {t.name!r} is in the {calendar!r} calendar; "
+                         "seaway needs real dates (standard or proleptic_gregorian calendar)")
+    values = np.asarray(t.values)
+    if _CDO_ABSOLUTE.match(units):  # CDO's absolute axis: YYYYMMDD plus the fraction of the day
+        v = values.astype(np.float64)
+        if not np.all(np.isfinite(v)):
+            raise ValueError(f"{source}: its time variable {t.name!r} has missing values")
+        day = np.floor(v).astype(np.int64)
+        try:
+            dates = np.array([np.datetime64(f"{d // 10000:04d}-{d // 100 % 100:02d}-{d % 100:02d}")
+                              for d in day.ravel()], "datetime64[s]").reshape(day.shape)
+        except ValueError:
+            raise ValueError(f"{source}: its time variable {t.name!r} ({units!r}) holds "
+                             f"{v.ravel()[0]!r}, not a date YYYYMMDD.fraction; {fix}") from None
+        seconds = np.round((v - day) * 86400.0).astype(np.int64)
+        return (dates + seconds.astype("timedelta64[s]")).astype("datetime64[ns]")
+    if " since " in units:
+        try:
+            out = xr.coding.times.decode_cf_datetime(values, units, calendar)
+        except Exception as exc:  # xarray raises several types for unparsable units
+            raise ValueError(f"{source}: cannot decode its time variable {t.name!r} ({units!r}: "
+                             f"{exc}); {fix}") from None
+        if np.issubdtype(np.asarray(out).dtype, np.datetime64):
+            return np.asarray(out, "datetime64[ns]")
+    raise ValueError(f"{source}: cannot decode its time variable {t.name!r} (units {units!r}): "
+                     f"{fix}")
+
+
+def open_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, list[str]]:
+    """(one forecast Dataset, notes) from one or more files (NetCDF or GRIB): times decoded,
+    the fields renamed to their roles, the files merged on time (module docstring). `variables`
+    maps roles to variable names in any of the files. Notes say which variable plays each role
+    and how the files were merged."""
+    paths = [str(p) for p in ([paths] if isinstance(paths, (str, bytes)) or hasattr(paths, "__fspath__")
+                              else paths)]
+    if not paths:
+        raise ValueError("give at least one forecast file")
+    wanted = check_roles(variables)
+    parts, notes, found = [], [], {}
+    for path in paths:
+        ds = decode_time(_open_grib(path) if _grib(path) else open_forecast(path, decode_times=False), path)
+        fields = {}
+        for role, name in wanted.items():
+            if name in ds.data_vars and role not in found:
+                fields[role] = (name, "given")
+        for name, var in ds.data_vars.items():
+            hit = role_of(var)
+            if hit and hit[0] not in fields and hit[0] not in found and hit[0] not in wanted:
+                fields[hit[0]] = (str(name), hit[1])
+        if not fields:
+            raise ValueError(f"{path}: no forecast field seaway knows (variables "
+                             f"{sorted(map(str, ds.data_vars))}); mark them with CF standard names "
+                             "or map them to roles with --forecast-variable ROLE=NAME (roles: "
+                             f"{', '.join(ROLES)}){unknown_fields_hint(ds)}")
+        for role, (name, how) in fields.items():
+            found[role] = name
+            notes.append(f"forecast {role} = {path}:{name} ({how})")
+        part = ds[[n for n, _ in fields.values()]].rename({n: r for r, (n, _) in fields.items()})
+        for role in fields:
+            part[role].attrs["standard_name"] = STANDARD_NAMES[role][0]
+        parts.append((path, part))
+    missing = {r: n for r, n in wanted.items() if r not in found}
+    if missing:
+        role, name = next(iter(missing.items()))
+        raise ValueError(f"no forecast file has a variable {name!r} for {role}; the files have "
+                         + "; ".join(f"{p}: {sorted(map(str, d.data_vars))}" for p, d in parts))
+    return _merge(parts, notes), notes
+
+
+def _open_grib(path: str) -> xr.Dataset:
+    """A GRIB file through cfgrib, its messages of every level merged (a forecast file often
+    holds waves at the surface and winds at 10 m); no index file is written beside it."""
+    try:
+        import cfgrib
+    except ImportError:
+        raise ImportError(f'{path}: reading GRIB needs cfgrib: pip install "seaway[grib]" (cfgrib '
+                          "and eccodes)") from None
+    try:
+        with warnings.catch_warnings():  # cfgrib's own merge warns of xarray's coming defaults
+            warnings.simplefilter("ignore", FutureWarning)
+            parts = cfgrib.open_datasets(path, backend_kwargs={"indexpath": ""})
+    except Exception as exc:  # eccodes and cfgrib raise many types
+        raise ValueError(f"{path}: cannot read it as GRIB ({exc})") from None
+    if not parts:
+        raise ValueError(f"{path}: the GRIB file holds no field")
+    keep = {"time", "step", "valid_time"}
+    parts = [d.drop_vars([c for c in d.coords if c not in d.dims and c not in keep]) for d in parts]
+    return xr.merge(parts, compat="override", join="outer")
+
+
+def _grib(path: str) -> bool:
+    return path.lower().endswith((".grib", ".grib2", ".grb", ".grb2"))
+
+
+def _span(ds):
+    t = ds["time"].values
+    return t[0], t[-1], (np.min(np.diff(t)) if t.size > 1 else None)
+
+
+def _merge(parts, notes) -> xr.Dataset:
+    if len(parts) == 1:
+        return parts[0][1]
+    first = parts[0][1]
+    timed = [(p, d) for p, d in parts if "time" in d.dims and d.sizes["time"] > 1]
+    axis = None
+    if timed:
+        spans = [_span(d) for _, d in timed]
+        start, stop = max(s[0] for s in spans), min(s[1] for s in spans)
+        if start > stop:
+            raise ValueError("the forecast files share no time: " + "; ".join(
+                f"{p}: {s[0]} to {s[1]}" for (p, _), s in zip(timed, spans)))
+        step = min(s[2] for s in spans)
+        axis = np.arange(start, stop + step // 2, step)
+        if any(d.sizes["time"] != axis.size or not np.array_equal(d["time"].values, axis) for _, d in timed):
+            notes.append(f"forecast files merged on their common span {start} to {stop}, every "
+                         f"{step / np.timedelta64(1, 'h'):g} h (linear in time)")
+    out = []
+    for path, d in parts:
+        if "time" in d.dims and d.sizes["time"] == 1:
+            d = d.isel(time=0, drop=True)
+        if axis is not None and "time" in d.dims:
+            d = d.interp(time=axis)
+        grid = [c for c in ("lat", "lon", "latitude", "longitude", "y", "x") if c in first.dims and c in d.dims]
+        if any(not np.array_equal(d[c].values, first[c].values) for c in grid):
+            d = d.interp({c: first[c] for c in grid})
+            notes.append(f"{path}: resampled onto the grid of {parts[0][0]} (linear)")
+        out.append(d.drop_vars([c for c in d.coords if c not in d.dims and c != "time"], errors="ignore"))
+    return xr.merge(out, compat="override", join="exact")
+
+
+def on_grid(ds: xr.Dataset, lat, lon, dims=("lat", "lon"), source="the forecast"):
+    """(the forecast on the lat/lon grid `lat`, `lon` with dimensions `dims`, notes): resampled
+    linearly in latitude and longitude (exact where the grids share points; longitudes in either
+    convention). Pixels outside the forecast's extent have no weather (calm), which the notes
+    say."""
+    role = {coord_role(str(n), c.attrs): str(n) for n, c in ds.coords.items() if c.ndim == 1}
+    if "lat" not in role or "lon" not in role:
+        raise ValueError(f"{source} is not on a lat/lon grid (its coordinates: {sorted(map(str, ds.coords))}); "
+                         "move it onto one first (seaway.weather.to_latlon)")
+    lat, lon = np.asarray(lat, float), np.asarray(lon, float)
+    src_lon = np.asarray(ds[role["lon"]].values, float)
+    want_lon = lon % 360.0 if src_lon.max() > 180.0 else (lon + 180.0) % 360.0 - 180.0
+    out = ds.interp({role["lat"]: xr.DataArray(lat, dims=dims[0]),
+                     role["lon"]: xr.DataArray(want_lon, dims=dims[1])})
+    out = out.drop_vars([role["lat"], role["lon"]], errors="ignore")
+    out = out.assign_coords({dims[0]: lat, dims[1]: lon})
+    src_lat = np.asarray(ds[role["lat"]].values, float)
+    inside_lat = (lat >= src_lat.min()) & (lat <= src_lat.max())
+    inside_lon = (want_lon >= src_lon.min()) & (want_lon <= src_lon.max())
+    outside = 1.0 - inside_lat.mean() * inside_lon.mean()
+    notes = []
+    if outside > 0:
+        notes.append(f"{100 * outside:.0f} % of the grid lies outside {source}: no weather (calm) "
+                     "is assumed there")
+    return out, notes
