@@ -23,10 +23,18 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from ..base.units import EARTH_RADIUS_KM
+
+if TYPE_CHECKING:
+    from ..models.base import CostModel
+    from .prepared import PreparedChart
+
+Floats = npt.NDArray[np.float64]
 
 #: Pixels in the sample the counts are estimated from.
 SAMPLE = 4096
@@ -50,14 +58,14 @@ LANDMARK_FIT = {"landmarks": (0.529, 0.352, 0.46), "landmarks one thread": (0.08
 class Sample:
     """SAMPLE pixels reached by the landmarks: flat index, row, col, their landmark rows."""
 
-    flat: np.ndarray
-    rows: np.ndarray
-    cols: np.ndarray
-    table: np.ndarray  # (landmarks, SAMPLE) float64: one landmark's costs contiguous
+    flat: npt.NDArray[np.int64]
+    rows: npt.NDArray[np.int64]
+    cols: npt.NDArray[np.int64]
+    table: Floats  # (landmarks, SAMPLE): one landmark's costs contiguous
     reached: int       # pixels the landmarks reach (the population sampled)
 
 
-def make_sample(table: np.ndarray, cols: int) -> Sample:
+def make_sample(table: npt.NDArray[np.float32], cols: int) -> Sample:
     """A fixed sample (seeded: the same chart gives the same choice) of the pixels the landmarks
     reach; table: the (pixels, landmarks) tables."""
     reached = np.flatnonzero(np.isfinite(table[:, 0]))
@@ -67,26 +75,30 @@ def make_sample(table: np.ndarray, cols: int) -> Sample:
                   int(reached.size))
 
 
-def _bound(table: np.ndarray, at: np.ndarray) -> np.ndarray:
+def _bound(table: Floats, at: Floats) -> Floats:
     """max over landmarks l of |table[l] - at[l]|, skipping landmarks that reach neither (NaN)."""
-    out = np.abs(table[0] - at[0])
+    out: Floats = np.abs(table[0] - at[0])
     for row, x in zip(table[1:], at[1:]):
         np.fmax(out, np.abs(row - x), out=out)
     return out
 
 
-def _distance(prepared, rows, cols, rc) -> np.ndarray:
+def _distance(prepared: PreparedChart, rows: npt.NDArray[np.int64], cols: npt.NDArray[np.int64],
+              rc: tuple[int, int]) -> Floats:
     """Straight-line (planar) or great-circle (km) distance from pixels to pixel rc."""
     g = prepared.chart.grid
     if not g.geographic:
-        return np.hypot((rows - rc[0]) * g.dy, (cols - rc[1]) * g.dx)
+        out: Floats = np.hypot((rows - rc[0]) * g.dy, (cols - rc[1]) * g.dx)
+        return out
     lat, lon = np.radians(g.lat0 + rows * g.dlat), np.radians(g.lon0 + cols * g.dlon)
     lat2, lon2 = math.radians(g.lat0 + rc[0] * g.dlat), math.radians(g.lon0 + rc[1] * g.dlon)
     h = np.sin((lat - lat2) / 2) ** 2 + np.cos(lat) * math.cos(lat2) * np.sin((lon - lon2) / 2) ** 2
-    return 2 * EARTH_RADIUS_KM * np.arcsin(np.sqrt(np.minimum(h, 1.0)))
+    km: Floats = 2 * EARTH_RADIUS_KM * np.arcsin(np.sqrt(np.minimum(h, 1.0)))
+    return km
 
 
-def settled(prepared, model, sample: Sample, table, s, e, astar_potential: bool) -> dict:
+def settled(prepared: PreparedChart, model: CostModel, sample: Sample, table: npt.NDArray[np.float32],
+            s: tuple[int, int], e: tuple[int, int], astar_potential: bool) -> dict[str, float]:
     """Predicted pixels each exact search settles for the query s -> e (pixels (row, col))."""
     cols = prepared.chart.shape[1]
     ts, te = (np.asarray(table[p[0] * cols + p[1]], float) for p in (s, e))
@@ -100,7 +112,7 @@ def settled(prepared, model, sample: Sample, table, s, e, astar_potential: bool)
     n = sample.reached / a.size
     ball = n * np.count_nonzero(a < c)
     ellipse = n * np.count_nonzero(a + b < (1 + LANDMARK_SLACK) * c) + LANDMARK_FLOOR
-    pixels = {"dijkstra": ball, "astar": n * np.count_nonzero(a + h < c)}
+    pixels: dict[str, float] = {"dijkstra": ball, "astar": n * np.count_nonzero(a + h < c)}
     if astar_potential:
         pixels["bidirectional A*"] = n * (np.count_nonzero(a + (h - g) / 2 < c / 2)
                                           + np.count_nonzero(b + (g - h) / 2 < c / 2))
@@ -111,7 +123,8 @@ def settled(prepared, model, sample: Sample, table, s, e, astar_potential: bool)
     return {m: float(max(p, ROUND_PIXELS if m in START_S else 1.0)) for m, p in pixels.items()}
 
 
-def estimate(prepared, model, sample: Sample, table, s, e, astar_potential: bool) -> dict:
+def estimate(prepared: PreparedChart, model: CostModel, sample: Sample, table: npt.NDArray[np.float32],
+             s: tuple[int, int], e: tuple[int, int], astar_potential: bool) -> dict[str, float]:
     """Predicted seconds of each exact method for the query s -> e (pixels (row, col))."""
     pixels = settled(prepared, model, sample, table, s, e, astar_potential)
     return {m: START_S.get(m, 0.0) + p * PIXEL_NS[m] * 1e-9 for m, p in pixels.items()}

@@ -127,7 +127,8 @@ def refine(prepared: PreparedChart, model: CostModel, method: str, requested: st
         return method
     times = costmodel.estimate(prepared, model, prepared.landmark_sample(model), landmarks.table,
                                s, e, low_contrast(prepared))
-    return min(times, key=lambda m: times[m])
+    best: str = min(times, key=lambda m: times[m])
+    return best
 
 
 def search(prepared: PreparedChart, engine: _core.Model, s: int, e: int, method: str,

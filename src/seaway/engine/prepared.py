@@ -94,7 +94,8 @@ class PreparedChart:
         self.neighbourhood, self.directions = neighbourhood, directions
         self.router = _core.make_router(chart.values, chart.land, chart.grid, neighbourhood,
                                         directions, land_rule)
-        self._landmarks, self._samples, self.landmark_stats = {}, {}, {}
+        self._landmarks, self.landmark_stats = {}, {}
+        self._samples: dict[str, costmodel.Sample] = {}
 
     def prepare_landmarks(self, count: int = 8, *,
                           model: CostModel | str | None = None) -> LandmarkStats:
@@ -120,7 +121,7 @@ class PreparedChart:
         """The landmark tables prepared for `model`, or None."""
         return self._landmarks.get(model.name)
 
-    def landmark_sample(self, model: CostModel):
+    def landmark_sample(self, model: CostModel) -> costmodel.Sample:
         """The pixels sampled from `model`'s landmark tables for the cost model of "auto"."""
         return self._samples[model.name]
 
