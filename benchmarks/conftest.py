@@ -15,6 +15,7 @@ MEDIANS: dict[str, float] = {}
 NOTES: dict[str, str] = {}
 CPU: dict[str, float] = {}  # median CPU seconds of the process (all threads), where recorded
 PEERS: dict[str, str] = {}  # the case a ratio is taken against (default: skimage 8-conn)
+VOYAGES: dict[str, list] = {}  # rows and notes of test_voyages.py (voyage_table.py prints them)
 
 
 @pytest.fixture(scope="session")
@@ -37,6 +38,10 @@ def record(name, benchmark, note="", cpu=None, peer=None):
 
 
 def pytest_terminal_summary(terminalreporter):
+    from .voyage_table import lines
+
+    for line in lines(VOYAGES):
+        terminalreporter.write_line(line)
     if not MEDIANS:
         return
     tr = terminalreporter

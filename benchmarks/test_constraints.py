@@ -49,3 +49,34 @@ def test_turn_penalty_memory_and_time(chart, tmp_path, k):
     assert 9 * offsets <= own <= 9 * offsets + 16  # 8 B of cost + 1 of predecessor per state
     assert rss <= own + 16  # pages never touched stay unmapped (calloc)
     assert c_turn > c_plain and turns < plain_turns  # the penalty buys a straighter route
+
+
+_VS_PLAIN = """
+import sys, time, numpy as np, seaway
+cost = np.load(sys.argv[1]); start = tuple(map(int, sys.argv[2:4])); end = tuple(map(int, sys.argv[4:6]))
+chart = seaway.prepare(cost)  # the default model, max
+plain, turn = [], []
+for _ in range(4):  # the first of each warms up
+    t = time.perf_counter(); p = chart.route(start, end); plain.append(time.perf_counter() - t)
+    t = time.perf_counter(); r = chart.route(start, end, turn_penalty=0.5); turn.append(time.perf_counter() - t)
+print(np.median(plain[1:]), np.median(turn[1:]), r.stats.search.settled, p.stats.search.settled, r.cost,
+      p.cost, r.course_changes, p.course_changes, p.method)
+"""
+
+
+def test_turn_penalty_against_the_plain_route(chart, tmp_path):
+    """The corner voyage with 0.5 per degree of course change, default model and method (A* over
+    (pixel, incoming step) with dominated states dropped) against the plain route (auto) on the
+    same prepared chart, alternated in one fresh process; wall medians of 3."""
+    cost, start, end = chart
+    np.save(tmp_path / "chart.npy", cost)
+    out = subprocess.run([sys.executable, "-c", _VS_PLAIN, str(tmp_path / "chart.npy"),
+                          *map(str, start), *map(str, end)], capture_output=True, text=True,
+                         check=True).stdout.split()
+    plain_s, turn_s, states, pixels, c_turn, c_plain, turns, plain_turns = map(float, out[:8])
+    NOTES["turn penalty 0.5/degree vs plain, corner voyage"] = (
+        f"{turn_s:.2f} s = {turn_s / plain_s:.1f} x the plain route ({plain_s:.3f} s, {out[8]}); "
+        f"{states:,.0f} states settled vs {pixels:,.0f} pixels; cost {c_turn:.1f} vs {c_plain:.1f}; "
+        f"course changes {turns:.0f} vs {plain_turns:.0f}")
+    print("\n" + NOTES["turn penalty 0.5/degree vs plain, corner voyage"])
+    assert c_turn > c_plain and turns < plain_turns

@@ -1,21 +1,10 @@
-"""Exact searches faster than Dijkstra, and the route quality of smoothing.
+"""The exact searches' memory and the route quality of smoothing (their speed, voyage by voyage:
+test_voyages.py).
 
-* One route on a fresh chart (seaway.route: validation, preparation and search; nothing kept
-  between rounds), default method="auto" (bidirectional Dijkstra on two threads on the winter
-  chart, bidirectional A* on the summer chart), the same by method="bidirectional", against
-  plain Dijkstra and skimage's MCP_Geometric, on the winter chart (costs 1-30) and the summer chart
-  (costs 1-2). Goal: <= 0.15 x skimage; auto never slower than Dijkstra.
-* Many routes on a prepared chart with 8 landmarks: 8 fixed voyages (the corner-to-corner one
-  and 7 random pairs, seed 6), each against skimage on the same voyage. Goal: <= 0.05 x skimage;
-  the landmark tables' build time and bytes per pixel are reported.
 * Search memory of the default path: <= 16 B/pixel (engine's count and peak RSS in a fresh
   process).
 * Route quality: the smoothed 5x5 route's cost under the mean model against scikit-fmm's
-  continuous optimum (fast marching, order 2). Goal: within 0.3 %.
-
-Every case asserts its answer (exact methods = Dijkstra to 1e-9). The machine is shared, so
-each case records CPU time (time.process_time: all threads of this process) beside the wall
-median, and pixels settled; ratios are printed for both (conftest.py)."""
+  continuous optimum (fast marching, order 2). Goal: within 0.3 %."""
 
 import subprocess
 import sys
@@ -26,113 +15,7 @@ import pytest
 
 import seaway
 
-from .conftest import CPU, NOTES, record
-
-skgraph = pytest.importorskip("skimage.graph")
-ROUNDS = 5
-
-
-def _timed(fn, cpu):
-    def run(*args, **kwargs):
-        c = time.process_time()
-        out = fn(*args, **kwargs)
-        cpu.append(time.process_time() - c)
-        return out
-    return run
-
-
-def _summer(cost):
-    return np.where(np.isfinite(cost), 1.0 + (cost - 1.0) / 29.0, np.inf)
-
-
-def _skimage(cost, pairs):
-    out = []
-    for s, e in pairs:
-        m = skgraph.MCP_Geometric(cost, fully_connected=True)
-        costs, _ = m.find_costs([s], [e])
-        out.append(float(costs[e]))
-    return out
-
-
-@pytest.fixture(scope="module")
-def charts(chart):
-    cost, start, end = chart
-    return {"winter": cost, "summer": _summer(cost)}, start, end
-
-
-@pytest.mark.parametrize("season", ["winter", "summer"])
-def test_skimage_one_route(benchmark, charts, season):
-    maps, s, e = charts
-    cpu = []
-    benchmark.pedantic(_timed(_skimage, cpu), args=(maps[season], [(s, e)]), rounds=ROUNDS,
-                       iterations=1, warmup_rounds=1)
-    record(f"skimage one route {season}", benchmark, "the peer", cpu=cpu)
-
-
-@pytest.mark.parametrize("method", ["auto", "bidirectional", "dijkstra", "astar"])
-@pytest.mark.parametrize("season", ["winter", "summer"])
-def test_one_route_fresh_chart(benchmark, charts, season, method):
-    maps, s, e = charts
-    cost = maps[season]
-    cpu = []
-    r = benchmark.pedantic(_timed(seaway.route, cpu), args=(cost, s, e),
-                           kwargs=dict(edge_cost="mean", method=method), rounds=ROUNDS,
-                           iterations=1, warmup_rounds=1)
-    record(f"{method} one route {season}", benchmark,
-           f"{r.method}, {r.stats.search.settled:,} settled, "
-           f"{r.stats.search.state_bytes / cost.size:.1f} B/pixel",
-           cpu=cpu, peer=f"skimage one route {season}")
-    exact = seaway.route(cost, s, e, edge_cost="mean", method="dijkstra")
-    assert r.cost == pytest.approx(exact.cost, rel=1e-9)
-    assert r.stats.search.settled <= exact.stats.search.settled
-    if method != "dijkstra" and season == "summer":  # the bound is tight in summer: it prunes
-        assert r.stats.search.settled < 0.5 * exact.stats.search.settled
-    if method == "auto":  # the rule of seaway.engine.methods: bidirectional (A* potential in summer)
-        assert r.method == "bidirectional"
-        assert r.stats.search.state_bytes / cost.size <= 16
-
-
-@pytest.fixture(scope="module")
-def voyages(chart):
-    cost, start, end = chart
-    field = seaway.cost_field(cost, start)
-    reach = np.argwhere(np.isfinite(field))
-    pick = np.random.default_rng(6).choice(len(reach), size=(7, 2), replace=False)
-    return [(start, end)] + [(tuple(map(int, reach[a])), tuple(map(int, reach[b]))) for a, b in pick]
-
-
-@pytest.fixture(scope="module")
-def with_landmarks(chart):
-    cost = chart[0]
-    prepared = seaway.prepare(cost, edge_cost="mean")
-    c = time.process_time()
-    st = prepared.prepare_landmarks(8)
-    NOTES["landmarks: 8, build"] = (f"{st['seconds']:.2f} s wall, {time.process_time() - c:.2f} s CPU, "
-                                    f"{st['bytes_per_pixel']:.0f} B/pixel (float32 tables)")
-    return prepared
-
-
-def test_skimage_many_routes(benchmark, chart, voyages):
-    cpu = []
-    benchmark.pedantic(_timed(_skimage, cpu), args=(chart[0], voyages), rounds=3, iterations=1)
-    record("skimage 8 routes", benchmark, "the peer", cpu=cpu)
-
-
-@pytest.mark.parametrize("method", ["landmarks", "dijkstra"])
-def test_many_routes_prepared(benchmark, with_landmarks, voyages, method):
-    cpu = []
-
-    def run():
-        return [with_landmarks.route(s, e, method=method) for s, e in voyages]
-
-    routes = benchmark.pedantic(_timed(run, cpu), rounds=3, iterations=1, warmup_rounds=1)
-    settled = sum(r.stats.search.settled for r in routes)
-    record(f"{method} 8 routes, prepared chart", benchmark, f"{settled:,} settled in all",
-           cpu=cpu, peer="skimage 8 routes")
-    exact = [with_landmarks.route(s, e, method="dijkstra").cost for s, e in voyages]
-    np.testing.assert_allclose([r.cost for r in routes], exact, rtol=1e-9)
-    assert with_landmarks.route(*voyages[0]).method == "landmarks"  # what auto picks now
-
+from .conftest import NOTES, record
 
 _RSS_SCRIPT = """
 import sys, numpy as np, seaway

@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <type_traits>
 #include <utility>
 
@@ -65,7 +66,18 @@ void register_exact(py::module_& m) {
   py::class_<Landmarks>(m, "Landmarks", "Float32 least-cost tables from landmark pixels (ALT)")
       .def_property_readonly("pixels", [](const Landmarks& l) { return l.pixels; })
       .def_property_readonly("bytes", &Landmarks::bytes)
-      .def_property_readonly("largest", [](const Landmarks& l) { return l.largest; });
+      .def_property_readonly("largest", [](const Landmarks& l) { return l.largest; })
+      .def_property_readonly(
+          "table",
+          [](py::object self) {
+            const Landmarks& l = self.cast<const Landmarks&>();
+            const py::ssize_t n = py::ssize_t(l.table.size() / std::max<std::size_t>(l.count(), 1));
+            py::array_t<float> a({n, py::ssize_t(l.count())}, l.table.data(), self);
+            a.attr("flags").attr("writeable") = false;
+            return a;
+          },
+          "The tables as a read-only (pixels, landmarks) float32 view: the least cost from each "
+          "landmark to each pixel (inf where unreachable)");
   ChartClass router = py::reinterpret_borrow<ChartClass>(m.attr("Router"));
   router.def_property_readonly("cost_range", [](const PreparedChart& chart) {
     const Passability& p = chart.passability();

@@ -101,6 +101,13 @@ class BucketQueue {
     ring_[keys_.slot(keys_.add(e.key))].push_back(e.id);
   }
 
+  // The id pop() returns `ahead` pops from now (0: next) when it lies in the current bucket
+  // (for a prefetch), else none.
+  std::uint32_t peek(std::size_t ahead = 0) const {
+    const std::vector<std::uint32_t>& b = ring_[keys_.slot(keys_.current())];
+    return b.size() > ahead ? b[b.size() - 1 - ahead] : 0xffffffffu;
+  }
+
   HeapEntry pop() {
     const std::uint64_t k = keys_.take([&](std::size_t b) { return ring_[b].empty(); });
     std::vector<std::uint32_t>& b = ring_[keys_.slot(k)];

@@ -60,28 +60,67 @@ class TurnAngles {
 // The penalty of every (incoming, outgoing) offset pair per row (one row on planar grids), so
 // a relaxation reads a number instead of taking an arccosine; computed on the fly when the
 // table would pass 64 MB (lat/lon grids with wide stencils).
+// With the table comes the dominance margin of every pair of incoming offsets a, b at a pixel:
+// margin(a, b) = max over outgoing o of penalty(a, o) - penalty(b, o). A state reached along a
+// with label d_a can continue however a state reached along b with d_b can, at no more cost,
+// once d_a + margin(a, b) <= d_b (the turn search then drops the second state: turns.hpp). For a
+// penalty that grows with the angle and is concave in it (per degree, for one), the margin is
+// the penalty of the turn from a to b.
 class TurnCosts {
  public:
   TurnCosts(const Geometry& g, const std::vector<Offset>& st, const TurnPenalty& p)
       : angles_(g, st), p_(p), k_(std::int64_t(st.size())), rows_(g.geographic ? g.rows : 1) {
-    if (double(rows_) * double(k_ * k_) * sizeof(double) > 64e6) return;
+    zeros_.assign(std::size_t(k_), 0.0);
+    if (double(rows_) * double(k_ * k_) * sizeof(double) > 32e6) return;
     table_.resize(std::size_t(rows_ * k_ * k_));
     for (std::int64_t r = 0; r < rows_; ++r)
       for (std::int64_t a = 0; a < k_; ++a)
         for (std::int64_t b = 0; b < k_; ++b) table_[std::size_t((r * k_ + a) * k_ + b)] = p(angles_(r, a, b));
+    margin_.resize(table_.size());
+    margin_ready_.assign(std::size_t(rows_), 0);
   }
   double operator()(std::int64_t row, std::int64_t in, std::int64_t o) const {
     if (table_.empty()) return p_(angles_(row, in, o));
     return table_[std::size_t(((rows_ == 1 ? 0 : row) * k_ + in) * k_ + o)];
   }
+  // The penalties of leaving a pixel of row `row` reached along `in` (-1: none, all zero), by
+  // outgoing offset; nullptr when they are computed on the fly.
+  const double* leaving(std::int64_t row, std::int64_t in) const {
+    if (in < 0) return zeros_.data();
+    return table_.empty() ? nullptr : &table_[std::size_t(((rows_ == 1 ? 0 : row) * k_ + in) * k_)];
+  }
+  // Whether states may be dropped by their margins (the tables exist).
+  bool prunes() const { return !margin_.empty(); }
+  // margin(a, b) at a pixel of row `row` (prunes() only); a row's margins are worked out when
+  // first asked for (k^3 steps: a search reaches few rows of a large lat/lon chart).
+  double margin(std::int64_t row, std::int64_t a, std::int64_t b) const {
+    const std::int64_t r = rows_ == 1 ? 0 : row;
+    if (!margin_ready_[std::size_t(r)]) fill_margins(r);
+    return margin_[std::size_t((r * k_ + a) * k_ + b)];
+  }
   double largest() const { return *std::max_element(p_.cost.begin(), p_.cost.end()); }
-  std::size_t bytes() const { return angles_.bytes() + table_.capacity() * sizeof(double); }
+  std::size_t bytes() const {
+    return angles_.bytes() + (table_.capacity() + margin_.capacity() + zeros_.capacity()) * sizeof(double);
+  }
 
  private:
+  void fill_margins(std::int64_t r) const {
+    const double* t = &table_[std::size_t(r * k_ * k_)];
+    double* m = &margin_[std::size_t(r * k_ * k_)];
+    for (std::int64_t a = 0; a < k_; ++a)
+      for (std::int64_t b = 0; b < k_; ++b) {
+        double worst = -inf;
+        for (std::int64_t o = 0; o < k_; ++o) worst = std::max(worst, t[a * k_ + o] - t[b * k_ + o]);
+        m[a * k_ + b] = worst;
+      }
+    margin_ready_[std::size_t(r)] = 1;
+  }
   TurnAngles angles_;
   const TurnPenalty& p_;
   std::int64_t k_, rows_;
-  std::vector<double> table_;
+  std::vector<double> table_, zeros_;
+  mutable std::vector<double> margin_;
+  mutable std::vector<std::uint8_t> margin_ready_;
 };
 
 }  // namespace seaway

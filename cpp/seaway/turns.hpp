@@ -8,10 +8,18 @@
 // 0..180 degrees. The first step from the start pays no penalty unless the start is given an
 // incoming step (a via-point continues the previous leg).
 //
-// Memory: 8 bytes of cost + 1 byte of predecessor per state, i.e. 9 x (number of stencil
-// offsets) bytes per pixel of address space (k=3: 72, k=5: 216, k=7: 432). It is allocated
-// zero-filled (calloc: the kernel maps pages only when they are first written, so a search
-// that reaches a small part of the chart uses physical memory only there).
+// Dominated states are dropped (turn_penalty.hpp: the margin of two incoming offsets): a state
+// (w, o) is not labelled when w's best state so far, reached along b, has d_b + margin(b, o) <= its
+// label, and a state taken off the queue is not expanded when a state of the same pixel expanded
+// before it dominates it the same way; whatever route continues from the dropped state continues
+// at no more cost from the other. A pixel then expands about two states instead of all of them
+// (the benchmark chart's corner voyage: 14.9 M states settled without, benchmarks/README.md).
+//
+// Memory (turn_states.hpp): 8 bytes of cost + 1 byte of predecessor per state, i.e. 9 x (number
+// of stencil offsets) bytes per pixel of address space (k=3: 72, k=5: 216, k=7: 432), and 9
+// bytes per pixel for its best state. It is allocated zero-filled (calloc: the kernel maps pages
+// only when they are first written, so a search that reaches a small part of the chart uses
+// physical memory only there).
 #pragma once
 
 #include <algorithm>
@@ -23,10 +31,12 @@
 #include <new>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "prepared_chart.hpp"
 #include "turn_penalty.hpp"
+#include "turn_states.hpp"
 
 namespace seaway {
 
@@ -91,11 +101,8 @@ RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPe
   };
 
   const std::size_t states = std::size_t(n * K);
-  auto cost_bits = detail::zeroed<std::uint64_t>(states);
-  auto pred = detail::zeroed<std::uint8_t>(states);  // 1 + offset into the predecessor; 0: start
-  const std::uint64_t inf_bits = detail::bits_of(inf);
-  auto dist = [&](std::int64_t s) { return detail::from_bits(cost_bits[std::size_t(s)] ^ inf_bits); };
-  auto set = [&](std::int64_t s, double d) { cost_bits[std::size_t(s)] = detail::bits_of(d) ^ inf_bits; };
+  TurnStates S(n, K);
+  const bool prune = penalty.prunes();
 
   SearchStats stats;
   stats.min_cost = b.min_rate;
@@ -106,17 +113,29 @@ RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPe
   auto run = [&](auto heap) {
     auto expand = [&](std::int64_t v, std::int64_t in, double dv, std::uint8_t code) {
       const std::int64_t row = v / g.cols;
+      const double* leave = penalty.leaving(row, in);  // nullptr: computed per step
       pg.steps().each(v, [&](std::int64_t w, std::int64_t o, std::int64_t, std::int64_t, double r, auto&& cell) {
         const double c = model(v, w, int(o), r, dv, cell);
         if (!(c < inf)) return;
-        const double nd = dv + c + (in >= 0 ? penalty(row, in, o) : 0.0);
+        const double nd = dv + c + (leave ? leave[o] : penalty(row, in, o));
+        if (prune) {  // dominated on arrival by w's best state so far
+          const std::int64_t bw = S.best_in(w);
+          if (bw >= 0 && bw != o && S.best(w) + penalty.margin(row + st[std::size_t(o)].di, bw, o) <= nd) return;
+        }
         const std::int64_t s = w * K + o;
-        if (nd < dist(s)) {  // false for expanded states: their cost is negative
-          set(s, nd);
-          pred[std::size_t(s)] = code;
+        if (nd < S.get(s)) {  // false for settled states: their cost is negative
+          S.set(s, nd, code);
+          if (prune) S.offer(w, o, nd);
           heap.push({use_bound ? nd + h(w) : nd, std::uint32_t(s)});
         }
       });
+    };
+    // Whether a state of v expanded before (v, in) dominates it.
+    auto dominated = [&](std::int64_t v, std::int64_t in, double dv) {
+      const std::int64_t row = v / g.cols;
+      for (std::int64_t o = 0; o < K; ++o)
+        if (o != in && S.expanded(v * K + o) && -S.get(v * K + o) + penalty.margin(row, o, in) <= dv) return true;
+      return false;
     };
     // A first entry at the least key any state can have (the start's bound): the bucket queue
     // starts its ring at the first key it is given. Popped, it is skipped.
@@ -127,13 +146,15 @@ RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPe
       const HeapEntry top = heap.pop();
       if (top.id == sentinel) continue;
       const std::int64_t s = top.id;
-      const double ds = dist(s);
+      if constexpr (std::is_same_v<decltype(heap), BucketQueue>) S.prefetch(heap.peek());
+      const double ds = S.get(s);
       if (std::signbit(ds)) continue;
-      set(s, -ds);
+      S.settle(s);
       count_settled(stats.settled, control);
-      const std::int64_t v = s / K;
+      const std::int64_t v = s / K, in = s - v * K;
       if (v == target) { reached = s; break; }
-      expand(v, s - v * K, ds, std::uint8_t(s - v * K + 1));
+      if (prune && dominated(v, in, ds)) { S.drop(s); continue; }
+      expand(v, in, ds, std::uint8_t(in + 1));
     }
     stats.heap_peak = heap.peak();
     queue_bytes = heap.capacity_bytes();
@@ -147,24 +168,24 @@ RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPe
     return out;
   }
   with_queue<true, false>(q, run);
-  stats.state_bytes = states * 9 + queue_bytes + penalty.bytes() + field_bytes;
+  stats.state_bytes = S.bytes() + queue_bytes + penalty.bytes() + field_bytes;
   out.stats = stats;
   if (reached < 0) return out;
   // The target has one state per incoming step. A bucket empties in any order, so another of
   // them may be cheaper than the first one popped; those in the same bucket are final already
   // (no step is cheaper than a bucket's width) and later buckets hold only dearer labels.
   for (std::int64_t o = 0; o < K; ++o)
-    if (std::fabs(dist(target * K + o)) < std::fabs(dist(reached))) reached = target * K + o;
-  out.cost = std::fabs(dist(reached));
+    if (std::fabs(S.get(target * K + o)) < std::fabs(S.get(reached))) reached = target * K + o;
+  out.cost = std::fabs(S.get(reached));
   // Back along the predecessors: state (w, o) came from pixel w - offset o, in state pred - 1.
   std::int64_t s = reached;
   for (;;) {
     const std::int64_t v = s / K, o = s - v * K;
     out.path.push_back(v);
-    out.cumulative.push_back(std::fabs(dist(s)));
+    out.cumulative.push_back(std::fabs(S.get(s)));
     out.offsets.push_back(int(o));
     const std::int64_t u = g.step(v, st[std::size_t(o)], -1);
-    const int p = pred[std::size_t(s)];
+    const int p = S.pred(s);
     if (p == 0) { out.path.push_back(u); out.cumulative.push_back(0.0); break; }
     s = u * K + (p - 1);
     if (out.path.size() > states) throw std::logic_error("predecessor cycle");

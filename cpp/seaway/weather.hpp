@@ -72,6 +72,10 @@ class WeatherTime {
               double best_speed_kn)
       : g_(g), f_(f), v_(v), n_off_(std::int64_t(st.size())), best_kn_(best_speed_kn) {
     course_ = g.step_courses(st);
+    for (double c : course_) {
+      course_sin_.push_back(std::sin(c));
+      course_cos_.push_back(std::cos(c));
+    }
   }
 
   // Hours per km: at least 1 / the best attainable speed; no finite upper bound.
@@ -96,7 +100,8 @@ class WeatherTime {
       return (1 - a) * double(field[i0 * n + p]) + a * double(field[i1 * n + p]);
     };
     if (f_.wind_speed && std::max(at(f_.wind_speed, v), at(f_.wind_speed, w)) > v_.max_wind_ms) return 0;
-    const double course = course_[std::size_t((v / g_.cols) * n_off_ + o)];
+    const std::size_t ro = std::size_t((v / g_.cols) * n_off_ + o);
+    const double course = course_[ro];
 
     double speed = v0_kn;
     if (f_.wave_height) {
@@ -120,8 +125,12 @@ class WeatherTime {
     if (f_.current_east) {
       const double ce = 0.5 * (at(f_.current_east, v) + at(f_.current_east, w)) * knots_per_ms;
       const double cn = 0.5 * (at(f_.current_north, v) + at(f_.current_north, w)) * knots_per_ms;
-      const double vt = std::hypot(ce, cn);
-      if (vt > 0) speed = speed_over_ground_kn(speed, vt, std::atan2(ce, cn) - course);
+      // The current along and across the course (course from north, clockwise): the same as
+      // speed_over_ground_kn(speed, |c|, angle(c) - course), without the angles.
+      const double along = cn * course_cos_[ro] + ce * course_sin_[ro];
+      const double cross = ce * course_cos_[ro] - cn * course_sin_[ro];
+      if (ce != 0 || cn != 0)
+        speed = std::fabs(cross) >= speed ? 0 : along + std::sqrt(speed * speed - cross * cross);
     }
     return speed > 1e-9 ? speed : 0;
   }
@@ -132,7 +141,7 @@ class WeatherTime {
   Vessel v_;
   std::int64_t n_off_;
   double best_kn_;
-  std::vector<double> course_;
+  std::vector<double> course_, course_sin_, course_cos_;  // per row and offset
 };
 
 // Sotnikova 2009's fuel: each step's engine setting is chosen from `settings_kn` (calm-water speeds)

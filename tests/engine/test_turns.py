@@ -149,3 +149,37 @@ def test_astar_bound_is_the_cost_to_go_without_penalties():
     walled[55:60, 74] = walled[55, 74:80] = np.inf  # the end's corner is cut off
     with pytest.raises(seaway.NoRouteError):
         seaway.prepare(walled).route((2, 2), (57, 77), method="astar", turn_penalty=0.05)
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_dominated_states_dropped_exactly_for_any_penalty_table(seed):
+    """States are dropped by the margin of their offsets (turn_penalty.hpp), which holds for any
+    table: growing or not with the angle, convex or concave, with a cost for going straight on.
+    On charts large enough for many headings to reach a pixel at close costs, with turns priced
+    like a few steps, each route against the expanded brute-force reference."""
+    rng = np.random.default_rng(700 + seed)
+    rows, cols = 22, 30
+    u = rng.uniform(0.5, 3.0, (rows, cols))
+    u[rng.random((rows, cols)) < 0.12] = np.inf
+    geo = dict(dx=1.0, dy=float(rng.uniform(0.7, 1.4)))
+    if seed % 2:
+        geo = dict(lat=60 + 0.1 * np.arange(rows), lon=10 + 0.2 * np.arange(cols))
+    k = (3, 5, 7)[seed % 3]
+    angles = sorted({0.0, 180.0, *rng.uniform(5, 175, 3).round(1)})
+    costs = rng.uniform(0, 4, len(angles)).round(2).tolist()
+    if seed < 2:
+        costs = [0.03 * a for a in angles]  # per degree: the margin is the turn's penalty
+    ref = RefGraph(u, k=k, edge_cost="max", **geo)
+    chart = seaway.prepare(u, neighbourhood=k, **geo)
+    water = np.argwhere(ref.ok)
+    checked = 0
+    for _ in range(4):
+        s, e = (tuple(int(v) for v in water[i]) for i in rng.choice(len(water), 2, replace=False))
+        want = turn_route_cost(ref, s, e, angles, costs, geo.get("dx", 1.0), geo.get("dy", 1.0))
+        if not np.isfinite(want):
+            continue
+        for method in ("dijkstra", "astar"):
+            r = chart.route(point(geo, s), point(geo, e), method=method, turn_penalty=dict(zip(angles, costs)))
+            assert r.cost == pytest.approx(want, rel=1e-9, abs=1e-12), (angles, costs, method)
+            checked += 1
+    assert checked >= 4

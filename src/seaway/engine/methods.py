@@ -14,12 +14,14 @@ Methods (all exact except weighted A*):
   after PreparedChart.prepare_landmarks() (or prepare(..., landmarks=N)) for this model; max,
   mean and integral only: the bound |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
   mean of the two ends x the step's length; the integral over the same segment).
-* "auto" (the default): "astar" if a weight is given; "landmarks" when the chart has landmarks
-  for the query's model; else "bidirectional" for a static raster model (with the A* potential
+* "auto" (the default): "astar" if a weight is given; on a chart with landmarks for the query's
+  model, the exact method the cost model of seaway.engine.costmodel expects to be fastest for
+  this query (from a sample of the landmark tables: the pixels each search would settle, times
+  its measured time per pixel): the landmark search on two threads or on one, A*, or
+  bidirectional search; else "bidirectional" for a static raster model (with the A* potential
   on a low-contrast chart: on the summer benchmark chart it takes 0.7 x one-thread A*'s time),
   but on charts under SMALL_CHART pixels "astar" on a low-contrast chart and "dijkstra" on
-  others; else "astar" (time-dependent models). On the benchmark charts this is never slower than
-  Dijkstra (benchmarks/README.md)."""
+  others; else "astar" (time-dependent models). Measured in benchmarks/README.md."""
 
 from __future__ import annotations
 
@@ -30,6 +32,7 @@ import numpy as np
 
 from ..base.validate import number
 from ..models.base import EDGE_COSTS
+from . import costmodel
 from .result import Search
 
 if TYPE_CHECKING:
@@ -111,12 +114,36 @@ def resolve(prepared: PreparedChart, model: CostModel, method: str,
     return method
 
 
+#: The searches the cost model chooses among that are not public methods: what Route.method says.
+PUBLIC = {"bidirectional A*": "bidirectional", "landmarks one thread": "landmarks"}
+
+
+def refine(prepared: PreparedChart, model: CostModel, method: str, requested: str,
+           s: tuple[int, int], e: tuple[int, int]) -> str:
+    """The search that answers the query s -> e (located pixels): for "auto" on a chart with
+    landmarks, the cheapest by the cost model (seaway.engine.costmodel); else `method`."""
+    landmarks = prepared.landmarks_for(model)
+    if requested != "auto" or method != "landmarks" or landmarks is None:
+        return method
+    times = costmodel.estimate(prepared, model, prepared.landmark_sample(model), landmarks.table,
+                               s, e, low_contrast(prepared))
+    best: str = min(times, key=lambda m: times[m])
+    return best
+
+
 def search(prepared: PreparedChart, engine: _core.Model, s: int, e: int, method: str,
            weight: float, model: CostModel, cancel: _core.CancelToken | None) -> Search:
-    """The search between flat pixels s and e by `method`."""
+    """The search between flat pixels s and e by `method` (a public method, or a search the cost
+    model names: "bidirectional A*", "landmarks one thread")."""
     router = prepared.router
+    method = {"bidirectional A*": "bidirectional"}.get(method, method)
     # resolve() let "bidirectional" through for static models only, "landmarks" for symmetric
     # static ones with their tables (the capabilities, which the types cannot see)
+    if method == "landmarks one thread":
+        landmarks = prepared.landmarks_for(model)
+        assert landmarks is not None
+        return Search.from_core(router.route_landmarks(
+            cast("_core.RasterRule", engine), landmarks, s, e, False, cancel))
     if method == "bidirectional":
         return Search.from_core(router.route_bidirectional(
             cast("_core.StaticModel", engine), s, e, low_contrast(prepared), cancel))
