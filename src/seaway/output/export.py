@@ -21,7 +21,7 @@ import numpy as np
 from ..base import sphere as geo
 from ..base.files import replace_atomically, write_all, write_atomically  # noqa: F401 - part of this API
 from ..result.environment import CATEGORICAL, STAGES, Category, extreme_name
-from ..result.schedule import iso, schedule
+from ..result.schedule import Schedule, dated_schedule, iso, schedule
 from .webmap import html_text
 
 #: Summary entries that are points, given in GeoJSON properties as [lat, lon] ([y, x] or
@@ -109,9 +109,8 @@ def rtz(route, speed_kn=None) -> str:
     speed = route.speed_kn if speed_kn is None else speed_kn
     root = ET.Element(f"{{{RTZ_NS}}}route", {"version": "1.0"})
     attrs = {"routeName": route.name, "routeAuthor": "seaway", "routeStatus": "computed, not validated"}
-    timed = schedule(route)
-    dated = timed is not None and timed.departure is not None
-    if dated:  # the voyage's departure and arrival, and what the route was found through
+    timed = dated_schedule(route)
+    if timed is not None:  # the voyage's departure and arrival, and what the route was found through
         attrs.update(validityPeriodStart=iso(timed.eta(0)), validityPeriodStop=iso(timed.eta(-1)))
         attrs["optimizationMethod"] = f"least {route.unit} ({route.edge_cost})" + (
             f"; forecast {timed.forecast}" if timed.forecast else "")
@@ -122,7 +121,7 @@ def rtz(route, speed_kn=None) -> str:
     wps = ET.SubElement(root, f"{{{RTZ_NS}}}waypoints")
     default = ET.SubElement(wps, f"{{{RTZ_NS}}}defaultWaypoint", {"radius": "0.1"})
     ET.SubElement(default, f"{{{RTZ_NS}}}leg", {"geometryType": "Orthodrome"})
-    legs = route.legs(speed_kn) if route.ice_speed is not None or timed is not None else None
+    legs = route.legs(speed_kn) if route.ice_speed is not None or schedule(route) is not None else None
     for k, (lat, lon) in enumerate(route.waypoints, start=1):
         wp = ET.SubElement(wps, f"{{{RTZ_NS}}}waypoint", {"id": str(k), "name": f"WP{k:03d}"})
         ET.SubElement(wp, f"{{{RTZ_NS}}}position", {"lat": f"{lat:.7f}", "lon": f"{_wrap180(lon):.7f}"})
@@ -132,15 +131,14 @@ def rtz(route, speed_kn=None) -> str:
             if leg_speed:
                 attrs["speedMax"] = f"{float(leg_speed):.2f}"
             ET.SubElement(wp, f"{{{RTZ_NS}}}leg", attrs)
-    if dated:
-        _rtz_schedule(root, route, legs)
+    if timed is not None:
+        _rtz_schedule(root, route, legs, timed)
     return _xml(root)
 
 
-def _rtz_schedule(root, route, legs) -> None:
+def _rtz_schedule(root, route, legs, timed: Schedule) -> None:
     """RTZ's calculated schedule: for each waypoint its ETA and ETD (after any wait there) and
     the speed made good on the leg that ends at it (the first: the departure only)."""
-    timed = schedule(route)
     scheds = ET.SubElement(root, f"{{{RTZ_NS}}}schedules")
     one = ET.SubElement(scheds, f"{{{RTZ_NS}}}schedule", {"id": "1", "name": "seaway"})
     calc = ET.SubElement(one, f"{{{RTZ_NS}}}calculated")
@@ -167,12 +165,12 @@ def csv_text(route, speed_kn=None) -> str:
     out = io.StringIO()
     out.writelines(f"# {line}\n" for line in header_lines(route, speed_kn))
     w = csv.writer(out, lineterminator="\n")
-    timed = schedule(route)
-    dated = timed is not None and timed.departure is not None
+    timed = dated_schedule(route)
+    dated = timed is not None
     w.writerow(CSV_FIELDS + (["eta", "etd"] if dated else []) + [h for n in env for h in _env_header(n)])
     first = route.waypoints[0]
     w.writerow([1, f"{first[0]:.7f}", f"{first[1]:.7f}"] + [""] * (len(CSV_FIELDS) - 3)
-               + (["", iso(timed.etd(0))] if dated else []) + [""] * (2 * len(env)))
+               + (["", iso(timed.etd(0))] if timed is not None else []) + [""] * (2 * len(env)))
     wi = route.waypoint_index
     km = cost = 0.0
     for leg in legs:
@@ -181,7 +179,7 @@ def csv_text(route, speed_kn=None) -> str:
                f"{leg.course:.2f}", f"{leg.distance:.4f}", _opt(leg.distance_nm, 4),
                _opt(leg.speed_kn, 2), _opt(leg.time_h, 3), f"{leg.cost:.6g}", f"{km:.4f}",
                f"{cost:.6g}"]
-        if dated:  # the waypoint's ETA, and its ETD (after any wait; none at the end)
+        if timed is not None:  # the waypoint's ETA, and its ETD (after any wait; none at the end)
             last = leg.number == len(legs)
             row += [iso(leg.arrive), "" if last else iso(timed.etd(int(wi[leg.number])))]
         row += [c for n in env for c in _env_cells(leg.environment[n])]

@@ -60,6 +60,12 @@ def schedule(route) -> Schedule | None:
     return Schedule(arrive, leave, voyage.departure, voyage.forecast)
 
 
+def dated_schedule(route) -> Schedule | None:
+    """The route's Schedule when it has a departure date (times of day to print), else None."""
+    timed = schedule(route)
+    return timed if timed is not None and timed.departure is not None else None
+
+
 def iso(t) -> str:
     """A time as ISO 8601 UTC to the second, e.g. 2026-09-15T06:00:00Z ('' for None)."""
     return "" if t is None else str(np.datetime_as_string(np.datetime64(t, "s"), unit="s")) + "Z"
