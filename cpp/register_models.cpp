@@ -109,7 +109,16 @@ IceSeasonModel ice_season(const Field& hours_per_km, std::vector<double> valid_f
     throw std::invalid_argument("min_hours_per_km must be positive and finite");
   IceSeasonModel m;
   m.keep = hours_per_km;
-  m.series = {hours_per_km.shape(0), nullptr, hours_per_km.data(), min_hours_per_km};
+  double slowest = 0;  // the largest finite hours per km: a step that does not wait (queue choice)
+  {
+    const float* h = hours_per_km.data();
+    const py::ssize_t n = hours_per_km.size();
+    py::gil_scoped_release release;
+    for (py::ssize_t i = 0; i < n; ++i)
+      if (double(h[i]) < inf && double(h[i]) > slowest) slowest = double(h[i]);
+  }
+  m.series = {hours_per_km.shape(0), nullptr, hours_per_km.data(), min_hours_per_km,
+              slowest > 0 ? slowest : inf};
   m.valid_from_h = std::move(valid_from_h);
   m.rows = hours_per_km.shape(1);
   m.cols = hours_per_km.shape(2);

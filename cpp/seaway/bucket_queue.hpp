@@ -5,6 +5,7 @@
 // (for rings of many sparsely filled buckets). Both pop a bucket last in, first out.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -35,6 +36,9 @@ class BucketRing {
   std::uint64_t current() const { return current_; }
   std::uint64_t highest() const { return highest_; }
   std::size_t slot(std::uint64_t k) const { return std::size_t(k & mask_); }
+  // An empty ring starts again at the bucket of the next key added.
+  void restart() { started_ = false; }
+  bool started() const { return started_; }
 
   // The bucket of a pushed key, counted in. Keys are never below the current bucket (a step
   // costs >= 0), and never a ring or more above it (a step costs < span); rounding is clamped
@@ -75,29 +79,48 @@ class BucketRing {
 
 }  // namespace detail
 
-class BucketQueue {
+// Overflow = false: every step costs less than `span` (the ring takes every key). Overflow =
+// true, for steps of no finite upper cost (a ship that waits for the ice to open): keys more
+// than the ring's window above the current bucket wait in an overflow heap, and join the ring
+// once the scan reaches their bucket, so keys still leave in the ring's order whatever the
+// span; the span only decides how many keys take the slower overflow path.
+template <bool Overflow>
+class BasicBucketQueue {
  public:
-  // width: at most the cheapest step; span: at least the costliest step. A bucket holds only
-  // the pixel ids (4 bytes, not a 16-byte entry): the order within a bucket does not matter,
-  // so pop() gives the bucket's floor as the key.
-  BucketQueue(double width, double span) : keys_(width, span), ring_(keys_.buckets()) {}
+  // width: at most the cheapest step; span: at least the costliest step (Overflow: the
+  // costliest the ring takes directly). A bucket holds only the pixel ids (4 bytes, not a
+  // 16-byte entry): the order within a bucket does not matter, so pop() gives the bucket's
+  // floor as the key.
+  BasicBucketQueue(double width, double span)
+      : keys_(width, span), ring_(keys_.buckets()), inv_width_(1.0 / width) {}
 
-  bool empty() const { return keys_.empty(); }
-  std::size_t peak() const { return keys_.peak(); }
+  bool empty() const { return keys_.empty() && over_.empty(); }
+  std::size_t peak() const { return keys_.peak() + over_.capacity(); }
   std::size_t capacity_bytes() const {
-    std::size_t b = ring_.capacity() * sizeof(ring_[0]);
+    std::size_t b = ring_.capacity() * sizeof(ring_[0]) + over_.capacity() * sizeof(HeapEntry);
     for (const auto& v : ring_) b += v.capacity() * sizeof(std::uint32_t);
     return b;
   }
-  double lower_bound() const { return keys_.lower_bound(); }
+  double lower_bound() const { return keys_.empty() && !over_.empty() ? over_.front().key : keys_.lower_bound(); }
   template <class F>
   void for_each(F&& f) const {  // every entry, in no order
+    for (const HeapEntry& e : over_) f(e);
     if (keys_.empty()) return;
     for (std::uint64_t k = keys_.current(); k <= keys_.highest(); ++k)  // no entry lies outside these
       for (std::uint32_t id : ring_[keys_.slot(k)]) f(HeapEntry{keys_.floor(k), id});
   }
 
   __attribute__((always_inline)) void push(const HeapEntry& e) {
+    if constexpr (Overflow) {
+      // Beyond the window of the current bucket (the last one popped, even when the ring is
+      // empty now): the ring would fold the key onto a lower bucket.
+      if (keys_.started() && bucket(e.key) > keys_.current() + keys_.buckets() - 1) {
+        over_.push_back(e);
+        std::push_heap(over_.begin(), over_.end(), later);
+        over_min_ = bucket(over_.front().key);
+        return;
+      }
+    }
     ring_[keys_.slot(keys_.add(e.key))].push_back(e.id);
   }
 
@@ -109,7 +132,16 @@ class BucketQueue {
   }
 
   HeapEntry pop() {
-    const std::uint64_t k = keys_.take([&](std::size_t b) { return ring_[b].empty(); });
+    if constexpr (Overflow) {
+      if (keys_.empty()) {  // only overflow keys are left: the ring starts again at the least
+        keys_.restart();
+        drain(over_min_);
+      }
+    }
+    const std::uint64_t k = keys_.take([&](std::size_t b) {
+      if constexpr (Overflow) drain(keys_.current());  // before the scan passes their bucket
+      return ring_[b].empty();
+    });
     std::vector<std::uint32_t>& b = ring_[keys_.slot(k)];
     const std::uint32_t id = b.back();
     b.pop_back();
@@ -117,83 +149,28 @@ class BucketQueue {
   }
 
  private:
+  static bool later(const HeapEntry& a, const HeapEntry& b) { return a.key > b.key; }
+  std::uint64_t bucket(double key) const { return std::uint64_t(key * inv_width_); }
+  // The overflow keys of bucket `upto` or below into the ring (their buckets lie in its window).
+  void drain(std::uint64_t upto) {
+    while (over_min_ <= upto) {
+      std::pop_heap(over_.begin(), over_.end(), later);
+      const HeapEntry e = over_.back();
+      over_.pop_back();
+      over_min_ = over_.empty() ? none : bucket(over_.front().key);
+      ring_[keys_.slot(keys_.add(e.key))].push_back(e.id);
+    }
+  }
+  static constexpr std::uint64_t none = ~std::uint64_t(0);
+
   detail::BucketRing keys_;
   std::vector<std::vector<std::uint32_t>> ring_;
+  double inv_width_;
+  std::vector<HeapEntry> over_;  // Overflow: a min-heap on key (std heap ordered by `later`)
+  std::uint64_t over_min_ = none;  // the bucket of its least key; none when empty
 };
 
-class ChunkedBucketQueue {
- public:
-  // As BucketQueue, but each bucket is a stack of 64-byte chunks of 15 ids taken from one pool
-  // and given back when emptied: no allocation per bucket, and the chunks in use stay few and
-  // warm in cache. For rings of many sparsely filled buckets (landmark A*, whose bucket width
-  // is a small share of the cheapest step): 7 % faster there; on Dijkstra's few full buckets
-  // the vectors of BucketQueue are 10 % faster.
-  ChunkedBucketQueue(double width, double span)
-      : keys_(width, span), head_(keys_.buckets(), none), fill_(keys_.buckets(), 0) {}
-
-  bool empty() const { return keys_.empty(); }
-  std::size_t peak() const { return keys_.peak(); }
-  std::size_t capacity_bytes() const {
-    return chunks_.capacity() * sizeof(Chunk) + head_.capacity() * sizeof(std::uint32_t) + fill_.capacity();
-  }
-  double lower_bound() const { return keys_.lower_bound(); }
-  template <class F>
-  void for_each(F&& f) const {  // every entry, in no order
-    if (keys_.empty()) return;
-    for (std::uint64_t k = keys_.current(); k <= keys_.highest(); ++k) {  // no entry lies outside these
-      const std::size_t b = keys_.slot(k);
-      std::size_t n = fill_[b];
-      for (std::uint32_t c = head_[b]; c != none; c = chunks_[c].next, n = per_chunk)
-        for (std::size_t i = 0; i < n; ++i) f(HeapEntry{keys_.floor(k), chunks_[c].ids[i]});
-    }
-  }
-
-  __attribute__((always_inline)) void push(const HeapEntry& e) {
-    const std::size_t b = keys_.slot(keys_.add(e.key));
-    if (head_[b] == none || fill_[b] == per_chunk) {  // a new chunk on top of the bucket's stack
-      const std::uint32_t c = take_chunk();
-      chunks_[c].next = head_[b];
-      head_[b] = c;
-      fill_[b] = 0;
-    }
-    chunks_[head_[b]].ids[fill_[b]++] = e.id;
-  }
-
-  HeapEntry pop() {
-    const std::uint64_t k = keys_.take([&](std::size_t b) { return head_[b] == none; });
-    const std::size_t b = keys_.slot(k);
-    const std::uint32_t c = head_[b];
-    const std::uint32_t id = chunks_[c].ids[--fill_[b]];
-    if (fill_[b] == 0) {  // the chunk is empty: back to the pool; the one below it is full
-      head_[b] = chunks_[c].next;
-      fill_[b] = head_[b] == none ? 0 : per_chunk;
-      chunks_[c].next = free_;
-      free_ = c;
-    }
-    return {keys_.floor(k), id};
-  }
-
- private:
-  static constexpr std::uint32_t none = 0xffffffffu;
-  static constexpr std::uint8_t per_chunk = 15;
-  struct Chunk {
-    std::uint32_t next;  // the chunk below in the bucket's stack (full), or in the free list
-    std::uint32_t ids[per_chunk];
-  };
-  std::uint32_t take_chunk() {
-    if (free_ != none) {
-      const std::uint32_t c = free_;
-      free_ = chunks_[c].next;
-      return c;
-    }
-    chunks_.emplace_back();
-    return std::uint32_t(chunks_.size() - 1);
-  }
-  detail::BucketRing keys_;
-  std::vector<std::uint32_t> head_;  // per bucket: its top chunk, or none
-  std::vector<std::uint8_t> fill_;   // per bucket: ids in its top chunk
-  std::vector<Chunk> chunks_;
-  std::uint32_t free_ = none;
-};
+using BucketQueue = BasicBucketQueue<false>;
+using OverflowBucketQueue = BasicBucketQueue<true>;
 
 }  // namespace seaway

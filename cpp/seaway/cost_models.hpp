@@ -20,6 +20,9 @@ namespace seaway {
 struct StepBounds {
   double min_rate, max_rate;
   bool per_length;
+  // With max_rate inf (a step may wait without limit): the most a step costs when it does not
+  // wait, so the search can keep its buckets and set the rare waits aside (queue_choice.hpp).
+  double usual_max_rate = inf;
 };
 
 // The static models cost u per unit length, u from the chart's passable pixels.

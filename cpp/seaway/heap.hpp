@@ -7,6 +7,8 @@
 //    share a bucket [k*width, (k+1)*width) cannot improve each other, so a bucket may be
 //    emptied in any order and the labels stay exact (Dial's algorithm on real keys).
 //  - ChunkedBucketQueue: the same, with buckets in pooled chunks (for rings of many buckets).
+//  - OverflowBucketQueue: the same, for steps with no upper cost (a wait for the ice to open):
+//    keys beyond the ring wait in a heap until the scan reaches their bucket.
 //  - QuaternaryHeap: a 4-ary heap for keys that are not monotone (weighted A*).
 // This header holds their shared entry; queue_choice.hpp picks one for a search.
 #pragma once

@@ -35,6 +35,7 @@ struct IceSeries {
   const double* valid_from_h = nullptr;  // increasing; frame 0 valid at departure (<= 0)
   const float* hours_per_km = nullptr;
   double min_hours_per_km = 0;  // the least finite value of any frame (> 0): A*'s bound
+  double max_hours_per_km = inf;  // the largest finite value of any frame: a step without a wait
 };
 
 class IceSeasonTime {
@@ -48,8 +49,11 @@ class IceSeasonTime {
         if (t.fraction == 0) corners_[o].push_back(t);
   }
 
-  // Hours per km: at least the fastest ice of the season; waiting has no upper bound.
-  StepBounds bounds(const Passability&) const { return {s_.min_hours_per_km, inf, true}; }
+  // Hours per km: at least the fastest ice of the season; waiting has no upper bound, a step
+  // that does not wait costs at most the slowest ice's hours.
+  StepBounds bounds(const Passability&) const {
+    return {s_.min_hours_per_km, inf, true, s_.max_hours_per_km};
+  }
 
   template <class Cell>
   double operator()(std::int64_t v, std::int64_t, int o, double r_km, double t_h, Cell&& cell) const {

@@ -172,8 +172,8 @@ class PreparedChart {
     QueueChoice q = choose_queue(b, rmin_, rmax_, eps, astar ? b.min_rate : 0.0);
     if (weight > 1) q.kind = QueueKind::quaternary;
     double hw = target >= 0 && b.per_length ? weight : 0.0;
-    if (q.kind == QueueKind::buckets && astar) hw = 1 - eps;
-    SearchStats stats = with_queue<true, false>(q, [&](auto heap) {
+    if ((q.kind == QueueKind::buckets || q.kind == QueueKind::overflow_buckets) && astar) hw = 1 - eps;
+    SearchStats stats = with_queue<true, false, Model::caps.time_dependent>(q, [&](auto heap) {
       return search(*steps_, model, start, target, ws, std::move(heap), hw * b.min_rate, control);
     });
     stats.min_cost = b.min_rate;

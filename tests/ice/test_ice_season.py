@@ -321,3 +321,41 @@ def test_later_departures_never_arrive_earlier_and_threads_agree():
     with ThreadPoolExecutor(4) as pool:
         threaded = list(pool.map(lambda m: chart.route((71.0, 64.0), (76.0, 78.0), model=m), models * 2))
     assert [r.cost for r in threaded] == [r.cost for r in serial] * 2
+
+
+# Waits of days against steps of minutes: the search keeps the waits aside (beyond its bucket
+# ring) and takes them back in order, and a queue holding nothing but waits starts again at the
+# least of them.
+# Seeds 32, 35 and 37 wait 106, 117 and 215 h; 33 does not wait; 41 has no route.
+@pytest.mark.parametrize("seed", [32, 33, 35, 37, 41])
+def test_season_with_waits_of_days_equals_brute_force(seed):
+    rng = np.random.default_rng(seed)
+    frames, shape = 4, (3, 4)
+    stage = rng.choice([55, 87, 93], size=(frames,) + shape, p=[0.4, 0.2, 0.4])
+    start, end = (0, 0), (shape[0] - 1, shape[1] - 1)
+    stage[:, start[0], start[1]] = 55
+    hours = np.concatenate([[0.0], np.cumsum(rng.integers(20, 200, frames - 1))]).astype(float)
+    ds = planar_season(stage, hours=hours, dx=1.0)
+    best = season_best_arrival(table_hours(stage), hours, start, end, 3, planar_length(1.0))
+    for method in ("dijkstra", "astar"):
+        try:
+            got = route_season(ds, start, end, speed=TABLE, concentration_limit=False,
+                               neighbourhood=3, method=method).cost
+        except seaway.NoRouteError:
+            got = math.inf
+        assert got == pytest.approx(best, rel=1e-9)
+    assert math.isinf(best) == (seed == 41)
+
+
+def test_a_ship_beset_at_the_start_waits_for_the_ice_to_open():
+    # Every pixel but the start is closed (thick first-year ice) until the chart of 100 h opens
+    # the sea: the ship waits 100 h where it is, then sails 19 pixels of 10 km at 12 kn.
+    stage = np.full((3, 5, 20), 93)
+    stage[:, 2, 0] = 55
+    stage[1:] = 55
+    ds = planar_season(stage, hours=[0.0, 100.0, 300.0])
+    h = float(np.float32(1 / (12 * KN)))
+    for method in ("dijkstra", "astar"):
+        r = route_season(ds, (2, 0), (2, 19), speed=TABLE, concentration_limit=False, method=method)
+        assert r.cost == pytest.approx(100.0 + 190 * h, rel=1e-12)
+        assert r.stats.voyage.hours_waiting == pytest.approx(100.0, rel=1e-12)
