@@ -6,7 +6,8 @@ import time
 import numpy as np
 
 import seaway
-from seaway.samples import synthetic_sea, synthetic_endpoints
+from seaway.samples import synthetic_endpoints, synthetic_sea
+
 cost = synthetic_sea((1900, 2300)); a, b = synthetic_endpoints(cost.shape)
 out = []
 for k in (3, 5, 7):

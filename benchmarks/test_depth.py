@@ -10,7 +10,6 @@ import xarray as xr
 
 from seaway.depth import depth_on_grid, open_bathymetry
 from seaway.ice.grids import latlon_grid, projected_grid
-
 from support.data import SHARED_DATA
 
 from .conftest import record

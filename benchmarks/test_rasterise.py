@@ -8,8 +8,8 @@ import pytest
 
 from seaway.ice.grids import latlon_grid
 from seaway.ice.sigrid import read_sigrid3
-
 from support import panarctic
+
 from .conftest import record
 
 GRID = (66.5, 80.0, 58.5, 113.5, 0.05)  # Kara Gate to the Vilkitsky Strait

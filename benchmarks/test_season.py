@@ -11,9 +11,9 @@ import pytest
 
 import seaway
 from seaway.chart.locate import locate
-from seaway.samples import kara_season
 from seaway.ice.season import SeasonGrid
 from seaway.models import IceSeasonTime
+from seaway.samples import kara_season
 
 from .conftest import SHAPE, record
 

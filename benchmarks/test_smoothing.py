@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 import seaway
-
 from support.reference import refraction_optimum
+
 from .conftest import record
 
 

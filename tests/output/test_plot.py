@@ -7,8 +7,9 @@ import xarray as xr
 import seaway
 
 pytest.importorskip("matplotlib")
-from seaway import plot  # noqa: E402
 from matplotlib import image  # noqa: E402
+
+from seaway import plot  # noqa: E402
 
 
 def _magenta(png):
