@@ -64,7 +64,9 @@ def _coarse_land_distance(shape=(380, 460), sub=4, max_km=200.0):
 def _stage_from_thickness(h, fy_lumped):
     stage = np.select(
         [h <= 0, h < 0.05, h < 0.10, h < 0.15, h < 0.30, h < 0.70, h < 1.20],
-        [55, 81, 82, 84, 85, 87, 91], default=93).astype(np.float32)
+        [55, 81, 82, 84, 85, 87, 91],
+        default=93,
+    ).astype(np.float32)
     lump = fy_lumped & (h >= 0.30) & (h < 2.0)  # an analyst's undivided first-year ice
     stage[lump] = 86
     return stage
@@ -126,35 +128,74 @@ def _kara_sea(shape):
 def _dataset(xr, lat, lon, land, conc, stage, h):
     codes = sorted(STAGES)
     coords = {
-        "lat": ("lat", lat, {"standard_name": "latitude", "units": "degrees_north",
-                             "long_name": "latitude of pixel centre", "axis": "Y"}),
-        "lon": ("lon", lon, {"standard_name": "longitude", "units": "degrees_east",
-                             "long_name": "longitude of pixel centre", "axis": "X"}),
+        "lat": (
+            "lat",
+            lat,
+            {
+                "standard_name": "latitude",
+                "units": "degrees_north",
+                "long_name": "latitude of pixel centre",
+                "axis": "Y",
+            },
+        ),
+        "lon": (
+            "lon",
+            lon,
+            {
+                "standard_name": "longitude",
+                "units": "degrees_east",
+                "long_name": "longitude of pixel centre",
+                "axis": "X",
+            },
+        ),
     }
     dims = ("lat", "lon")
     data = {
-        "land": (dims, land, {"standard_name": "land_binary_mask", "units": "1",
-                              "long_name": "land (GLOBE 1 km land mask at the pixel centre)"}),
-        "sea_ice_concentration": (dims, conc, {
-            "standard_name": "sea_ice_area_fraction", "units": "0.1",
-            "long_name": "total ice concentration CT in tenths (0 ice free ... 10 = 10/10; "
-                         "NaN on land)"}),
-        "stage_of_development": (dims, stage, {
-            "long_name": "stage of development of the ice (WMO SIGRID-3 code, SA; NaN on land)",
-            "units": "1",
-            "flag_values": np.array(codes, dtype=np.float32),
-            "flag_meanings": " ".join(STAGES[c][0].replace(" ", "_").replace(",", "")
-                                      for c in codes),
-            "references": "JCOMM Technical Report 23 (SIGRID-3, v3.0)"}),
-        "ice_thickness": (dims, h, {"standard_name": "sea_ice_thickness", "units": "m",
-                                    "long_name": "sea ice thickness (NaN on land)"}),
+        "land": (
+            dims,
+            land,
+            {
+                "standard_name": "land_binary_mask",
+                "units": "1",
+                "long_name": "land (GLOBE 1 km land mask at the pixel centre)",
+            },
+        ),
+        "sea_ice_concentration": (
+            dims,
+            conc,
+            {
+                "standard_name": "sea_ice_area_fraction",
+                "units": "0.1",
+                "long_name": "total ice concentration CT in tenths (0 ice free ... 10 = 10/10; NaN on land)",
+            },
+        ),
+        "stage_of_development": (
+            dims,
+            stage,
+            {
+                "long_name": "stage of development of the ice (WMO SIGRID-3 code, SA; NaN on land)",
+                "units": "1",
+                "flag_values": np.array(codes, dtype=np.float32),
+                "flag_meanings": " ".join(STAGES[c][0].replace(" ", "_").replace(",", "") for c in codes),
+                "references": "JCOMM Technical Report 23 (SIGRID-3, v3.0)",
+            },
+        ),
+        "ice_thickness": (
+            dims,
+            h,
+            {
+                "standard_name": "sea_ice_thickness",
+                "units": "m",
+                "long_name": "sea ice thickness (NaN on land)",
+            },
+        ),
     }
     attrs = {
         "title": "Kara Sea in late winter: synthetic ice chart on the real coastline",
         "source": "synthetic ice (deterministic smooth random fields, seaway.samples.kara_sea) on "
-                  "the real GLOBE coastline from the global-land-mask package",
+        "the real GLOBE coastline from the global-land-mask package",
         "comment": "A demonstration chart, not an observation; do not navigate by it. Rows run "
-                   "north to south (lat descending).",
+        "north to south (lat descending).",
         "Conventions": "CF-1.8",
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)
@@ -201,7 +242,7 @@ def synthetic_sea(shape=(1900, 2300), land_fraction=0.3, seed=0):
         raise ValueError("land_fraction must be a number in [0, 0.9), got 0.9")
     rng = np.random.default_rng(seed)
     coarse = (max(rows // 8, 20), max(cols // 8, 20))
-    cy, cx = np.mgrid[0:coarse[0], 0:coarse[1]] / np.array(coarse).reshape(2, 1, 1)
+    cy, cx = np.mgrid[0 : coarse[0], 0 : coarse[1]] / np.array(coarse).reshape(2, 1, 1)
     blobs = np.zeros(coarse)
     for y, x, r in zip(rng.uniform(0.1, 0.9, 6), rng.uniform(0.1, 0.9, 6), rng.uniform(0.06, 0.12, 6)):
         blobs += np.exp(-((cy - y) ** 2 + (cx - x) ** 2) / (2 * r**2))
@@ -260,10 +301,16 @@ def kara_season(days=7, start="2026-07-01", melt_m_per_day=0.1, melted_m=0.5, sh
         ct.append(c), sa.append(s), h.append(hd)
     dims = ("time", "lat", "lon")
     time = np.datetime64(start, "D") + np.arange(days).astype("timedelta64[D]")
-    return xr.Dataset({"CT": (dims, np.array(ct), {"units": "0.1", "long_name": "total concentration"}),
-                       "SA": (dims, np.array(sa), {"long_name": "stage of development (WMO code)"}),
-                       "thickness": (dims, np.array(h), {"units": "m", "standard_name": "sea_ice_thickness"}),
-                       "land": (("lat", "lon"), ds.land.values)},
-                      coords={"time": time.astype("datetime64[ns]"), "lat": ds.lat, "lon": ds.lon},
-                      attrs={"title": f"Kara Sea breaking up: {days} synthetic daily charts from {start}",
-                             "comment": "synthetic (seaway.samples.kara_season); do not navigate by it"})
+    return xr.Dataset(
+        {
+            "CT": (dims, np.array(ct), {"units": "0.1", "long_name": "total concentration"}),
+            "SA": (dims, np.array(sa), {"long_name": "stage of development (WMO code)"}),
+            "thickness": (dims, np.array(h), {"units": "m", "standard_name": "sea_ice_thickness"}),
+            "land": (("lat", "lon"), ds.land.values),
+        },
+        coords={"time": time.astype("datetime64[ns]"), "lat": ds.lat, "lon": ds.lon},
+        attrs={
+            "title": f"Kara Sea breaking up: {days} synthetic daily charts from {start}",
+            "comment": "synthetic (seaway.samples.kara_season); do not navigate by it",
+        },
+    )

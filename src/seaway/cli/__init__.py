@@ -25,8 +25,10 @@ from .season import add_season_command, run_season
 def build_parser() -> argparse.ArgumentParser:
     """The parser of the `seaway` command line (all its commands)."""
     parser = argparse.ArgumentParser(
-        prog="seaway", description="Least-cost ship routes through sea ice, waves and weather on "
-        "raster charts.", epilog=EPILOG + " 'seaway COMMAND --help' explains each command.")
+        prog="seaway",
+        description="Least-cost ship routes through sea ice, waves and weather on raster charts.",
+        epilog=EPILOG + " 'seaway COMMAND --help' explains each command.",
+    )
     commands = parser.add_subparsers(dest="command", required=True, metavar="command")
     add_demo_command(commands)
     add_route_command(commands)
@@ -38,8 +40,13 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
-    run = {"demo": run_demo, "route": run_route, "bench": run_bench,
-           "season": run_season, "replan": run_replan}[args.command]
+    run = {
+        "demo": run_demo,
+        "route": run_route,
+        "bench": run_bench,
+        "season": run_season,
+        "replan": run_replan,
+    }[args.command]
     try:
         return run(args)
     except (NoRouteError, ValueError, OSError, ImportError) as exc:

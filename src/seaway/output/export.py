@@ -29,8 +29,15 @@ from .webmap import html_text
 POINTS = ("start", "end", "requested_start", "requested_end", "least_depth_at")
 GPX_NS = "http://www.topografix.com/GPX/1/1"
 RTZ_NS = "http://www.cirm.org/RTZ/1/0"
-FORMATS = {".geojson": "geojson", ".json": "geojson", ".gpx": "gpx", ".csv": "csv", ".rtz": "rtz",
-           ".html": "html", ".htm": "html"}
+FORMATS = {
+    ".geojson": "geojson",
+    ".json": "geojson",
+    ".gpx": "gpx",
+    ".csv": "csv",
+    ".rtz": "rtz",
+    ".html": "html",
+    ".htm": "html",
+}
 
 
 def _split_antimeridian(lat, lon):
@@ -113,10 +120,14 @@ def rtz(route, speed_kn=None) -> str:
     if timed is not None:  # the voyage's departure and arrival, and what the route was found through
         attrs.update(validityPeriodStart=iso(timed.eta(0)), validityPeriodStop=iso(timed.eta(-1)))
         attrs["optimizationMethod"] = f"least {route.unit} ({route.edge_cost})" + (
-            f"; forecast {timed.forecast}" if timed.forecast else "")
+            f"; forecast {timed.forecast}" if timed.forecast else ""
+        )
     info = ET.SubElement(root, f"{{{RTZ_NS}}}routeInfo", attrs)
-    ext = ET.SubElement(ET.SubElement(info, f"{{{RTZ_NS}}}extensions"), f"{{{RTZ_NS}}}extension",
-                        {"manufacturer": "seaway", "name": "description", "version": "1.0"})
+    ext = ET.SubElement(
+        ET.SubElement(info, f"{{{RTZ_NS}}}extensions"),
+        f"{{{RTZ_NS}}}extension",
+        {"manufacturer": "seaway", "name": "description", "version": "1.0"},
+    )
     ext.text = describe(route, speed_kn)
     wps = ET.SubElement(root, f"{{{RTZ_NS}}}waypoints")
     default = ET.SubElement(wps, f"{{{RTZ_NS}}}defaultWaypoint", {"radius": "0.1"})
@@ -153,8 +164,20 @@ def _rtz_schedule(root, route, legs, timed: Schedule) -> None:
         ET.SubElement(calc, f"{{{RTZ_NS}}}scheduleElement", attrs)
 
 
-CSV_FIELDS = ["waypoint", "lat", "lon", "leg", "course_deg", "distance_km", "distance_nm",
-              "speed_kn", "time_h", "cost", "cumulative_km", "cumulative_cost"]
+CSV_FIELDS = [
+    "waypoint",
+    "lat",
+    "lon",
+    "leg",
+    "course_deg",
+    "distance_km",
+    "distance_nm",
+    "speed_kn",
+    "time_h",
+    "cost",
+    "cumulative_km",
+    "cumulative_cost",
+]
 
 
 def csv_text(route, speed_kn=None) -> str:
@@ -169,16 +192,30 @@ def csv_text(route, speed_kn=None) -> str:
     dated = timed is not None
     w.writerow(CSV_FIELDS + (["eta", "etd"] if dated else []) + [h for n in env for h in _env_header(n)])
     first = route.waypoints[0]
-    w.writerow([1, f"{first[0]:.7f}", f"{first[1]:.7f}"] + [""] * (len(CSV_FIELDS) - 3)
-               + (["", iso(timed.etd(0))] if timed is not None else []) + [""] * (2 * len(env)))
+    w.writerow(
+        [1, f"{first[0]:.7f}", f"{first[1]:.7f}"]
+        + [""] * (len(CSV_FIELDS) - 3)
+        + (["", iso(timed.etd(0))] if timed is not None else [])
+        + [""] * (2 * len(env))
+    )
     wi = route.waypoint_index
     km = cost = 0.0
     for leg in legs:
         km, cost = km + leg.distance, cost + leg.cost
-        row = [leg.number + 1, f"{leg.end[0]:.7f}", f"{leg.end[1]:.7f}", leg.number,
-               f"{leg.course:.2f}", f"{leg.distance:.4f}", _opt(leg.distance_nm, 4),
-               _opt(leg.speed_kn, 2), _opt(leg.time_h, 3), f"{leg.cost:.6g}", f"{km:.4f}",
-               f"{cost:.6g}"]
+        row = [
+            leg.number + 1,
+            f"{leg.end[0]:.7f}",
+            f"{leg.end[1]:.7f}",
+            leg.number,
+            f"{leg.course:.2f}",
+            f"{leg.distance:.4f}",
+            _opt(leg.distance_nm, 4),
+            _opt(leg.speed_kn, 2),
+            _opt(leg.time_h, 3),
+            f"{leg.cost:.6g}",
+            f"{km:.4f}",
+            f"{cost:.6g}",
+        ]
         if timed is not None:  # the waypoint's ETA, and its ETD (after any wait; none at the end)
             last = leg.number == len(legs)
             row += [iso(leg.arrive), "" if last else iso(timed.etd(int(wi[leg.number])))]
@@ -202,10 +239,13 @@ def _env_cells(value):
 def render(route, fmt: str, speed_kn=None, **map_options) -> str:
     """The text of `route` in format `fmt` (one of FORMATS' values); map_options go to the HTML
     map (seaway.output.webmap.explore)."""
-    makers = {"geojson": lambda: json.dumps(geojson(route, speed_kn=speed_kn), indent=1),
-              "gpx": lambda: gpx(route, speed_kn), "rtz": lambda: rtz(route, speed_kn),
-              "csv": lambda: csv_text(route, speed_kn),
-              "html": lambda: html_text(route, speed_kn=speed_kn, **map_options)}
+    makers = {
+        "geojson": lambda: json.dumps(geojson(route, speed_kn=speed_kn), indent=1),
+        "gpx": lambda: gpx(route, speed_kn),
+        "rtz": lambda: rtz(route, speed_kn),
+        "csv": lambda: csv_text(route, speed_kn),
+        "html": lambda: html_text(route, speed_kn=speed_kn, **map_options),
+    }
     if fmt not in makers:
         raise ValueError(f"fmt must be one of {sorted(makers)}, got {fmt!r}")
     return makers[fmt]()
@@ -215,8 +255,10 @@ def format_of(path) -> str:
     """The format an output path's extension names; ValueError naming the extensions otherwise."""
     fmt = FORMATS.get(os.path.splitext(os.fspath(path))[1].lower())
     if fmt is None:
-        raise ValueError(f"cannot tell the format of {os.fspath(path)!r}: use one of the extensions "
-                         f"{', '.join(sorted(FORMATS))}")
+        raise ValueError(
+            f"cannot tell the format of {os.fspath(path)!r}: use one of the extensions "
+            f"{', '.join(sorted(FORMATS))}"
+        )
     return fmt
 
 
@@ -234,8 +276,10 @@ def _opt(v, digits):
 
 def _need_latlon(route, what):
     if not route.geographic:
-        raise ValueError(f"{what} needs latitudes and longitudes; this route is on a planar chart "
-                         "(give the chart lat/lon coordinates, or export GeoJSON or CSV)")
+        raise ValueError(
+            f"{what} needs latitudes and longitudes; this route is on a planar chart "
+            "(give the chart lat/lon coordinates, or export GeoJSON or CSV)"
+        )
 
 
 def header_lines(route, speed_kn=None) -> list:
@@ -277,9 +321,13 @@ def _voyage_properties(route) -> dict:
     timed = schedule(route)
     if timed is None or timed.departure is None:
         return {}
-    return {"vertex_times": [iso(timed.eta(i)) for i in range(len(route.coords))],
-            "waypoint_schedule": [{"waypoint": k, "eta": iso(timed.eta(int(i))), "etd": iso(timed.etd(int(i)))}
-                                  for k, i in enumerate(route.waypoint_index, start=1)]}
+    return {
+        "vertex_times": [iso(timed.eta(i)) for i in range(len(route.coords))],
+        "waypoint_schedule": [
+            {"waypoint": k, "eta": iso(timed.eta(int(i))), "etd": iso(timed.etd(int(i)))}
+            for k, i in enumerate(route.waypoint_index, start=1)
+        ],
+    }
 
 
 def describe(route, speed_kn=None) -> str:
