@@ -4,7 +4,8 @@ Gate to the Vilkitsky Strait; ``seaway bench`` times the engine on the synthetic
 ``seaway season DATE=CHART ... --from LAT,LON --to LAT,LON`` routes through dated ice charts;
 ``seaway route --forecast FILE`` routes through a weather forecast and ``seaway replan`` re-plans
 a voyage from where the ship is through a newer one.
-One module per command; common.py holds what they share."""
+One module per command (`seaway route` keeps its options in routeargs.py, and those of weather
+routing in forecastargs.py, beside the modules that run them); common.py holds what they share."""
 
 from __future__ import annotations
 
@@ -18,7 +19,8 @@ from .common import EPILOG
 from .demo import add_demo_command
 from .demo import demo as run_demo
 from .replan import add_replan_command, run_replan
-from .route import add_route_command, run_route
+from .route import run_route
+from .routeargs import add_route_command
 from .season import add_season_command, run_season
 
 

@@ -10,7 +10,8 @@ import json
 import numpy as np
 
 from .common import CLI_METHODS, EPILOG, neighbourhood, point, tell
-from .forecast import add_forecast_options, iso_time, run_forecast_route
+from .forecast import run_forecast_route
+from .forecastargs import add_forecast_options, iso_time
 
 
 def read_voyage(path) -> tuple[np.ndarray, np.ndarray, dict]:
