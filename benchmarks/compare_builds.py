@@ -60,8 +60,13 @@ def run(site, query, runs, callgrind=False):
         return json.loads(out)
     with tempfile.TemporaryDirectory() as tmp:
         log = os.path.join(tmp, "cg.out")
-        subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={log}", *args],
-                       env=env, check=True, capture_output=True, text=True)
+        subprocess.run(
+            ["valgrind", "--tool=callgrind", f"--callgrind-out-file={log}", *args],
+            env=env,
+            check=True,
+            capture_output=True,
+            text=True,
+        )
         with open(log) as f:
             total = next(int(line.split()[1]) for line in f if line.startswith("summary:"))
     return {"instructions": total}

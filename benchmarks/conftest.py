@@ -32,7 +32,7 @@ def record(name, benchmark, note="", cpu=None, peer=None):
     if note:
         NOTES[name] = note
     if cpu:
-        CPU[name] = float(np.median(cpu[-len(benchmark.stats.stats.data):]))
+        CPU[name] = float(np.median(cpu[-len(benchmark.stats.stats.data) :]))
     if peer:
         PEERS[name] = peer
 
@@ -47,7 +47,9 @@ def pytest_terminal_summary(terminalreporter):
     tr = terminalreporter
     peer = MEDIANS.get("skimage MCP_Geometric 8-conn")
     tr.write_sep("=", "seaway benchmark: medians and ratios")
-    tr.write_line(f"machine: {platform.processor() or platform.machine()}, python {platform.python_version()}, numpy {np.__version__}")
+    tr.write_line(
+        f"machine: {platform.processor() or platform.machine()}, python {platform.python_version()}, numpy {np.__version__}"
+    )
     tr.write_line(f"{'case':44s} {'median s':>9s} {'speed-up vs skimage':>20s}  note")
     for name, med in MEDIANS.items():
         ratio = f"{peer / med:.2f}x" if peer else "-"

@@ -57,8 +57,13 @@ def kara_chart():
 
     land = xr.open_dataset(LAND)["land"].sel(lat=slice(*BOX["lat"]), lon=slice(*BOX["lon"]))
     lat, lon = land["lat"].values, land["lon"].values
-    conc = xr.DataArray(concentration_on(lat, lon), coords={"lat": lat, "lon": lon}, dims=("lat", "lon"),
-                        name="cdr_seaice_conc", attrs={"standard_name": "sea_ice_area_fraction", "units": "1"})
+    conc = xr.DataArray(
+        concentration_on(lat, lon),
+        coords={"lat": lat, "lon": lon},
+        dims=("lat", "lon"),
+        name="cdr_seaice_conc",
+        attrs={"standard_name": "sea_ice_area_fraction", "units": "1"},
+    )
     ice, assumed = concentration_chart(conc, land=land.values.astype(bool))
     cost = chart_impact(ice, "Arc7")
     return cost, list(assumed) + list(cost.attrs.get("assumptions", ()))

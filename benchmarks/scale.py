@@ -57,7 +57,7 @@ def build(path: str, n: int, block: int = 10):
     if not os.path.exists(path) or os.path.getsize(path) != n * n * 4:
         mm = np.memmap(path, dtype=np.float32, mode="w+", shape=(n, n))
         for i in range(n // block):
-            mm[i * block:(i + 1) * block] = np.repeat(coarse[i], block)[None, :]
+            mm[i * block : (i + 1) * block] = np.repeat(coarse[i], block)[None, :]
         mm.flush()
         del mm
     return [tuple(v * block + block // 2 for v in p) for p in synthetic_endpoints(coarse.shape)]
@@ -70,22 +70,28 @@ def main():
     p.add_argument("--dir", default="/tmp")
     p.add_argument("--keep", action="store_true", help="keep the chart file for the next run")
     a = p.parse_args()
-    n = int(round(a.pixels ** 0.5 / 10)) * 10
+    n = int(round(a.pixels**0.5 / 10)) * 10
     path = os.path.join(a.dir, f"seaway-scale-{n}.f32")
     s, e = build(path, n)
     try:
-        out = subprocess.run([sys.executable, "-c", CHILD, path, str(n), a.method, *map(str, (*s, *e))],
-                             capture_output=True, text=True, check=True).stdout
+        out = subprocess.run(
+            [sys.executable, "-c", CHILD, path, str(n), a.method, *map(str, (*s, *e))],
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout
     finally:
         if not a.keep:
             os.remove(path)
     r = json.loads(out)
     gib = 2**30
-    print(f"{n} x {n} = {n * n:,} pixels, {r['method']}: prepare {r['prepare_s']:.1f} s, search "
-          f"{r['search_s']:.1f} s, {r['settled']:,} settled ({1e9 * r['search_s'] / r['settled']:.0f} ns "
-          f"each), peak RSS {r['hwm'] / gib:.2f} GiB ({(r['hwm'] - r['before']) / (n * n):.1f} B/pixel "
-          f"over the {r['before'] / gib:.2f} GiB before; engine's count "
-          f"{r['engine_bytes'] / (n * n):.1f} B/pixel), cost {r['cost']:.3f}")
+    print(
+        f"{n} x {n} = {n * n:,} pixels, {r['method']}: prepare {r['prepare_s']:.1f} s, search "
+        f"{r['search_s']:.1f} s, {r['settled']:,} settled ({1e9 * r['search_s'] / r['settled']:.0f} ns "
+        f"each), peak RSS {r['hwm'] / gib:.2f} GiB ({(r['hwm'] - r['before']) / (n * n):.1f} B/pixel "
+        f"over the {r['before'] / gib:.2f} GiB before; engine's count "
+        f"{r['engine_bytes'] / (n * n):.1f} B/pixel), cost {r['cost']:.3f}"
+    )
 
 
 if __name__ == "__main__":

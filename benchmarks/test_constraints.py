@@ -36,15 +36,27 @@ print((status("VmHWM:") - before) / cost.size, r.stats.search.state_bytes / cost
 def test_turn_penalty_memory_and_time(chart, tmp_path, k):
     cost, start, end = chart
     np.save(tmp_path / "chart.npy", cost)
-    out = subprocess.run([sys.executable, "-c", _SCRIPT, str(tmp_path / "chart.npy"),
-                          *map(str, start), *map(str, end), str(k)],
-                         capture_output=True, text=True, check=True).stdout.split()
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            _SCRIPT,
+            str(tmp_path / "chart.npy"),
+            *map(str, start),
+            *map(str, end),
+            str(k),
+        ],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.split()
     rss, own, states, pixels, t_turn, t_plain, c_turn, c_plain, turns, plain_turns = map(float, out)
     offsets = k * k - 1
     NOTES[f"turn penalty k={k}: peak RSS added"] = (
         f"{rss:.0f} B/pixel (address space {own:.0f} = 9 x {offsets} offsets + queue), "
         f"{states:,.0f} states vs {pixels:,.0f} pixels settled, CPU {t_turn:.1f} s vs {t_plain:.2f} s plain, "
-        f"course changes {turns:.0f} vs {plain_turns:.0f}")
+        f"course changes {turns:.0f} vs {plain_turns:.0f}"
+    )
     print(f"\nk={k}: {NOTES[f'turn penalty k={k}: peak RSS added']}")
     assert 9 * offsets <= own <= 9 * offsets + 16  # 8 B of cost + 1 of predecessor per state
     assert rss <= own + 16  # pages never touched stay unmapped (calloc)
@@ -70,13 +82,17 @@ def test_turn_penalty_against_the_plain_route(chart, tmp_path):
     same prepared chart, alternated in one fresh process; wall medians of 3."""
     cost, start, end = chart
     np.save(tmp_path / "chart.npy", cost)
-    out = subprocess.run([sys.executable, "-c", _VS_PLAIN, str(tmp_path / "chart.npy"),
-                          *map(str, start), *map(str, end)], capture_output=True, text=True,
-                         check=True).stdout.split()
+    out = subprocess.run(
+        [sys.executable, "-c", _VS_PLAIN, str(tmp_path / "chart.npy"), *map(str, start), *map(str, end)],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.split()
     plain_s, turn_s, states, pixels, c_turn, c_plain, turns, plain_turns = map(float, out[:8])
     NOTES["turn penalty 0.5/degree vs plain, corner voyage"] = (
         f"{turn_s:.2f} s = {turn_s / plain_s:.1f} x the plain route ({plain_s:.3f} s, {out[8]}); "
         f"{states:,.0f} states settled vs {pixels:,.0f} pixels; cost {c_turn:.1f} vs {c_plain:.1f}; "
-        f"course changes {turns:.0f} vs {plain_turns:.0f}")
+        f"course changes {turns:.0f} vs {plain_turns:.0f}"
+    )
     print("\n" + NOTES["turn penalty 0.5/degree vs plain, corner voyage"])
     assert c_turn > c_plain and turns < plain_turns

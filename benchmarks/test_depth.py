@@ -3,14 +3,12 @@ against the peer xarray's coarsen().max() where the ratio of resolutions is a wh
 (0.25 deg pixels = 3 x 3 nodes; the answers must be equal), and onto the 0.05 deg Kara Sea
 grid (270 x 1100, interpolation) and a 20 km EPSG:3413 grid of the whole Arctic (binned)."""
 
-
 import numpy as np
 import pytest
 import xarray as xr
 
 from seaway.depth import depth_on_grid, open_bathymetry
 from seaway.ice.grids import latlon_grid, projected_grid
-
 from support.data import SHARED_DATA
 
 from .conftest import record
@@ -40,8 +38,9 @@ def _peer(b):
 
 def test_depth_binned_minimum_vs_coarsen(benchmark, etopo):
     grid = latlon_grid(S, S + 16, W, W + 60, 0.25)
-    z = benchmark.pedantic(depth_on_grid, (etopo,), {"lat": grid.y, "lon": grid.x}, rounds=5,
-                           iterations=1, warmup_rounds=1)
+    z = benchmark.pedantic(
+        depth_on_grid, (etopo,), {"lat": grid.y, "lon": grid.x}, rounds=5, iterations=1, warmup_rounds=1
+    )
     peer = _peer(etopo)
     assert z.shape == (64, 240) == peer.shape
     assert np.array_equal(z.values[::-1], peer.values)  # rows north to south
@@ -55,8 +54,9 @@ def test_peer_coarsen(benchmark, etopo):
 
 def test_depth_kara_grid(benchmark, etopo):
     kara = latlon_grid(66.5, 80.0, 58.5, 113.5, 0.05)
-    z = benchmark.pedantic(depth_on_grid, (etopo,), {"lat": kara.y, "lon": kara.x}, rounds=5,
-                           iterations=1, warmup_rounds=1)
+    z = benchmark.pedantic(
+        depth_on_grid, (etopo,), {"lat": kara.y, "lon": kara.x}, rounds=5, iterations=1, warmup_rounds=1
+    )
     assert z.shape == (270, 1100) and np.isfinite(z.values).all()
     record("depth_on_grid ETOPO5 -> Kara 0.05 deg", benchmark, "270 x 1100, interpolation")
 

@@ -28,8 +28,9 @@ def test_skimage_mcp_geometric(benchmark, chart):
 
 def test_compat_matches_skimage(benchmark, chart):
     cost, start, end = chart
-    path, total = benchmark.pedantic(route_through_array, args=(cost, start, end),
-                                     rounds=5, iterations=1, warmup_rounds=1)
+    path, total = benchmark.pedantic(
+        route_through_array, args=(cost, start, end), rounds=5, iterations=1, warmup_rounds=1
+    )
     record("seaway.compat.route_through_array", benchmark, "same graph as the peer")
     m = skgraph.MCP_Geometric(cost, fully_connected=True)
     costs, _ = m.find_costs([start], [end])
@@ -40,12 +41,18 @@ def test_compat_matches_skimage(benchmark, chart):
 @pytest.mark.parametrize("method", ["dijkstra", "astar"])
 def test_seaway_route(benchmark, chart, k, method):
     cost, start, end = chart
-    r = benchmark.pedantic(seaway.route, args=(cost, start, end),
-                           kwargs=dict(neighbourhood=k, method=method, edge_cost="mean"),
-                           rounds=5, iterations=1, warmup_rounds=1)
+    r = benchmark.pedantic(
+        seaway.route,
+        args=(cost, start, end),
+        kwargs=dict(neighbourhood=k, method=method, edge_cost="mean"),
+        rounds=5,
+        iterations=1,
+        warmup_rounds=1,
+    )
     per_pixel = r.stats.search.state_bytes / cost.size
-    record(f"seaway {method} k={k}", benchmark,
-           f"{per_pixel:.1f} B/pixel, {r.stats.search.settled:,} settled")
+    record(
+        f"seaway {method} k={k}", benchmark, f"{per_pixel:.1f} B/pixel, {r.stats.search.settled:,} settled"
+    )
     exact = seaway.route(cost, start, end, neighbourhood=k, method="dijkstra", edge_cost="mean")
     assert r.cost == pytest.approx(exact.cost, rel=1e-9)
     assert per_pixel <= 16
@@ -54,12 +61,20 @@ def test_seaway_route(benchmark, chart, k, method):
 
 def test_weighted_astar(benchmark, chart):
     cost, start, end = chart
-    r = benchmark.pedantic(seaway.route, args=(cost, start, end),
-                           kwargs=dict(neighbourhood=5, method="astar", weight=1.5, edge_cost="mean"),
-                           rounds=5, iterations=1, warmup_rounds=1)
+    r = benchmark.pedantic(
+        seaway.route,
+        args=(cost, start, end),
+        kwargs=dict(neighbourhood=5, method="astar", weight=1.5, edge_cost="mean"),
+        rounds=5,
+        iterations=1,
+        warmup_rounds=1,
+    )
     exact = seaway.route(cost, start, end, neighbourhood=5, method="dijkstra", edge_cost="mean")
-    record("seaway weighted A* w=1.5 k=5", benchmark,
-           f"cost +{100 * (r.cost / exact.cost - 1):.2f} % over optimum")
+    record(
+        "seaway weighted A* w=1.5 k=5",
+        benchmark,
+        f"cost +{100 * (r.cost / exact.cost - 1):.2f} % over optimum",
+    )
     assert exact.cost <= r.cost <= 1.5 * exact.cost
     assert SHAPE == cost.shape
 
@@ -69,9 +84,14 @@ def test_summer_chart(benchmark, chart, method):
     """The same land with summer ice (costs 1-2): the A* bound is tight and A* prunes."""
     cost, start, end = chart
     summer = np.where(np.isfinite(cost), 1.0 + (cost - 1.0) / 29.0, np.inf)
-    r = benchmark.pedantic(seaway.route, args=(summer, start, end),
-                           kwargs=dict(neighbourhood=5, method=method, edge_cost="mean"),
-                           rounds=5, iterations=1, warmup_rounds=1)
+    r = benchmark.pedantic(
+        seaway.route,
+        args=(summer, start, end),
+        kwargs=dict(neighbourhood=5, method=method, edge_cost="mean"),
+        rounds=5,
+        iterations=1,
+        warmup_rounds=1,
+    )
     record(f"summer chart (costs 1-2) {method} k=5", benchmark, f"{r.stats.search.settled:,} settled")
     exact = seaway.route(summer, start, end, neighbourhood=5, method="dijkstra", edge_cost="mean")
     assert r.cost == pytest.approx(exact.cost, rel=1e-9)
@@ -101,10 +121,22 @@ def test_peak_memory_per_pixel(chart, tmp_path, k):
 
     cost, start, end = chart
     np.save(tmp_path / "chart.npy", cost)
-    out = subprocess.run([sys.executable, "-c", _RSS_SCRIPT, str(tmp_path / "chart.npy"),
-                          *map(str, start), *map(str, end), str(k)],
-                         capture_output=True, text=True, check=True).stdout.split()
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            _RSS_SCRIPT,
+            str(tmp_path / "chart.npy"),
+            *map(str, start),
+            *map(str, end),
+            str(k),
+        ],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.split()
     rss, own = float(out[0]), float(out[1])
     from .conftest import NOTES
+
     NOTES[f"peak RSS added by the search, k={k}"] = f"{rss:.1f} B/pixel (engine's own count {own:.1f})"
     assert own <= 16 and rss <= 16

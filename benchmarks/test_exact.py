@@ -38,12 +38,16 @@ def test_default_search_memory(chart, tmp_path):
     """Peak resident memory the default (auto = bidirectional) search adds, fresh process."""
     cost, start, end = chart
     np.save(tmp_path / "chart.npy", cost)
-    out = subprocess.run([sys.executable, "-c", _RSS_SCRIPT, str(tmp_path / "chart.npy"),
-                          *map(str, start), *map(str, end)],
-                         capture_output=True, text=True, check=True).stdout.split()
+    out = subprocess.run(
+        [sys.executable, "-c", _RSS_SCRIPT, str(tmp_path / "chart.npy"), *map(str, start), *map(str, end)],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.split()
     rss, own = float(out[0]), float(out[1])
     NOTES["peak RSS added by the default search (auto), k=5"] = (
-        f"{rss:.1f} B/pixel (engine's own count {own:.1f}), {out[2]}")
+        f"{rss:.1f} B/pixel (engine's own count {own:.1f}), {out[2]}"
+    )
     assert out[2] == "bidirectional" and own <= 16 and rss <= 16
 
 
@@ -55,14 +59,18 @@ def test_route_quality_against_fast_marching(benchmark, chart):
     phi = np.ones_like(cost)
     phi[s] = -1.0  # zero level set half a pixel around the start
     t0 = time.perf_counter()
-    arrival = skfmm.travel_time(np.ma.MaskedArray(phi, land), np.where(land, 1.0, 1.0 / np.where(land, 1.0, cost)),
-                                dx=1.0, order=2)
+    arrival = skfmm.travel_time(
+        np.ma.MaskedArray(phi, land), np.where(land, 1.0, 1.0 / np.where(land, 1.0, cost)), dx=1.0, order=2
+    )
     fmm_s = time.perf_counter() - t0
     best = float(arrival[e])
     r = seaway.route(cost, s, e, edge_cost="mean")
     sm = benchmark.pedantic(r.smoothed, rounds=3, iterations=1)
     raw, smooth = 100 * (r.cost / best - 1), 100 * (sm.cost / best - 1)
-    record("smooth benchmark chart (mean, 5x5)", benchmark,
-           f"raw {raw:+.3f} %, smoothed {smooth:+.3f} % vs scikit-fmm order 2 ({best:.1f}, "
-           f"{fmm_s:.1f} s); course changes {r.course_changes} -> {sm.course_changes}")
+    record(
+        "smooth benchmark chart (mean, 5x5)",
+        benchmark,
+        f"raw {raw:+.3f} %, smoothed {smooth:+.3f} % vs scikit-fmm order 2 ({best:.1f}, "
+        f"{fmm_s:.1f} s); course changes {r.course_changes} -> {sm.course_changes}",
+    )
     assert abs(smooth) <= 0.3 and sm.cost <= r.cost

@@ -45,27 +45,38 @@ def _machine_busy():
 
 def _metered(fn, usage):
     """fn, also noting per call: wall time, this process's CPU time, the whole machine's."""
+
     def run(*args, **kwargs):
         t, c, m = time.perf_counter(), time.process_time(), _machine_busy()
         out = fn(*args, **kwargs)
         usage.append((time.perf_counter() - t, time.process_time() - c, _machine_busy() - m))
         return out
+
     return run
 
 
 def _rate(name, benchmark, table, usage):
     med = benchmark.stats.stats.median
     wall, mine, machine = np.median(np.array(usage), axis=0)
-    record(name, benchmark, f"{len(table) / med:.2f} routes/s; cores busy: this process "
-           f"{mine / wall:.2f}, machine {machine / wall:.2f} of {os.cpu_count()}")
+    record(
+        name,
+        benchmark,
+        f"{len(table) / med:.2f} routes/s; cores busy: this process "
+        f"{mine / wall:.2f}, machine {machine / wall:.2f} of {os.cpu_count()}",
+    )
 
 
 @pytest.mark.parametrize("threads", [1, 2])
 def test_routes_per_second_threads(benchmark, chart, voyages, threads):
     usage = []
-    table = benchmark.pedantic(_metered(seaway.route_many, usage), args=(chart[0], voyages),
-                               kwargs=dict(threads=threads), rounds=5, iterations=1,
-                               warmup_rounds=1)
+    table = benchmark.pedantic(
+        _metered(seaway.route_many, usage),
+        args=(chart[0], voyages),
+        kwargs=dict(threads=threads),
+        rounds=5,
+        iterations=1,
+        warmup_rounds=1,
+    )
     _rate(f"route_many {N_ROUTES} routes, {threads} thread(s)", benchmark, table, usage)
     assert (table.status == "ok").all()
     np.testing.assert_array_equal(table.cost.to_numpy(), serial_costs(chart, voyages))
@@ -83,9 +94,14 @@ def client():
 
 def test_routes_per_second_dask(benchmark, chart, voyages, client):
     usage = []
-    table = benchmark.pedantic(_metered(seaway.route_many, usage), args=(chart[0], voyages),
-                               kwargs=dict(cluster=client, progress=False), rounds=5,
-                               iterations=1, warmup_rounds=1)
+    table = benchmark.pedantic(
+        _metered(seaway.route_many, usage),
+        args=(chart[0], voyages),
+        kwargs=dict(cluster=client, progress=False),
+        rounds=5,
+        iterations=1,
+        warmup_rounds=1,
+    )
     _rate(f"route_many {N_ROUTES} routes, 2-worker LocalCluster", benchmark, table, usage)
     assert (table.status == "ok").all()
     np.testing.assert_array_equal(table.cost.to_numpy(), serial_costs(chart, voyages))
@@ -116,13 +132,18 @@ def test_memory_of_concurrent_queries(chart, voyages, tmp_path):
     flat = [str(v) for s, e in voyages for v in (*s, *e)]
     added = {}
     for n in (1, 2, 4):
-        out = subprocess.run([sys.executable, "-c", _CONCURRENT, str(tmp_path / "chart.npy"),
-                              str(n), *flat], capture_output=True, text=True, check=True)
+        out = subprocess.run(
+            [sys.executable, "-c", _CONCURRENT, str(tmp_path / "chart.npy"), str(n), *flat],
+            capture_output=True,
+            text=True,
+            check=True,
+        )
         added[n] = float(out.stdout.split()[-1])
     per_query = (added[4] - added[1]) / 3
     NOTES["memory of N concurrent queries"] = (
         ", ".join(f"N={n}: {b:.1f} B/pixel" for n, b in added.items())
-        + f"; each extra query +{per_query:.1f} B/pixel")
+        + f"; each extra query +{per_query:.1f} B/pixel"
+    )
     assert added[1] <= 16 and per_query <= 16
 
 
@@ -156,7 +177,7 @@ def test_route_on_1e8_pixels_memory_mapped(benchmark, tmp_path):
     coarse = synthetic_sea((n // f, n // f)).astype(np.float32)
     mm = np.memmap(path, dtype=np.float32, mode="w+", shape=(n, n))
     for i in range(n // f):
-        mm[i * f:(i + 1) * f] = np.repeat(coarse[i], f)[None, :]
+        mm[i * f : (i + 1) * f] = np.repeat(coarse[i], f)[None, :]
     mm.flush()
     del mm
     s, e = (tuple(v * f + f // 2 for v in p) for p in synthetic_endpoints(coarse.shape))
@@ -168,9 +189,13 @@ def test_route_on_1e8_pixels_memory_mapped(benchmark, tmp_path):
     out = benchmark.pedantic(run, rounds=1, iterations=1)
     wall, hwm, before, cost, settled, length = map(float, out)
     GiB = 2**30
-    record("route_many 1 route on 10^8 pixels (memmap)", benchmark,
-           f"search {wall:.1f} s, {settled:,.0f} settled")
+    record(
+        "route_many 1 route on 10^8 pixels (memmap)",
+        benchmark,
+        f"search {wall:.1f} s, {settled:,.0f} settled",
+    )
     NOTES["10^8-pixel route peak memory"] = (
         f"VmHWM {hwm / GiB:.2f} GiB ({(hwm - before) / n**2:.1f} B/pixel over the "
-        f"{before / GiB:.2f} GiB before, incl. the 0.37 GiB of mapped chart pages read)")
+        f"{before / GiB:.2f} GiB before, incl. the 0.37 GiB of mapped chart pages read)"
+    )
     assert np.isfinite(cost) and length > 2 * n * 0.7 and hwm < 3 * GiB

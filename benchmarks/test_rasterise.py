@@ -8,8 +8,8 @@ import pytest
 
 from seaway.ice.grids import latlon_grid
 from seaway.ice.sigrid import read_sigrid3
-
 from support import panarctic
+
 from .conftest import record
 
 GRID = (66.5, 80.0, 58.5, 113.5, 0.05)  # Kara Gate to the Vilkitsky Strait
@@ -38,8 +38,11 @@ def test_read_sigrid3_kara_grid(benchmark, chart):
     grid = latlon_grid(*GRID)
     ds = benchmark.pedantic(read_sigrid3, (path, grid), rounds=5, iterations=1, warmup_rounds=1)
     agree = float((ds.polygon.values == _peer(truth, grid)).mean())
-    record("read_sigrid3 pan-Arctic -> Kara 0.05 deg", benchmark,
-           f"{len(truth)} polygons, {grid.shape[0]} x {grid.shape[1]} px, agreement {agree:.4%}")
+    record(
+        "read_sigrid3 pan-Arctic -> Kara 0.05 deg",
+        benchmark,
+        f"{len(truth)} polygons, {grid.shape[0]} x {grid.shape[1]} px, agreement {agree:.4%}",
+    )
     assert grid.shape == (270, 1100) and len(truth) >= 300 and agree >= 0.995
     assert benchmark.stats is None or benchmark.stats.stats.median <= 2.0
 

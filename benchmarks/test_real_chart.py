@@ -30,7 +30,8 @@ def kara():
     VOYAGES.setdefault("notes", []).append(
         f"kara (real): {cost.shape[0]} x {cost.shape[1]} pixels, "
         f"{np.isfinite(cost.values).mean():.0%} water, 8 landmarks in {st['seconds']:.2f} s; "
-        + "; ".join(notes))
+        + "; ".join(notes)
+    )
     lat, lon = cost["lat"].values, cost["lon"].values
 
     def point(px):

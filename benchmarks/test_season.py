@@ -11,9 +11,9 @@ import pytest
 
 import seaway
 from seaway.chart.locate import locate
-from seaway.samples import kara_season
 from seaway.ice.season import SeasonGrid
 from seaway.models import IceSeasonTime
+from seaway.samples import kara_season
 
 from .conftest import SHAPE, record
 
@@ -22,8 +22,9 @@ GATE, VILKITSKY_WEST = (70.34, 58.28), (77.5, 100.0)
 
 def _static(grid, hours):
     """One chart's hours per km as a static chart (the integral model, like the season's steps)."""
-    return seaway.prepare(grid.template.copy(data=hours), land=grid.dry, neighbourhood=5,
-                          edge_cost="integral")
+    return seaway.prepare(
+        grid.template.copy(data=hours), land=grid.dry, neighbourhood=5, edge_cost="integral"
+    )
 
 
 @pytest.fixture(scope="module")
@@ -35,23 +36,36 @@ def season():
 def test_build_season_model(benchmark, season):
     grid, _ = season
     model = benchmark.pedantic(IceSeasonTime, (grid, "Arc7", 14.0), rounds=3, iterations=1)
-    record("season: IceSeasonTime(7 charts) build", benchmark,
-           f"{model.hours_per_km.nbytes / 2**20:.0f} MB of float32 hours per km")
+    record(
+        "season: IceSeasonTime(7 charts) build",
+        benchmark,
+        f"{model.hours_per_km.nbytes / 2**20:.0f} MB of float32 hours per km",
+    )
 
 
 @pytest.mark.parametrize("method", ["astar", "dijkstra"])
 def test_season_route(benchmark, season, method):
     grid, chart = season
     model = IceSeasonTime(grid, "Arc7", 14.0)
-    r = benchmark.pedantic(chart.route, (GATE, VILKITSKY_WEST), {"model": model, "method": method},
-                           rounds=5, iterations=1, warmup_rounds=1)
+    r = benchmark.pedantic(
+        chart.route,
+        (GATE, VILKITSKY_WEST),
+        {"model": model, "method": method},
+        rounds=5,
+        iterations=1,
+        warmup_rounds=1,
+    )
     best = _static(grid, model.hours_per_km[-1]).route(GATE, VILKITSKY_WEST)  # the most open chart
-    record(f"season route Arc7 7 charts {method} k=5", benchmark,
-           f"{r.cost:.2f} h ({r.stats.voyage.hours_waiting:.2f} h waiting), "
-           f"{r.stats.search.settled:,} settled, "
-           f"{r.stats.search.state_bytes / np.prod(SHAPE):.1f} B/pixel")
-    other = chart.route(GATE, VILKITSKY_WEST, model=model,
-                        method={"astar": "dijkstra", "dijkstra": "astar"}[method])
+    record(
+        f"season route Arc7 7 charts {method} k=5",
+        benchmark,
+        f"{r.cost:.2f} h ({r.stats.voyage.hours_waiting:.2f} h waiting), "
+        f"{r.stats.search.settled:,} settled, "
+        f"{r.stats.search.state_bytes / np.prod(SHAPE):.1f} B/pixel",
+    )
+    other = chart.route(
+        GATE, VILKITSKY_WEST, model=model, method={"astar": "dijkstra", "dijkstra": "astar"}[method]
+    )
     assert r.cost == pytest.approx(other.cost, rel=1e-9) and r.cost >= best.cost - 1e-9
 
 
@@ -59,10 +73,14 @@ def test_season_route(benchmark, season, method):
 def test_static_route_same_chart(benchmark, season, method):
     grid, chart = season
     static = _static(grid, IceSeasonTime(grid, "Arc7", 14.0).hours_per_km[0])
-    r = benchmark.pedantic(static.route, (GATE, VILKITSKY_WEST), {"method": method},
-                           rounds=5, iterations=1, warmup_rounds=1)
-    record(f"static route Arc7 day-1 chart {method} k=5", benchmark,
-           f"{r.cost:.2f} h, {r.stats.search.settled:,} settled")
+    r = benchmark.pedantic(
+        static.route, (GATE, VILKITSKY_WEST), {"method": method}, rounds=5, iterations=1, warmup_rounds=1
+    )
+    record(
+        f"static route Arc7 day-1 chart {method} k=5",
+        benchmark,
+        f"{r.cost:.2f} h, {r.stats.search.settled:,} settled",
+    )
 
 
 def test_peer_skimage_on_day_one(benchmark, season):

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 import seaway
-
 from support.reference import refraction_optimum
+
 from .conftest import record
 
 
@@ -20,8 +20,12 @@ def _excess(cost, best):
 def _check(benchmark, name, r, best, target):
     s = benchmark.pedantic(r.smoothed, rounds=3, iterations=1)
     raw, smooth = _excess(r.cost, best), _excess(s.cost, best)
-    record(name, benchmark, f"raw {raw:+.3f} %, smoothed {smooth:+.4f} %, course changes "
-                            f"{r.course_changes} -> {s.course_changes}")
+    record(
+        name,
+        benchmark,
+        f"raw {raw:+.3f} %, smoothed {smooth:+.4f} %, course changes "
+        f"{r.course_changes} -> {s.course_changes}",
+    )
     # "mean" prices the pixel pair at the interface at the average of the two media, so it may
     # come out a little below the continuous optimum: the target bounds |excess|
     assert abs(smooth) <= target and smooth < raw

@@ -47,8 +47,10 @@ def _alternate(cases):
 
 
 def _note(key, med, last, td, static):
-    NOTES[key] = (f"{med[td]:.3f} s = {med[td] / med[static]:.2f} x {static} ({med[static]:.3f} s); "
-                  + "; ".join(f"{n}: {med[n]:.3f} s, {r.stats.search.settled:,} settled" for n, r in last.items()))
+    NOTES[key] = (
+        f"{med[td]:.3f} s = {med[td] / med[static]:.2f} x {static} ({med[static]:.3f} s); "
+        + "; ".join(f"{n}: {med[n]:.3f} s, {r.stats.search.settled:,} settled" for n, r in last.items())
+    )
     print("\n" + key + ": " + NOTES[key])
 
 
@@ -56,13 +58,16 @@ def test_season_against_static():
     grid = SeasonGrid(kara_season(days=7, shape=SHAPE))
     chart = grid.prepare(neighbourhood=5)
     model = IceSeasonTime(grid, "Arc7", 14.0)
-    static = seaway.prepare(grid.template.copy(data=model.hours_per_km[0]), land=grid.dry,
-                            edge_cost="integral")
-    med, last = _alternate({
-        "season A*": lambda: chart.route(GATE, VILKITSKY_WEST, model=model, method="astar"),
-        "static A*": lambda: static.route(GATE, VILKITSKY_WEST, method="astar"),
-        "static auto": lambda: static.route(GATE, VILKITSKY_WEST),
-    })
+    static = seaway.prepare(
+        grid.template.copy(data=model.hours_per_km[0]), land=grid.dry, edge_cost="integral"
+    )
+    med, last = _alternate(
+        {
+            "season A*": lambda: chart.route(GATE, VILKITSKY_WEST, model=model, method="astar"),
+            "static A*": lambda: static.route(GATE, VILKITSKY_WEST, method="astar"),
+            "static auto": lambda: static.route(GATE, VILKITSKY_WEST),
+        }
+    )
     _note("season (IceSeasonTime, 7 charts) vs static", med, last, "season A*", "static A*")
     d = chart.route(GATE, VILKITSKY_WEST, model=model, method="dijkstra")
     assert last["season A*"].cost == pytest.approx(d.cost, rel=1e-9)
@@ -72,21 +77,30 @@ def _forecast(frames):
     ice = kara_sea(SHAPE)
     rng = np.random.default_rng(8)
     shape = (frames,) + SHAPE
+
     def field(scale, offset=0.0):
         base = smooth_noise(rng, SHAPE, 60.0)
         drift = smooth_noise(rng, SHAPE, 60.0)
-        return np.stack([offset + scale * ((1 - f / frames) * base + f / frames * drift)
-                         for f in range(frames)]).astype(np.float32)
+        return np.stack(
+            [offset + scale * ((1 - f / frames) * base + f / frames * drift) for f in range(frames)]
+        ).astype(np.float32)
+
     wet = ~ice.land.values
-    data = {"ce": (field(1.0, -0.5), "eastward_sea_water_velocity"),
-            "cn": (field(1.0, -0.5), "northward_sea_water_velocity"),
-            "hs": (field(3.5), "sea_surface_wave_significant_height"),
-            "wdir": (field(360.0), "sea_surface_wave_from_direction"),
-            "wind": (field(15.0), "wind_speed")}
+    data = {
+        "ce": (field(1.0, -0.5), "eastward_sea_water_velocity"),
+        "cn": (field(1.0, -0.5), "northward_sea_water_velocity"),
+        "hs": (field(3.5), "sea_surface_wave_significant_height"),
+        "wdir": (field(360.0), "sea_surface_wave_from_direction"),
+        "wind": (field(15.0), "wind_speed"),
+    }
     t = np.datetime64("2026-07-01T00") + np.arange(frames) * np.timedelta64(6, "h")
-    ds = xr.Dataset({k: (("time", "lat", "lon"), np.where(wet, v, np.nan).reshape(shape),
-                         {"standard_name": name}) for k, (v, name) in data.items()},
-                    coords={"time": t, "lat": ice.lat.values, "lon": ice.lon.values})
+    ds = xr.Dataset(
+        {
+            k: (("time", "lat", "lon"), np.where(wet, v, np.nan).reshape(shape), {"standard_name": name})
+            for k, (v, name) in data.items()
+        },
+        coords={"time": t, "lat": ice.lat.values, "lon": ice.lon.values},
+    )
     return ds
 
 
@@ -95,10 +109,12 @@ def test_forecast_against_static():
     moving, still = ForecastGrid(ds), ForecastGrid(ds.isel(time=0, drop=True))
     chart = moving.prepare()
     td, st = TravelTime(moving), TravelTime(still)
-    med, last = _alternate({
-        "forecast A*": lambda: chart.route(GATE, VILKITSKY_WEST, model=td, method="astar"),
-        "first frame A*": lambda: chart.route(GATE, VILKITSKY_WEST, model=st, method="astar"),
-    })
+    med, last = _alternate(
+        {
+            "forecast A*": lambda: chart.route(GATE, VILKITSKY_WEST, model=td, method="astar"),
+            "first frame A*": lambda: chart.route(GATE, VILKITSKY_WEST, model=st, method="astar"),
+        }
+    )
     _note("forecast (TravelTime, 8 frames) vs its first frame", med, last, "forecast A*", "first frame A*")
     d = chart.route(GATE, VILKITSKY_WEST, model=td, method="dijkstra")
     assert last["forecast A*"].cost == pytest.approx(d.cost, rel=1e-9)

@@ -48,7 +48,8 @@ def seasons(chart):
         st = p.prepare_landmarks(8)
         VOYAGES.setdefault("notes", []).append(
             f"{name}: 8 landmarks built in {st['seconds']:.2f} s wall, "
-            f"{time.process_time() - t:.2f} s CPU, {st['bytes_per_pixel']:.0f} B/pixel")
+            f"{time.process_time() - t:.2f} s CPU, {st['bytes_per_pixel']:.0f} B/pixel"
+        )
         prepared[name] = p
     return maps, prepared
 
@@ -101,16 +102,16 @@ def time_voyage(label, voyage, cost, prepared, s, e, route=seaway.route):
     rows = VOYAGES.setdefault("rows", [])
     for n in names:
         w, c = statistics.median(wall[n]), statistics.median(cpu[n])
-        row = dict(season=label, voyage=voyage, chart=n[0], method=n[1], wall=w, cpu=c,
-                   ratio=w / peer, skimage=peer)
+        row = dict(
+            season=label, voyage=voyage, chart=n[0], method=n[1], wall=w, cpu=c, ratio=w / peer, skimage=peer
+        )
         if n[0] != "skimage":
             r = last[n]
             assert r.cost == pytest.approx(exact, rel=1e-9), n
             used = r.method
             if used == "bidirectional" and methods.low_contrast(prepared):
                 used = "bidirectional A*"  # the potential of seaway.engine.methods
-            row.update(used=used, settled=r.stats.search.settled,
-                       ns=1e9 * c / max(r.stats.search.settled, 1))
+            row.update(used=used, settled=r.stats.search.settled, ns=1e9 * c / max(r.stats.search.settled, 1))
         rows.append(row)
 
 

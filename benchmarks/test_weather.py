@@ -35,19 +35,35 @@ def voyage():
 def test_ice_and_weather_route(benchmark, voyage, method):
     grid, chart, fc, ship = voyage
     model = IceWeatherTime(grid, fc, ship.ice_class, ship.vessel)
-    r = benchmark.pedantic(chart.route, (GATE, EAST), {"model": model, "method": method},
-                           rounds=3, iterations=1, warmup_rounds=1)
-    record(f"ice+weather route PC6 {method} k=5", benchmark,
-           f"{r.cost:.2f} h, {r.stats.search.settled:,} settled")
+    r = benchmark.pedantic(
+        chart.route, (GATE, EAST), {"model": model, "method": method}, rounds=3, iterations=1, warmup_rounds=1
+    )
+    record(
+        f"ice+weather route PC6 {method} k=5",
+        benchmark,
+        f"{r.cost:.2f} h, {r.stats.search.settled:,} settled",
+    )
     other = chart.route(GATE, EAST, model=model, method={"astar": "dijkstra", "dijkstra": "astar"}[method])
     assert r.cost == pytest.approx(other.cost, rel=1e-9)
     zero = fc.template.copy(data=np.zeros(grid.shape))
-    calm = ForecastGrid(xr.Dataset({"ce": zero.assign_attrs(standard_name="eastward_sea_water_velocity"),
-                                    "cn": zero.assign_attrs(standard_name="northward_sea_water_velocity")}),
-                        departure=DEPART)
-    still = chart.route(GATE, EAST, model=IceWeatherTime(grid, calm, ship.ice_class, ship.vessel), method=method)
-    alone = chart.route(GATE, EAST, model=IceSeasonTime(grid, ship.ice_class, ship.vessel.speed_kn,
-                                                        departure=calm.departure), method=method)
+    calm = ForecastGrid(
+        xr.Dataset(
+            {
+                "ce": zero.assign_attrs(standard_name="eastward_sea_water_velocity"),
+                "cn": zero.assign_attrs(standard_name="northward_sea_water_velocity"),
+            }
+        ),
+        departure=DEPART,
+    )
+    still = chart.route(
+        GATE, EAST, model=IceWeatherTime(grid, calm, ship.ice_class, ship.vessel), method=method
+    )
+    alone = chart.route(
+        GATE,
+        EAST,
+        model=IceSeasonTime(grid, ship.ice_class, ship.vessel.speed_kn, departure=calm.departure),
+        method=method,
+    )
     assert still.cost == pytest.approx(alone.cost, rel=1e-12)
 
 
@@ -55,18 +71,32 @@ def test_weather_route_same_grid(benchmark, voyage):
     grid, _, fc, ship = voyage
     chart = fc.prepare(land=grid.dry, neighbourhood=5)
     model = TravelTime(fc, ship.vessel)
-    r = benchmark.pedantic(chart.route, (GATE, EAST), {"model": model, "method": "astar"},
-                           rounds=3, iterations=1, warmup_rounds=1)
-    record("weather route (gale, no ice) astar k=5", benchmark,
-           f"{r.cost:.2f} h, {r.stats.search.settled:,} settled")
+    r = benchmark.pedantic(
+        chart.route,
+        (GATE, EAST),
+        {"model": model, "method": "astar"},
+        rounds=3,
+        iterations=1,
+        warmup_rounds=1,
+    )
+    record(
+        "weather route (gale, no ice) astar k=5",
+        benchmark,
+        f"{r.cost:.2f} h, {r.stats.search.settled:,} settled",
+    )
 
 
 def test_static_route_same_chart(benchmark, voyage):
     grid, _, _, ship = voyage
     hours = IceSeasonTime(grid, ship.ice_class, ship.vessel.speed_kn).hours_per_km[0]
-    static = seaway.prepare(grid.template.copy(data=hours), land=grid.dry, neighbourhood=5,
-                            edge_cost="integral")
-    r = benchmark.pedantic(static.route, (GATE, EAST), {"method": "astar"}, rounds=3, iterations=1,
-                           warmup_rounds=1)
-    record("static route PC6 day-1 chart astar k=5", benchmark,
-           f"{r.cost:.2f} h, {r.stats.search.settled:,} settled")
+    static = seaway.prepare(
+        grid.template.copy(data=hours), land=grid.dry, neighbourhood=5, edge_cost="integral"
+    )
+    r = benchmark.pedantic(
+        static.route, (GATE, EAST), {"method": "astar"}, rounds=3, iterations=1, warmup_rounds=1
+    )
+    record(
+        "static route PC6 day-1 chart astar k=5",
+        benchmark,
+        f"{r.cost:.2f} h, {r.stats.search.settled:,} settled",
+    )

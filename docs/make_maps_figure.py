@@ -5,8 +5,8 @@ Run from the repository root: python docs/make_maps_figure.py (needs seaway[plot
 
 import seaway
 from seaway.cli.demo import KARA_GATE, VILKITSKY_STRAIT, nearest_water
-from seaway.samples import ice_impact, kara_sea
 from seaway.plot import plot_route
+from seaway.samples import ice_impact, kara_sea
 
 ds = kara_sea((950, 1150))  # half the default resolution: the same ice, a smaller file
 u = ice_impact(ds.stage_of_development, "Arc7")

@@ -21,8 +21,21 @@ from .fleet import route_many
 from .result import Leg, Route
 from .smoothing import smooth
 
-__all__ = ["route", "cost_field", "prepare", "PreparedChart", "Route", "NoRouteError", "Leg",
-           "smooth", "route_many", "snap_ends", "SnappedEnds", "SnapError", "explain_no_route"]
+__all__ = [
+    "route",
+    "cost_field",
+    "prepare",
+    "PreparedChart",
+    "Route",
+    "NoRouteError",
+    "Leg",
+    "smooth",
+    "route_many",
+    "snap_ends",
+    "SnappedEnds",
+    "SnapError",
+    "explain_no_route",
+]
 try:
     __version__ = version("seaway")  # one version: pyproject.toml's, from the package metadata
 except PackageNotFoundError:  # run from a source tree that was never installed

@@ -110,13 +110,18 @@ class Vessel:
     def __init__(self) -> None: ...
 
 class Forecast:
-    def __init__(self, first_h: float, step_h: float, *,
-                 current_east: npt.NDArray[np.float32] | None = ...,
-                 current_north: npt.NDArray[np.float32] | None = ...,
-                 wave_height: npt.NDArray[np.float32] | None = ...,
-                 wave_from: npt.NDArray[np.float32] | None = ...,
-                 wind_speed: npt.NDArray[np.float32] | None = ...,
-                 wave_period: npt.NDArray[np.float32] | None = ...) -> None: ...
+    def __init__(
+        self,
+        first_h: float,
+        step_h: float,
+        *,
+        current_east: npt.NDArray[np.float32] | None = ...,
+        current_north: npt.NDArray[np.float32] | None = ...,
+        wave_height: npt.NDArray[np.float32] | None = ...,
+        wave_from: npt.NDArray[np.float32] | None = ...,
+        wind_speed: npt.NDArray[np.float32] | None = ...,
+        wave_period: npt.NDArray[np.float32] | None = ...,
+    ) -> None: ...
 
 class TravelTimeModel:
     #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
@@ -128,8 +133,15 @@ class FuelModel:
     #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
     #: time_dependent, smoothable.
     capabilities: ClassVar[dict[str, bool]]
-    def __init__(self, forecast: Forecast, vessel: Vessel, settings_kn: list[float],
-                 rate_t_per_h: list[float], lambda_t_per_h: float, best_extra_kn: float) -> None: ...
+    def __init__(
+        self,
+        forecast: Forecast,
+        vessel: Vessel,
+        settings_kn: list[float],
+        rate_t_per_h: list[float],
+        lambda_t_per_h: float,
+        best_extra_kn: float,
+    ) -> None: ...
 
 class WaveDangerModel:
     #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
@@ -141,27 +153,45 @@ class ZonedTravelTimeModel:
     #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
     #: time_dependent, smoothable.
     capabilities: ClassVar[dict[str, bool]]
-    def __init__(self, model: TravelTimeModel, mask: npt.NDArray[np.uint8],
-                 near: npt.NDArray[np.uint8], closes_h: list[float],
-                 opens_h: list[float]) -> None: ...
+    def __init__(
+        self,
+        model: TravelTimeModel,
+        mask: npt.NDArray[np.uint8],
+        near: npt.NDArray[np.uint8],
+        closes_h: list[float],
+        opens_h: list[float],
+    ) -> None: ...
 
 class IceSeasonModel:
     #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
     #: time_dependent, smoothable.
     capabilities: ClassVar[dict[str, bool]]
-    def __init__(self, hours_per_km: npt.NDArray[np.float32], valid_from_h: list[float],
-                 min_hours_per_km: float) -> None: ...
+    def __init__(
+        self, hours_per_km: npt.NDArray[np.float32], valid_from_h: list[float], min_hours_per_km: float
+    ) -> None: ...
 
 class IceWeatherModel:
     #: The model's Capabilities (cpp/seaway/capabilities.hpp): static, symmetric, turn_penalty,
     #: time_dependent, smoothable.
     capabilities: ClassVar[dict[str, bool]]
-    def __init__(self, ice: IceSeasonModel, forecast: Forecast, vessel: Vessel,
-                 min_hours_per_km: float) -> None: ...
+    def __init__(
+        self, ice: IceSeasonModel, forecast: Forecast, vessel: Vessel, min_hours_per_km: float
+    ) -> None: ...
 
 #: Every model the router is instantiated for (cpp/models.hpp).
-Model = (MaxCost | MeanCost | IntegralCost | LengthCost | EnteredPixelCost | TravelTimeModel | FuelModel
-         | WaveDangerModel | IceSeasonModel | IceWeatherModel | ZonedTravelTimeModel)
+Model = (
+    MaxCost
+    | MeanCost
+    | IntegralCost
+    | LengthCost
+    | EnteredPixelCost
+    | TravelTimeModel
+    | FuelModel
+    | WaveDangerModel
+    | IceSeasonModel
+    | IceWeatherModel
+    | ZonedTravelTimeModel
+)
 #: The static models (capabilities: static): the bidirectional search.
 StaticModel = MaxCost | MeanCost | IntegralCost | LengthCost | EnteredPixelCost
 #: The raster rules (capabilities: static, symmetric, turn_penalty, smoothable): landmarks, turn
@@ -171,18 +201,34 @@ RasterRule = MaxCost | MeanCost | IntegralCost | LengthCost
 class Router:
     @property
     def workspaces(self) -> int: ...
-    def route(self, model: Model, start: int, target: int, heuristic_weight: float,
-              cancel: CancelToken | None = None) -> QueryResult: ...
-    def field(self, model: Model, start: int,
-              cancel: CancelToken | None = None) -> tuple[npt.NDArray[np.float64], SearchStats]: ...
+    def route(
+        self,
+        model: Model,
+        start: int,
+        target: int,
+        heuristic_weight: float,
+        cancel: CancelToken | None = None,
+    ) -> QueryResult: ...
+    def field(
+        self, model: Model, start: int, cancel: CancelToken | None = None
+    ) -> tuple[npt.NDArray[np.float64], SearchStats]: ...
     @property
     def cost_range(self) -> tuple[float, float, int]: ...
-    def route_bidirectional(self, model: StaticModel, start: int, target: int, astar: bool,
-                            cancel: CancelToken | None = None) -> QueryResult: ...
-    def build_landmarks(self, model: RasterRule, count: int, seed: int,
-                        cancel: CancelToken | None = None) -> Landmarks: ...
-    def route_landmarks(self, model: RasterRule, landmarks: Landmarks, start: int, target: int,
-                        bidirectional: bool, cancel: CancelToken | None = None) -> QueryResult: ...
+    def route_bidirectional(
+        self, model: StaticModel, start: int, target: int, astar: bool, cancel: CancelToken | None = None
+    ) -> QueryResult: ...
+    def build_landmarks(
+        self, model: RasterRule, count: int, seed: int, cancel: CancelToken | None = None
+    ) -> Landmarks: ...
+    def route_landmarks(
+        self,
+        model: RasterRule,
+        landmarks: Landmarks,
+        start: int,
+        target: int,
+        bidirectional: bool,
+        cancel: CancelToken | None = None,
+    ) -> QueryResult: ...
 
 class Landmarks:
     @property
@@ -195,33 +241,63 @@ class Landmarks:
     def table(self) -> npt.NDArray[np.float32]: ...
 
 class LegPricer:
-    def __init__(self, model: RasterRule, land: npt.NDArray[np.uint8] | None,
-                 grid: Grid, half: int) -> None: ...
+    def __init__(
+        self, model: RasterRule, land: npt.NDArray[np.uint8] | None, grid: Grid, half: int
+    ) -> None: ...
     def leg(self, r0: float, c0: float, r1: float, c1: float) -> tuple[float, float]: ...
-    def smooth(self, vertices: npt.ArrayLike, step_cost: npt.ArrayLike, candidates: npt.ArrayLike,
-               refine: bool, max_sweeps: int) -> tuple[npt.NDArray[np.float64],
-                                                       npt.NDArray[np.float64], int]: ...
+    def smooth(
+        self,
+        vertices: npt.ArrayLike,
+        step_cost: npt.ArrayLike,
+        candidates: npt.ArrayLike,
+        refine: bool,
+        max_sweeps: int,
+    ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], int]: ...
 
-def make_router(cost: npt.NDArray[np.float32] | npt.NDArray[np.float64],
-                land: npt.NDArray[np.uint8] | None, grid: Grid, neighbourhood: int,
-                directions: str, land_rule: str) -> Router: ...
+def make_router(
+    cost: npt.NDArray[np.float32] | npt.NDArray[np.float64],
+    land: npt.NDArray[np.uint8] | None,
+    grid: Grid,
+    neighbourhood: int,
+    directions: str,
+    land_rule: str,
+) -> Router: ...
 def max_pair_costs(a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
 def mean_pair_costs(a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
-def length_pair_costs(a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
-def route_turns(router: Router, model: RasterRule, start: int, target: int,
-                heuristic_weight: float, angle_deg: list[float], cost: list[float],
-                incoming: int = -1, cancel: CancelToken | None = None) -> QueryResult: ...
+def length_pair_costs(
+    a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike
+) -> npt.NDArray[np.float64]: ...
+def route_turns(
+    router: Router,
+    model: RasterRule,
+    start: int,
+    target: int,
+    heuristic_weight: float,
+    angle_deg: list[float],
+    cost: list[float],
+    incoming: int = -1,
+    cancel: CancelToken | None = None,
+) -> QueryResult: ...
 def offset_index(router: Router, di: int, dj: int) -> int: ...
-def route_least_danger(router: Router, model: TravelTimeModel | ZonedTravelTimeModel,
-                       danger_wind_ms: float, danger_wave_m: float, start: int, target: int,
-                       heuristic_weight: float,
-                       cancel: CancelToken | None = None) -> tuple[QueryResult, npt.NDArray[np.float64]]: ...
-def stencil(k: int, directions: str) -> list[tuple[int, int, list[tuple[int, int]],
-                                                   list[tuple[int, int, float]]]]: ...
+def route_least_danger(
+    router: Router,
+    model: TravelTimeModel | ZonedTravelTimeModel,
+    danger_wind_ms: float,
+    danger_wave_m: float,
+    start: int,
+    target: int,
+    heuristic_weight: float,
+    cancel: CancelToken | None = None,
+) -> tuple[QueryResult, npt.NDArray[np.float64]]: ...
+def stencil(
+    k: int, directions: str
+) -> list[tuple[int, int, list[tuple[int, int]], list[tuple[int, int, float]]]]: ...
 def haversine_km(lat1: float, lon1: float, lat2: float, lon2: float) -> float: ...
 def khokhlov_speed_kn(v0_kn: float, h3_m: float, q_rad: float, displacement_t: float) -> float: ...
-def stawave1_speed_kn(v0_kn: float, hs_m: float, beam_m: float, length_m: float,
-                      calm_resistance_kn: float) -> float: ...
+def stawave1_speed_kn(
+    v0_kn: float, hs_m: float, beam_m: float, length_m: float, calm_resistance_kn: float
+) -> float: ...
 def speed_over_ground_kn(v_kn: float, current_kn: float, q_rad: float) -> float: ...
-def wave_danger(hs_m: float, wave_length_m: float, alpha_rad: float, ship_length_m: float,
-                speed_kn: float) -> float: ...
+def wave_danger(
+    hs_m: float, wave_length_m: float, alpha_rad: float, ship_length_m: float, speed_kn: float
+) -> float: ...

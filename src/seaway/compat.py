@@ -29,8 +29,7 @@ def _from_negative_start(prepared, s, e, fully_connected):
     if not (u[e] >= 0 and u[e] < np.inf):  # skimage never steps onto an impassable end
         return np.inf, None
     engine = prepared.model.engine(prepared)
-    field, _ = interruptible(lambda cancel: prepared.router.field(
-        engine, e[0] * cols + e[1], cancel))
+    field, _ = interruptible(lambda cancel: prepared.router.field(engine, e[0] * cols + e[1], cancel))
     best = (np.inf, None)
     for di, dj in ((-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1)):
         n = (s[0] + di, s[1] + dj)
@@ -71,8 +70,7 @@ def route_through_array(costs, start, end, fully_connected=True, geometric=True)
     if not geometric and not chart.values[s] < np.inf:  # +inf or NaN start: skimage finds no path
         raise NoRouteError("no minimum-cost path was found to the specified end point")
     model = EdgeCost("mean") if geometric else EnteredPixel()
-    prepared = PreparedChart.from_chart(chart, 3, "full" if fully_connected else "axis", model,
-                                        "ends")
+    prepared = PreparedChart.from_chart(chart, 3, "full" if fully_connected else "axis", model, "ends")
     if geometric and chart.values[s] < 0 and s != e:
         total, path = _from_negative_start(prepared, s, e, fully_connected)
     else:

@@ -74,6 +74,7 @@ class Corridor:
         if np.isscalar(env):
             return np.full(np.shape(lat), float(env))
         import xarray as xr
+
         la, lo = _names(env)
         glon = np.asarray(lon, float)
         glon = glon % 360.0 if float(env[lo].max()) > 180 else geo.wrap_lon(glon)
@@ -82,8 +83,17 @@ class Corridor:
         inside = _inside(env[la].values, np.ravel(lat)) & _inside(env[lo].values, np.ravel(glon))
         return np.where(inside, out, np.nan).reshape(np.shape(lat))
 
-    def route(self, env=None, *, steps="forward", max_shift=None, neighbourhood=5,
-              edge_cost="max", checks=8, speed_kn=None) -> Route:
+    def route(
+        self,
+        env=None,
+        *,
+        steps="forward",
+        max_shift=None,
+        neighbourhood=5,
+        edge_cost="max",
+        checks=8,
+        speed_kn=None,
+    ) -> Route:
         """The least-cost route along the corridor from the start to the end node."""
         if edge_cost not in ("max", "mean"):
             raise ValueError(f"edge_cost must be 'max' or 'mean' on a corridor, got {edge_cost!r}")
@@ -95,8 +105,15 @@ class Corridor:
             path = self._forward(u, env, max_shift or rows, model, checks)
             stats = RouteStats()  # dynamic programming: no search figures
         elif steps == "stencil":
-            r = engine_route(u, (self.m, 0), (self.m, layers - 1), dx=self.leg_km, dy=self.row_km,
-                             neighbourhood=neighbourhood, edge_cost=edge_cost)
+            r = engine_route(
+                u,
+                (self.m, 0),
+                (self.m, layers - 1),
+                dx=self.leg_km,
+                dy=self.row_km,
+                neighbourhood=neighbourhood,
+                edge_cost=edge_cost,
+            )
             path, stats = r.pixels, r.stats
         else:
             raise ValueError(f"steps must be 'forward' or 'stencil', got {steps!r}")
@@ -109,9 +126,19 @@ class Corridor:
             planar = np.hypot(d[:, 0] * self.row_km, d[:, 1] * self.leg_km)
             error = float(np.max(np.abs(planar / km - 1))) if len(km) else 0.0
             stats = dataclasses.replace(stats, corridor=CorridorStencil(r.cost, error))
-        return Route(chart=chart, cost=float(costs.sum()), pixels=path, method=f"corridor-{steps}",
-                     neighbourhood=neighbourhood, model=model, stats=stats, latlon=ll,
-                     step_costs=costs, speed_kn=speed_kn, name="great-circle corridor route")
+        return Route(
+            chart=chart,
+            cost=float(costs.sum()),
+            pixels=path,
+            method=f"corridor-{steps}",
+            neighbourhood=neighbourhood,
+            model=model,
+            stats=stats,
+            latlon=ll,
+            step_costs=costs,
+            speed_kn=speed_kn,
+            name="great-circle corridor route",
+        )
 
     def _forward(self, u, env, max_shift, model, checks):
         rows, layers = u.shape
@@ -132,8 +159,10 @@ class Corridor:
             back[:, i + 1] = np.argmin(total, axis=0)
             best = total[back[:, i + 1], j]
         if not np.isfinite(best[self.m]):
-            raise NoRouteError("no route along the corridor: every chain of edges meets impassable "
-                               "water; widen the corridor (more rows) or allow larger shifts")
+            raise NoRouteError(
+                "no route along the corridor: every chain of edges meets impassable "
+                "water; widen the corridor (more rows) or allow larger shifts"
+            )
         path = [self.m]
         for i in range(layers - 1, 0, -1):
             path.append(back[path[-1], i])
@@ -173,16 +202,24 @@ def corridor(start, end, *, spacing_nm=None, hours=None, speed_kn=None, row_nm=2
     offsets = (np.arange(2 * int(m) + 1) - int(m)) * row_nm * geo.KM_PER_NM
     side = np.where(offsets[:, None] >= 0, course[None, :] + 90, course[None, :] - 90)
     lat, lon = geo.destination(tlat[None, :], tlon[None, :], side, np.abs(offsets)[:, None])
-    return Corridor(start=(lat1, lon1), end=(lat2, lon2), lat=lat, lon=lon, leg_km=dist / legs,
-                    row_km=row_nm * geo.KM_PER_NM, distance_km=dist)
+    return Corridor(
+        start=(lat1, lon1),
+        end=(lat2, lon2),
+        lat=lat,
+        lon=lon,
+        leg_km=dist / legs,
+        row_km=row_nm * geo.KM_PER_NM,
+        distance_km=dist,
+    )
 
 
 def _names(da):
     la = next((n for n in ("lat", "latitude") if n in da.coords), None)
     lo = next((n for n in ("lon", "longitude") if n in da.coords), None)
     if la is None or lo is None:
-        raise ValueError("the environment must be a DataArray with lat/lon coordinates, a number "
-                         "or a function f(lat, lon)")
+        raise ValueError(
+            "the environment must be a DataArray with lat/lon coordinates, a number or a function f(lat, lon)"
+        )
     return la, lo
 
 

@@ -27,9 +27,16 @@ class NoRouteError(ValueError):
         charts).
     """
 
-    def __init__(self, message: str = "", *, cause: str | None = None,
-                 closing_ice: Iterable[tuple[str, float]] = (), weakest_class: str | None = None,
-                 reachable: tuple[float, ...] | None = None, reachable_km: float | None = None) -> None:
+    def __init__(
+        self,
+        message: str = "",
+        *,
+        cause: str | None = None,
+        closing_ice: Iterable[tuple[str, float]] = (),
+        weakest_class: str | None = None,
+        reachable: tuple[float, ...] | None = None,
+        reachable_km: float | None = None,
+    ) -> None:
         super().__init__(message)
         self.cause, self.closing_ice, self.weakest_class = cause, tuple(closing_ice), weakest_class
         self.reachable, self.reachable_km = reachable, reachable_km

@@ -33,19 +33,37 @@ def smooth(route, *, refine: bool = True, max_sweeps: int = 10):
     and shortcut_legs."""
     v = route.vertices
     if len(v) < 3:  # nothing to smooth; said in stats all the same
-        done = Smoothing(cost_before=route.cost, course_changes_before=0, course_changes_after=0,
-                         sweeps=0, shortcut_legs=max(len(v) - 1, 0))
-        return dataclasses.replace(route, points=v.copy(), step_costs=route.costs(),
-                                   stats=dataclasses.replace(route.stats, smoothing=done))
+        done = Smoothing(
+            cost_before=route.cost,
+            course_changes_before=0,
+            course_changes_after=0,
+            sweeps=0,
+            shortcut_legs=max(len(v) - 1, 0),
+        )
+        return dataclasses.replace(
+            route,
+            points=v.copy(),
+            step_costs=route.costs(),
+            stats=dataclasses.replace(route.stats, smoothing=done),
+        )
     seg = route.segments()
     step_cost = route.costs()
-    w, costs, sweeps = seg.pricer.smooth(v, step_cost, route.waypoint_index, bool(refine),
-                                         int(max_sweeps))
+    w, costs, sweeps = seg.pricer.smooth(v, step_cost, route.waypoint_index, bool(refine), int(max_sweeps))
     total = float(costs.sum())
-    out = dataclasses.replace(route, cost=total, pixels=np.rint(w).astype(np.int64), points=w,
-                              step_costs=np.asarray(costs, float), method=f"{route.method}+smoothed")
-    done = Smoothing(cost_before=route.cost, course_changes_before=route.course_changes,
-                     course_changes_after=out.course_changes, sweeps=int(sweeps),
-                     shortcut_legs=len(w) - 1)
+    out = dataclasses.replace(
+        route,
+        cost=total,
+        pixels=np.rint(w).astype(np.int64),
+        points=w,
+        step_costs=np.asarray(costs, float),
+        method=f"{route.method}+smoothed",
+    )
+    done = Smoothing(
+        cost_before=route.cost,
+        course_changes_before=route.course_changes,
+        course_changes_after=out.course_changes,
+        sweeps=int(sweeps),
+        shortcut_legs=len(w) - 1,
+    )
     out.stats = dataclasses.replace(route.stats, smoothing=done)
     return out

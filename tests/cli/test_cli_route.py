@@ -14,11 +14,12 @@ import xarray as xr
 
 import seaway
 from seaway import export
-from seaway.cli import main
 from seaway.base.interrupt import interruptible
+from seaway.cli import main
 from seaway.samples import ice_impact
 from support.data import SHARED_DATA
-from support.netcdf import small_dataset as _dataset, truncated_netcdf as _truncated
+from support.netcdf import small_dataset as _dataset
+from support.netcdf import truncated_netcdf as _truncated
 
 pytestmark = pytest.mark.cli
 

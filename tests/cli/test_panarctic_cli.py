@@ -20,11 +20,11 @@ pytest.importorskip("pyogrio")
 pyproj = pytest.importorskip("pyproj")
 ndimage = pytest.importorskip("scipy.ndimage")
 
-from support import panarctic  # noqa: E402
 from seaway.ice import chart_impact  # noqa: E402
 from seaway.ice.grids import latlon_grid  # noqa: E402
 from seaway.ice.impact import TABLE_2  # noqa: E402
 from seaway.ice.sigrid import read_sigrid3  # noqa: E402
+from support import panarctic  # noqa: E402
 
 GEOD = pyproj.Geod(a=6371008.8, b=6371008.8)  # the engine's sphere
 KARA_GATE, VILKITSKY = (70.4, 58.6), (77.7, 104.0)

@@ -11,9 +11,9 @@ import pytest
 import xarray as xr
 
 import seaway
-from support.distance import brute_distance
 from seaway.chart.raster import as_chart
 from seaway.constraints import KeepAway, Zone, constrain, distance_to, rasterise_zone
+from support.distance import brute_distance
 
 shapely = pytest.importorskip("shapely")
 from shapely.geometry import Polygon, box  # noqa: E402

@@ -152,10 +152,9 @@ def test_time_zone_errors():
 def test_via_on_a_season_route_is_refused_with_the_fix():
     """A season model cannot yet start a leg at the previous leg's arrival: via points are
     refused (rather than every leg leaving at the departure)."""
-    from support.seasons import DAY0, retreating_edge
-
     from seaway.ice.season import SeasonGrid
     from seaway.models import IceSeasonTime
+    from support.seasons import DAY0, retreating_edge
 
     grid = SeasonGrid(retreating_edge(days=2))
     model = IceSeasonTime(grid, "Arc4", 14, departure=DAY0)

@@ -233,8 +233,8 @@ def test_a_non_number_cell_size_is_named(kw, name):
 
 
 def test_every_numeric_argument_is_checked_by_name():
-    from seaway.samples import synthetic_sea
     from seaway.corridor import corridor
+    from seaway.samples import synthetic_sea
     from seaway.vessel import Vessel
 
     u = np.ones((6, 6))

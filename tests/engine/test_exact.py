@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 
 import seaway
-from support.reference import RefGraph
 from seaway import _core
 from support.grids import CASES, RTOL, check_path, make_chart, point
+from support.reference import RefGraph
 
 METHODS = ("bidirectional", "landmarks", "auto")
 

@@ -17,8 +17,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import seaway
-from support.reference import RefGraph
 from seaway.compat import route_through_array
+from support.reference import RefGraph
 
 EXAMPLES = int(os.environ.get("SEAWAY_FUZZ_EXAMPLES", "40"))
 FUZZ = settings(max_examples=EXAMPLES, deadline=None, database=None,

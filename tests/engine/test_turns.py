@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 import seaway
+from support.grids import make_chart, point
 from support.reference import RefGraph
 from support.reference_turns import turn_angle, turn_route_cost
-from support.grids import make_chart, point
 
 KS = (3, 5, 7, 9, 11, 13, 15)
 GRIDS = ("planar", "geo_asc", "geo_desc", "geo_wrap")

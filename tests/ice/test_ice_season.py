@@ -10,9 +10,9 @@ import xarray as xr
 
 import seaway
 from seaway.ice.season import arrival_field, as_season, route_season
+from support.data import SHARED_DATA
 from support.reference import haversine, season_best_arrival, season_path_arrival
 from support.seasons import DAY0, retreating_edge
-from support.data import SHARED_DATA
 
 DATA = SHARED_DATA
 KN = 1.852  # km per nautical mile

@@ -4,7 +4,6 @@ model of a prepared chart; and inputs refused with the fix."""
 
 import numpy as np
 import pytest
-import xarray as xr
 
 import seaway
 from seaway.ice.season import SeasonGrid, read_season, route_season

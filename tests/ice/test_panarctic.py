@@ -11,9 +11,9 @@ import pytest
 pytest.importorskip("antimeridian")
 pytest.importorskip("pyogrio")
 
-from support import panarctic  # noqa: E402
 from seaway.ice.grids import latlon_grid, projected_grid  # noqa: E402
 from seaway.ice.sigrid import read_sigrid3  # noqa: E402
+from support import panarctic  # noqa: E402
 from support.data import SHARED_DATA  # noqa: E402
 
 DATA = SHARED_DATA

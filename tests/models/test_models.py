@@ -8,7 +8,6 @@ import seaway
 from seaway import _core
 from seaway.models import EDGE_COSTS, EdgeCost, TravelTime
 from seaway.weather import ForecastGrid, Vessel, route_time
-
 from support.forecasts import forecast
 
 CALM = Vessel(speed_kn=12.0, speed_loss="none")

@@ -21,7 +21,7 @@ pytest.importorskip("pyogrio")
 shapely = pytest.importorskip("shapely")
 from matplotlib import image  # noqa: E402
 
-from seaway.output import plot  # noqa: E402
+from seaway.output import mapframe  # noqa: E402
 from support.data import SHARED_DATA  # noqa: E402
 from support.sigrid import write_chart  # noqa: E402
 
@@ -35,12 +35,12 @@ FAST, ICE_FREE, LAND, SHOAL = (150, 150, 150), (0, 100, 255), (200, 185, 150), (
 def legends(monkeypatch):
     """The legend labels of every PNG map drawn (read off the figure as it is saved)."""
     seen = []
-    real = plot._Map.png
+    real = mapframe.MapFrame.png
 
     def spy(m, dpi):
         seen.append([t.get_text() for lg in m.fig.legends for t in lg.get_texts()])
         return real(m, dpi)
-    monkeypatch.setattr(plot._Map, "png", spy)
+    monkeypatch.setattr(mapframe.MapFrame, "png", spy)
     return seen
 
 

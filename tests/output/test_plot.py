@@ -7,8 +7,11 @@ import xarray as xr
 import seaway
 
 pytest.importorskip("matplotlib")
-from seaway import plot  # noqa: E402
 from matplotlib import image  # noqa: E402
+
+from seaway import plot  # noqa: E402
+from seaway.output import mapframe  # noqa: E402
+from seaway.output.style import fit_title  # noqa: E402
 
 
 def _magenta(png):
@@ -57,7 +60,7 @@ def test_missing_matplotlib_names_the_extra(monkeypatch):
         return real(name, *args, **kwargs)
     monkeypatch.setattr(builtins, "__import__", fake)
     with pytest.raises(ImportError, match=r'pip install "seaway\[plot\]"'):
-        plot._pyplot()
+        mapframe.pyplot()
 
 
 def _count_rgb(png, rgb, tol=0.02):
@@ -127,9 +130,9 @@ def test_map_projection_follows_the_hemisphere(ice_chart):
     north = seaway.chart.raster.as_chart(cost)
     south = seaway.chart.raster.as_chart(cost.assign_coords(lat=-cost.lat))
     try:
-        m = plot._Map(north, (6, 5))
+        m = mapframe.MapFrame(north, (6, 5))
         assert isinstance(m.ax.projection, ccrs.NorthPolarStereo)
-        s = plot._Map(south, (6, 5))
+        s = mapframe.MapFrame(south, (6, 5))
         assert isinstance(s.ax.projection, ccrs.SouthPolarStereo)
     finally:
         m.plt.close("all")
@@ -147,11 +150,11 @@ def test_a_long_title_is_wrapped_not_cut(ice_chart, tmp_path):
 
 def test_a_long_chart_path_is_shortened_to_its_last_parts():
     path = "/data/ice/" + "archive/" * 12 + "2026/03/kara_sea_20260301.nc"
-    text = plot.fit_title(f"seaway route: NetCDF chart {path} (CT, SA), Arc7", 60)
+    text = fit_title(f"seaway route: NetCDF chart {path} (CT, SA), Arc7", 60)
     lines = text.split("\n")
     assert all(len(line) <= 60 for line in lines) and len(lines) <= 3
     assert ".../" in text and "kara_sea_20260301.nc" in text and text.endswith("Arc7")
-    assert plot.fit_title("short title", 60) == "short title"
+    assert fit_title("short title", 60) == "short title"
 
 
 def test_default_size_follows_the_map_aspect(ice_chart, tmp_path):
@@ -167,8 +170,8 @@ def test_a_cost_field_keeps_its_colour_bar(chart, tmp_path, monkeypatch):
     da, land = chart
     field = seaway.cost_field(da, (69, 171), land=land)
     figures = []
-    real_png = plot._Map.png
-    monkeypatch.setattr(plot._Map, "png", lambda m, dpi: (figures.append(m.fig), real_png(m, dpi))[1])
+    real_png = mapframe.MapFrame.png
+    monkeypatch.setattr(mapframe.MapFrame, "png", lambda m, dpi: (figures.append(m.fig), real_png(m, dpi))[1])
     plot.plot_cost_field(field, tmp_path / "f.png", size=(6, 4), dpi=40)
     (fig,) = figures
     bars = [ax for ax in fig.axes if ax.get_ylabel() == "least accumulated cost from the start"]

@@ -88,7 +88,7 @@ def test_geojson_gpx_and_csv_carry_the_times(voyage):
 
 def test_the_html_popups_give_the_eta(voyage):
     pytest.importorskip("folium")
-    from seaway.output.webmap import _popup
+    from seaway.output.popup import waypoint_popup as _popup
 
     legs, wi, t = voyage.legs(), voyage.waypoint_index, _times(voyage)
     second = _popup(voyage, 2, voyage.coords[wi[1]], legs[1], None)

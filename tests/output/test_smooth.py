@@ -4,9 +4,8 @@ import numpy as np
 import pytest
 
 import seaway
-from seaway.models import EdgeCost
 from seaway import smooth
-
+from seaway.models import EdgeCost
 from support.reference import refraction_optimum
 from support.reference_legs import Segments as NumpySegments
 

@@ -11,7 +11,6 @@ import pytest
 
 from support.reference import RefGraph, haversine
 
-
 EDGE_COSTS = ("max", "mean", "integral", "length")
 
 

@@ -39,7 +39,6 @@ def turn_route_cost(g: RefGraph, start_rc, end_rc, angles, costs, dx=1.0, dy=1.0
     out = {}  # v -> [(w, cost, (di, dj))]
     for (a, b), w in g.edges.items():
         out.setdefault(a, []).append((b, w, g.offset(divmod(a, g.cols), divmod(b, g.cols))))
-    dist: dict = {}
     heap = []
     for w, c, o in out.get(s, []):
         pen = 0.0 if incoming is None else float(np.interp(turn_angle(g, s, incoming, o, dx, dy), angles, costs))

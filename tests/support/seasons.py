@@ -3,7 +3,6 @@
 import numpy as np
 import xarray as xr
 
-
 DAY0 = np.datetime64("2026-07-01T00")
 
 

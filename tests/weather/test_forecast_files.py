@@ -9,7 +9,8 @@ import sys
 import pytest
 
 from seaway.weather.forecast import open_forecast
-from support.netcdf import small_dataset as _dataset, truncated_netcdf as _truncated
+from support.netcdf import small_dataset as _dataset
+from support.netcdf import truncated_netcdf as _truncated
 
 
 @pytest.mark.parametrize("keep", [0.3, 0.95, 0.9999])

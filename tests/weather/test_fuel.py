@@ -4,9 +4,8 @@ import numpy as np
 import pytest
 
 from seaway import _core
-from seaway.weather.fuel import FuelCurve, route_fuel, route_min_fuel, tradeoff
 from seaway.weather import Vessel
-
+from seaway.weather.fuel import FuelCurve, route_fuel, route_min_fuel, tradeoff
 from support.forecasts import forecast
 
 SHIP = Vessel(speed_kn=14.0, speed_loss="none")

@@ -8,7 +8,7 @@ import xarray as xr
 
 import seaway
 from seaway import _core
-from seaway.weather import KNOTS_PER_MS, Vessel, route_time, rhumb_line_km
+from seaway.weather import KNOTS_PER_MS, Vessel, rhumb_line_km, route_time
 from support.data import SHARED_DATA
 from support.forecasts import forecast
 

@@ -15,11 +15,12 @@ def gaussian(a: npt.NDArray[np.floating], sigma: float) -> npt.NDArray[np.float6
     kx = np.fft.rfftfreq(p.shape[1])[None, :]
     g = np.exp(-2.0 * (np.pi * sigma) ** 2 * (ky**2 + kx**2))
     s: npt.NDArray[np.float64] = np.fft.irfft2(np.fft.rfft2(p) * g, s=p.shape)
-    return s[pad:pad + a.shape[0], pad:pad + a.shape[1]] if pad else s
+    return s[pad : pad + a.shape[0], pad : pad + a.shape[1]] if pad else s
 
 
-def smooth_noise(rng: np.random.Generator, shape: int | tuple[int, ...],
-                 sigma: float) -> npt.NDArray[np.float64]:
+def smooth_noise(
+    rng: np.random.Generator, shape: int | tuple[int, ...], sigma: float
+) -> npt.NDArray[np.float64]:
     """A smooth random field with values in (0, 1), roughly uniformly spread (correlation length
     ~ sigma cells)."""
     s = gaussian(rng.standard_normal(shape), sigma)
@@ -28,8 +29,7 @@ def smooth_noise(rng: np.random.Generator, shape: int | tuple[int, ...],
     return p
 
 
-def _axis(n: int, m: int) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.floating],
-                                  npt.NDArray[np.int64]]:
+def _axis(n: int, m: int) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.floating], npt.NDArray[np.int64]]:
     """Index and fraction of n pixel centres in a coarse axis of m cells covering the same span."""
     x = np.clip((np.arange(n) + 0.5) * m / n - 0.5, 0, m - 1)
     i0 = np.minimum(x.astype(np.int64), max(m - 2, 0))
@@ -50,8 +50,9 @@ def resample(a: npt.NDArray[np.floating], rows: int, cols: int) -> npt.NDArray[n
     return out
 
 
-def distance_km(target: npt.NDArray[np.bool_], dy_km: float, dx_km: npt.NDArray[np.float64],
-                max_km: float) -> npt.NDArray[np.float64]:
+def distance_km(
+    target: npt.NDArray[np.bool_], dy_km: float, dx_km: npt.NDArray[np.float64], max_km: float
+) -> npt.NDArray[np.float64]:
     """Distance (km) from each cell to the nearest True cell of `target`, capped at max_km.
 
     Separable squared-distance transform (as in Felzenszwalb & Huttenlocher) with the minimum taken

@@ -125,11 +125,15 @@ def check_netcdf(path: PathLike) -> None:
     try:
         need = _classic_data_end(head, magic[3])
     except (EOFError, ValueError, IndexError, struct.error):
-        raise ValueError(f"{path}: the NetCDF header is damaged or cut short ({have} bytes); "
-                         "the file is truncated or not NetCDF: download or copy it again") from None
+        raise ValueError(
+            f"{path}: the NetCDF header is damaged or cut short ({have} bytes); "
+            "the file is truncated or not NetCDF: download or copy it again"
+        ) from None
     if need is not None and have < need:
-        raise ValueError(f"{path}: the file is truncated: it has {have} bytes but its NetCDF "
-                         f"header places data up to byte {need}; download or copy it again")
+        raise ValueError(
+            f"{path}: the file is truncated: it has {have} bytes but its NetCDF "
+            f"header places data up to byte {need}; download or copy it again"
+        )
 
 
 def write_atomically(path: PathLike, text: str) -> None:
@@ -164,8 +168,10 @@ def check_output(path: PathLike, formats: dict[str, str], option: str = "--out")
         raise ValueError(f"{option} {path} is a directory; give a file name inside it")
     ext = os.path.splitext(path)[1].lower()
     if ext not in formats:
-        raise ValueError(f"{option} {path}: cannot tell the format from the extension "
-                         f"{ext or '(none)'!r}; use one of {', '.join(sorted(formats))}")
+        raise ValueError(
+            f"{option} {path}: cannot tell the format from the extension "
+            f"{ext or '(none)'!r}; use one of {', '.join(sorted(formats))}"
+        )
     folder = os.path.dirname(os.path.abspath(path))
     if not os.path.isdir(folder):
         raise ValueError(f"{option} {path}: the directory {folder} does not exist; create it first")
@@ -262,8 +268,9 @@ def read_geotiff(path: PathLike, band: int = 1) -> xr.DataArray:
     try:
         import rasterio
     except ImportError:
-        raise ValueError(f"{path}: reading GeoTIFF needs rasterio: pip install rasterio (or "
-                         "convert it to NetCDF)") from None
+        raise ValueError(
+            f"{path}: reading GeoTIFF needs rasterio: pip install rasterio (or convert it to NetCDF)"
+        ) from None
     try:
         src = rasterio.open(path)
     except Exception as exc:  # rasterio's RasterioIOError and others

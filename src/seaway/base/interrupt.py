@@ -46,8 +46,13 @@ class SettledProgress:
     """A `reporting` callback that says "searching: N pixels settled (P % of the chart)" at
     most once every `every_s` seconds of `clock`, and only when N has grown."""
 
-    def __init__(self, say: Callable[[str], None], pixels: int, every_s: float | None = None,
-                 clock: Callable[[], float] = time.monotonic) -> None:
+    def __init__(
+        self,
+        say: Callable[[str], None],
+        pixels: int,
+        every_s: float | None = None,
+        clock: Callable[[], float] = time.monotonic,
+    ) -> None:
         every_s = PROGRESS_EVERY_S if every_s is None else every_s
         self.say, self.pixels, self.every_s, self.clock = say, max(int(pixels), 1), every_s, clock
         self.due, self.last = clock() + every_s, 0
@@ -57,8 +62,7 @@ class SettledProgress:
         if now < self.due or settled <= self.last:
             return
         self.due, self.last = now + self.every_s, settled
-        self.say(f"searching: {settled:,} pixels settled ({100 * settled / self.pixels:.0f} % "
-                 "of the chart)")
+        self.say(f"searching: {settled:,} pixels settled ({100 * settled / self.pixels:.0f} % of the chart)")
 
 
 def _stop(finished: threading.Event, token: _core.CancelToken) -> None:

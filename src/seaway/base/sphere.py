@@ -21,10 +21,12 @@ Floats = npt.NDArray[np.float64]
 @overload
 def distance_km(lat1: float, lon1: float, lat2: float, lon2: float) -> float: ...
 @overload
-def distance_km(lat1: npt.ArrayLike, lon1: npt.ArrayLike, lat2: npt.ArrayLike,
-                lon2: npt.ArrayLike) -> Floats: ...
-def distance_km(lat1: npt.ArrayLike, lon1: npt.ArrayLike, lat2: npt.ArrayLike,
-                lon2: npt.ArrayLike) -> float | Floats:
+def distance_km(
+    lat1: npt.ArrayLike, lon1: npt.ArrayLike, lat2: npt.ArrayLike, lon2: npt.ArrayLike
+) -> Floats: ...
+def distance_km(
+    lat1: npt.ArrayLike, lon1: npt.ArrayLike, lat2: npt.ArrayLike, lon2: npt.ArrayLike
+) -> float | Floats:
     """Great-circle distance (haversine), km."""
     p1, p2 = np.radians(lat1), np.radians(lat2)
     dp, dl = p2 - p1, np.radians(np.asarray(lon2, float) - lon1)
@@ -36,10 +38,12 @@ def distance_km(lat1: npt.ArrayLike, lon1: npt.ArrayLike, lat2: npt.ArrayLike,
 @overload
 def course_deg(lat1: float, lon1: float, lat2: float, lon2: float) -> float: ...
 @overload
-def course_deg(lat1: npt.ArrayLike, lon1: npt.ArrayLike, lat2: npt.ArrayLike,
-               lon2: npt.ArrayLike) -> Floats: ...
-def course_deg(lat1: npt.ArrayLike, lon1: npt.ArrayLike, lat2: npt.ArrayLike,
-               lon2: npt.ArrayLike) -> float | Floats:
+def course_deg(
+    lat1: npt.ArrayLike, lon1: npt.ArrayLike, lat2: npt.ArrayLike, lon2: npt.ArrayLike
+) -> Floats: ...
+def course_deg(
+    lat1: npt.ArrayLike, lon1: npt.ArrayLike, lat2: npt.ArrayLike, lon2: npt.ArrayLike
+) -> float | Floats:
     """Initial great-circle course from point 1 to point 2, degrees true in [0, 360)."""
     p1, p2 = np.radians(lat1), np.radians(lat2)
     dl = np.radians(np.asarray(lon2, float) - lon1)
@@ -60,8 +64,9 @@ def _from_xyz(v: Floats) -> tuple[Floats, Floats]:
     return lat, lon
 
 
-def intermediate(lat1: float, lon1: float, lat2: float, lon2: float,
-                 fractions: npt.ArrayLike) -> tuple[Floats, Floats]:
+def intermediate(
+    lat1: float, lon1: float, lat2: float, lon2: float, fractions: npt.ArrayLike
+) -> tuple[Floats, Floats]:
     """Points at the given fractions (0..1) of the great circle from point 1 to point 2
     (spherical linear interpolation); longitudes in [-180, 180]."""
     a, b = _to_xyz(lat1, lon1), _to_xyz(lat2, lon2)
@@ -77,10 +82,12 @@ def intermediate(lat1: float, lon1: float, lat2: float, lon2: float,
 @overload
 def destination(lat: float, lon: float, course: float, km: float) -> tuple[float, float]: ...
 @overload
-def destination(lat: npt.ArrayLike, lon: npt.ArrayLike, course: npt.ArrayLike,
-                km: npt.ArrayLike) -> tuple[Floats, Floats]: ...
-def destination(lat: npt.ArrayLike, lon: npt.ArrayLike, course: npt.ArrayLike,
-                km: npt.ArrayLike) -> tuple[float, float] | tuple[Floats, Floats]:
+def destination(
+    lat: npt.ArrayLike, lon: npt.ArrayLike, course: npt.ArrayLike, km: npt.ArrayLike
+) -> tuple[Floats, Floats]: ...
+def destination(
+    lat: npt.ArrayLike, lon: npt.ArrayLike, course: npt.ArrayLike, km: npt.ArrayLike
+) -> tuple[float, float] | tuple[Floats, Floats]:
     """The point `km` from (lat, lon) along the initial course `course` (degrees true)."""
     p, lam = np.radians(lat), np.radians(lon)
     th, d = np.radians(course), np.asarray(km, float) / EARTH_RADIUS_KM
@@ -107,8 +114,9 @@ def unwrap_lon(lon: npt.ArrayLike) -> Floats:
     return out
 
 
-def rhumb_line_km(lat1: float, lon1: float, lat2: float, lon2: float,
-                  radius_km: float = EARTH_RADIUS_KM) -> float:
+def rhumb_line_km(
+    lat1: float, lon1: float, lat2: float, lon2: float, radius_km: float = EARTH_RADIUS_KM
+) -> float:
     """Loxodrome (constant course) distance on a sphere, km."""
     p1, p2 = np.radians(lat1), np.radians(lat2)
     dl = np.radians((lon2 - lon1 + 180.0) % 360.0 - 180.0)

@@ -8,19 +8,28 @@ import numbers
 import numpy as np
 
 
-def number(value: object, name: str, *, minimum: float | None = None, above: float | None = None,
-           maximum: float | None = None, integer: bool = False, what: str | None = None,
-           example: object = None) -> float:
+def number(
+    value: object,
+    name: str,
+    *,
+    minimum: float | None = None,
+    above: float | None = None,
+    maximum: float | None = None,
+    integer: bool = False,
+    what: str | None = None,
+    example: object = None,
+) -> float:
     """`value` as a float (int if integer=True), or TypeError (not a number) / ValueError (NaN,
     infinite or out of bounds) whose message names `name`: "{name} must be {what}, got ...".
 
     minimum: value >= minimum; above: value > above; maximum: value <= maximum."""
     if what is None:
-        bounds = [f">= {minimum:g}" if minimum is not None else "",
-                  f"> {above:g}" if above is not None else "",
-                  f"<= {maximum:g}" if maximum is not None else ""]
-        what = " ".join(["a finite " + ("integer" if integer else "number")]
-                        + [b for b in bounds if b])
+        bounds = [
+            f">= {minimum:g}" if minimum is not None else "",
+            f"> {above:g}" if above is not None else "",
+            f"<= {maximum:g}" if maximum is not None else "",
+        ]
+        what = " ".join(["a finite " + ("integer" if integer else "number")] + [b for b in bounds if b])
     message = f"{name} must be {what}, got {{}}{value!r}"
     if example is not None:
         message += f"; e.g. {name.split()[0]}={example!r}"
@@ -31,7 +40,11 @@ def number(value: object, name: str, *, minimum: float | None = None, above: flo
         raise TypeError(message.format(type(value).__name__ + " "))
     # mypy narrows value to numbers.Real, whose stub has no __int__; integer=True checked Integral
     v = int(value) if integer else float(value)  # type: ignore[call-overload]
-    if not (np.isfinite(v) and (minimum is None or v >= minimum) and (above is None or v > above)
-            and (maximum is None or v <= maximum)):
+    if not (
+        np.isfinite(v)
+        and (minimum is None or v >= minimum)
+        and (above is None or v > above)
+        and (maximum is None or v <= maximum)
+    ):
         raise ValueError(message.format(""))
     return v

@@ -13,15 +13,23 @@ X_NAMES = ("x", "xc", "easting")
 
 #: CF standard names searched for each field, first match wins.
 STANDARD_NAMES = {
-    "current_east": ("eastward_sea_water_velocity", "surface_eastward_sea_water_velocity",
-                     "barotropic_eastward_sea_water_velocity"),
-    "current_north": ("northward_sea_water_velocity", "surface_northward_sea_water_velocity",
-                      "barotropic_northward_sea_water_velocity"),
+    "current_east": (
+        "eastward_sea_water_velocity",
+        "surface_eastward_sea_water_velocity",
+        "barotropic_eastward_sea_water_velocity",
+    ),
+    "current_north": (
+        "northward_sea_water_velocity",
+        "surface_northward_sea_water_velocity",
+        "barotropic_northward_sea_water_velocity",
+    ),
     "wave_height": ("sea_surface_wave_significant_height",),
     "wave_from": ("sea_surface_wave_from_direction",),
-    "wave_period": ("sea_surface_wave_mean_period",
-                    "sea_surface_wave_mean_period_from_variance_spectral_density_first_frequency_moment",
-                    "sea_surface_wave_period_at_variance_spectral_density_maximum"),
+    "wave_period": (
+        "sea_surface_wave_mean_period",
+        "sea_surface_wave_mean_period_from_variance_spectral_density_first_frequency_moment",
+        "sea_surface_wave_period_at_variance_spectral_density_maximum",
+    ),
     "wind_east": ("eastward_wind",),
     "wind_north": ("northward_wind",),
     "wind_speed": ("wind_speed",),
@@ -29,10 +37,14 @@ STANDARD_NAMES = {
 
 #: Grid-relative vector pairs and the east/north names they become.
 GRID_VECTORS = {
-    ("barotropic_sea_water_x_velocity", "barotropic_sea_water_y_velocity"):
-        ("barotropic_eastward_sea_water_velocity", "barotropic_northward_sea_water_velocity"),
-    ("x_sea_water_velocity", "y_sea_water_velocity"):
-        ("eastward_sea_water_velocity", "northward_sea_water_velocity"),
+    ("barotropic_sea_water_x_velocity", "barotropic_sea_water_y_velocity"): (
+        "barotropic_eastward_sea_water_velocity",
+        "barotropic_northward_sea_water_velocity",
+    ),
+    ("x_sea_water_velocity", "y_sea_water_velocity"): (
+        "eastward_sea_water_velocity",
+        "northward_sea_water_velocity",
+    ),
     ("x_wind", "y_wind"): ("eastward_wind", "northward_wind"),
 }
 

@@ -25,7 +25,7 @@ def _row_gaps(mask: npt.NDArray[np.bool_], wrap: bool) -> npt.NDArray[np.float64
     right = np.where(m, col, np.inf)
     right = np.minimum.accumulate(right[:, ::-1], axis=1)[:, ::-1]
     gap: npt.NDArray[np.float64] = np.minimum(col - left, right - col)
-    return gap[:, cols:2 * cols] if wrap else gap
+    return gap[:, cols : 2 * cols] if wrap else gap
 
 
 def distance_to(mask: npt.ArrayLike, chart: Chart, limit: float) -> npt.NDArray[np.float64]:
@@ -58,8 +58,9 @@ def distance_to(mask: npt.ArrayLike, chart: Chart, limit: float) -> npt.NDArray[
     for di in range(-min(reach, rows - 1), min(reach, rows - 1) + 1):
         lo, hi = max(0, -di), min(rows, rows - di)  # rows r whose row r + di exists
         r, q = np.arange(lo, hi), np.arange(lo, hi) + di
-        a = (np.sin((lat[q] - lat[r]) / 2) ** 2)[:, None] + \
-            (np.cos(lat[r]) * np.cos(lat[q]))[:, None] * sin2_half[q]
+        a = (np.sin((lat[q] - lat[r]) / 2) ** 2)[:, None] + (np.cos(lat[r]) * np.cos(lat[q]))[
+            :, None
+        ] * sin2_half[q]
         np.minimum(best[lo:hi], a, out=best[lo:hi])
     d = 2 * EARTH_RADIUS_KM * np.arcsin(np.sqrt(np.clip(best, 0.0, 1.0)))
     d[~np.isfinite(best)] = np.inf

@@ -53,8 +53,7 @@ def _is_land(meaning: str) -> bool:
 
 def has_flags(da: object) -> bool:
     attrs = getattr(da, "attrs", {})
-    return any(k in attrs for k in ("flag_values", "flag_masks", "valid_range", "valid_min",
-                                    "valid_max"))
+    return any(k in attrs for k in ("flag_values", "flag_masks", "valid_range", "valid_min", "valid_max"))
 
 
 def flags_out(da: xr.DataArray, name: str = "") -> Flagged:
@@ -62,9 +61,11 @@ def flags_out(da: xr.DataArray, name: str = "") -> Flagged:
     name = name or str(da.name)
     attrs = da.attrs
     if "flag_masks" in attrs and "flag_values" not in attrs:
-        raise ValueError(f"{name} is a bit field of flags (CF flag_masks: "
-                         f"{str(attrs.get('flag_meanings', ''))[:80]}), not a cost or an ice field; "
-                         "choose a data variable")
+        raise ValueError(
+            f"{name} is a bit field of flags (CF flag_masks: "
+            f"{str(attrs.get('flag_meanings', ''))[:80]}), not a cost or an ice field; "
+            "choose a data variable"
+        )
     out = Flagged(values=da)
     values = np.asarray(da.values, dtype=float)
     drop = np.zeros(values.shape, dtype=bool)
@@ -95,8 +96,9 @@ def flags_out(da: xr.DataArray, name: str = "") -> Flagged:
     tol = 1e-6 * max(1.0, abs(lo), abs(hi)) if np.isfinite(lo) or np.isfinite(hi) else 0.0
     outside = ~drop & np.isfinite(values) & ((values < lo - tol) | (values > hi + tol))
     if outside.any():
-        out.notes.append(f"{name}: {int(outside.sum())} pixels outside its valid range "
-                         f"{lo:g}..{hi:g} are impassable")
+        out.notes.append(
+            f"{name}: {int(outside.sum())} pixels outside its valid range {lo:g}..{hi:g} are impassable"
+        )
         drop |= outside
     if drop.any():
         out.values = da.copy(data=np.where(drop, np.nan, values).astype(values.dtype))

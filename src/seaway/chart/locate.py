@@ -43,7 +43,9 @@ def locate(chart: Chart, point: Iterable[float], name: str) -> tuple[int, int]:
             if near
             else "no pixel of the chart is passable"
         )
-        raise ValueError(f"{name} is on an impassable pixel (land, NaN or infinite cost): {describe(chart, (r, c))}; {hint}")
+        raise ValueError(
+            f"{name} is on an impassable pixel (land, NaN or infinite cost): {describe(chart, (r, c))}; {hint}"
+        )
     return r, c
 
 

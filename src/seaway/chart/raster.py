@@ -65,8 +65,9 @@ class Chart:
         return np.column_stack([a[pixels[:, 0]], b[pixels[:, 1]]])
 
 
-def from_dataarray(da: xr.DataArray) -> tuple[npt.NDArray[Any], dict[str, npt.NDArray[np.float64]],
-                                               xr.DataArray]:
+def from_dataarray(
+    da: xr.DataArray,
+) -> tuple[npt.NDArray[Any], dict[str, npt.NDArray[np.float64]], xr.DataArray]:
     """Values in (row, col) order and the 1-D coordinates found along each dimension."""
     if da.ndim != 2:
         raise ValueError(
@@ -77,15 +78,17 @@ def from_dataarray(da: xr.DataArray) -> tuple[npt.NDArray[Any], dict[str, npt.ND
     for dim in da.dims:
         coord = da.coords[dim] if dim in da.coords else None  # (.get makes up a range)
         if coord is None:  # a 1-D coordinate along it under another name (NSIDC's xgrid on x)
-            coord = next((c for c in da.coords.values() if c.dims == (dim,)
-                          and coord_role(c.name, c.attrs)), None)
+            coord = next(
+                (c for c in da.coords.values() if c.dims == (dim,) and coord_role(c.name, c.attrs)), None
+            )
         if coord is None:
             if coord_role(dim, {}) in ("lat", "lon"):
                 raise ValueError(
                     f"the dimension {dim!r} has no coordinate values, so its pixels' "
                     f"{coord_role(dim, {})} is unknown; give them, e.g. "
                     f"da.assign_coords({dim}=values), or rename the dimension if it is not "
-                    "geographic")
+                    "geographic"
+                )
             continue
         role = coord_role(str(coord.name), coord.attrs)
         if role:
@@ -126,22 +129,32 @@ def _land_mask(land: npt.NDArray[np.generic]) -> npt.NDArray[np.uint8]:
     if land.dtype == np.bool_:
         return land.view(np.uint8)
     if not (np.issubdtype(land.dtype, np.integer) or np.issubdtype(land.dtype, np.floating)):
-        raise TypeError(f"land must be a boolean mask (True = land), got dtype {land.dtype}; "
-                        "give a bool array, or 0/1 integers or floats")
+        raise TypeError(
+            f"land must be a boolean mask (True = land), got dtype {land.dtype}; "
+            "give a bool array, or 0/1 integers or floats"
+        )
     bad = (land != 0) & (land != 1)  # NaN compares unequal to both
     if bad.any():
         r, c = np.argwhere(bad)[0]
         raise ValueError(
             f"land must hold only 0 (sea) and 1 (land), got {int(bad.sum())} other value(s), e.g. "
             f"{land[r, c]!r} at pixel ({r}, {c}); give a bool mask, e.g. land=np.isnan(mask) | "
-            "(mask > 0.5) to say how such values should be read")
+            "(mask > 0.5) to say how such values should be read"
+        )
     mask: npt.NDArray[np.uint8] = (land == 1).astype(np.uint8)  # (ndarray.__eq__ is untyped)
     return mask
 
 
-def as_chart(cost: npt.ArrayLike | xr.DataArray, *, lat: npt.ArrayLike | None = None,
-             lon: npt.ArrayLike | None = None, dx: float = 1.0, dy: float = 1.0,
-             land: npt.ArrayLike | xr.DataArray | None = None, allow_negative: bool = False) -> Chart:
+def as_chart(
+    cost: npt.ArrayLike | xr.DataArray,
+    *,
+    lat: npt.ArrayLike | None = None,
+    lon: npt.ArrayLike | None = None,
+    dx: float = 1.0,
+    dy: float = 1.0,
+    land: npt.ArrayLike | xr.DataArray | None = None,
+    allow_negative: bool = False,
+) -> Chart:
     """Validate the user's raster and coordinates and build the engine's view of them."""
     template = None
     coords: dict[str, npt.NDArray[np.float64]] = {}
@@ -191,7 +204,9 @@ def as_chart(cost: npt.ArrayLike | xr.DataArray, *, lat: npt.ArrayLike | None = 
             land = cast("xr.DataArray", land).transpose(*template.dims)  # the cost's (row, col) order
         land_arr = np.asarray(cast("xr.DataArray", land).values if hasattr(land, "dims") else land)
         if land_arr.shape != values.shape:
-            raise ValueError(f"land has shape {land_arr.shape} but cost has shape {values.shape}; give a mask of the same shape")
+            raise ValueError(
+                f"land has shape {land_arr.shape} but cost has shape {values.shape}; give a mask of the same shape"
+            )
         mask = np.ascontiguousarray(_land_mask(land_arr))
     if flag_land is not None:
         mask = flag_land.astype(np.uint8) if mask is None else mask | flag_land.astype(np.uint8)
@@ -230,8 +245,10 @@ def as_chart(cost: npt.ArrayLike | xr.DataArray, *, lat: npt.ArrayLike | None = 
         dy = number(dy, "dy", above=0, what="a positive cell size", example=1.0)
         for name, v, n in (("dx", dx, cols), ("dy", dy, rows)):
             if not v * n < 1e306:
-                raise ValueError(f"{name} = {v!r} is too large a cell size: the chart would span "
-                                 f"{v * n:g} units; rescale the cell sizes")
+                raise ValueError(
+                    f"{name} = {v!r} is too large a cell size: the chart would span "
+                    f"{v * n:g} units; rescale the cell sizes"
+                )
         grid.dx, grid.dy = float(dx), float(dy)
         if chart.y is None:
             chart.y, chart.x = np.arange(rows) * float(dy), np.arange(cols) * float(dx)

@@ -4,7 +4,8 @@ Gate to the Vilkitsky Strait; ``seaway bench`` times the engine on the synthetic
 ``seaway season DATE=CHART ... --from LAT,LON --to LAT,LON`` routes through dated ice charts;
 ``seaway route --forecast FILE`` routes through a weather forecast and ``seaway replan`` re-plans
 a voyage from where the ship is through a newer one.
-One module per command; common.py holds what they share."""
+One module per command (`seaway route` keeps its options in routeargs.py, and those of weather
+routing in forecastargs.py, beside the modules that run them); common.py holds what they share."""
 
 from __future__ import annotations
 
@@ -18,15 +19,18 @@ from .common import EPILOG
 from .demo import add_demo_command
 from .demo import demo as run_demo
 from .replan import add_replan_command, run_replan
-from .route import add_route_command, run_route
+from .route import run_route
+from .routeargs import add_route_command
 from .season import add_season_command, run_season
 
 
 def build_parser() -> argparse.ArgumentParser:
     """The parser of the `seaway` command line (all its commands)."""
     parser = argparse.ArgumentParser(
-        prog="seaway", description="Least-cost ship routes through sea ice, waves and weather on "
-        "raster charts.", epilog=EPILOG + " 'seaway COMMAND --help' explains each command.")
+        prog="seaway",
+        description="Least-cost ship routes through sea ice, waves and weather on raster charts.",
+        epilog=EPILOG + " 'seaway COMMAND --help' explains each command.",
+    )
     commands = parser.add_subparsers(dest="command", required=True, metavar="command")
     add_demo_command(commands)
     add_route_command(commands)
@@ -38,8 +42,13 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
-    run = {"demo": run_demo, "route": run_route, "bench": run_bench,
-           "season": run_season, "replan": run_replan}[args.command]
+    run = {
+        "demo": run_demo,
+        "route": run_route,
+        "bench": run_bench,
+        "season": run_season,
+        "replan": run_replan,
+    }[args.command]
     try:
         return run(args)
     except (NoRouteError, ValueError, OSError, ImportError) as exc:

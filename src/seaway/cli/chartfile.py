@@ -28,8 +28,15 @@ NETCDF = (".nc", ".nc4", ".cdf", ".netcdf", ".h5", ".hdf5")
 GEOTIFF = (".tif", ".tiff", ".gtiff")
 SIGRID = (".shp", ".gpkg", ".e00", ".zip")
 #: Variables reported along each leg when the chart has them.
-ENVIRONMENT = ("sea_ice_concentration", "ice_thickness", "CT", "thickness", "depth",
-               "wave_height", "wind_speed")
+ENVIRONMENT = (
+    "sea_ice_concentration",
+    "ice_thickness",
+    "CT",
+    "thickness",
+    "depth",
+    "wave_height",
+    "wind_speed",
+)
 
 
 class ChartError(ValueError):
@@ -48,8 +55,17 @@ class ChartData:
     date: str = ""  # the chart's date (its time coordinate or time_coverage_start), if it has one
 
 
-def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, grid=None,
-               ends=None, stage=None, fast_ice=DEFAULT_FAST_ICE) -> ChartData:
+def open_chart(
+    path: str,
+    *,
+    variable=None,
+    vessel=None,
+    land_variable=None,
+    grid=None,
+    ends=None,
+    stage=None,
+    fast_ice=DEFAULT_FAST_ICE,
+) -> ChartData:
     """grid: (south, north, west, east, resolution) in degrees for a SIGRID-3 chart; by default
     a regional grid around `ends` ((lat, lon) start and end; seaway.ice.routegrid), else the
     chart's own extent at 1/1000 of its longer side (geographic charts only).
@@ -66,8 +82,9 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
             raise ChartError(f"{path}: no such file")
         ext = os.path.splitext(path)[1].lower()
         if os.path.isdir(path) and ext not in SIGRID:
-            raise ChartError(f"{path} is a directory; give a chart file (NetCDF, GeoTIFF or "
-                             "SIGRID-3) inside it")
+            raise ChartError(
+                f"{path} is a directory; give a chart file (NetCDF, GeoTIFF or SIGRID-3) inside it"
+            )
         if ext in GEOTIFF:
             return _geotiff(path, variable, vessel)
         if ext in SIGRID:
@@ -77,8 +94,11 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
                 raise ChartError(str(exc)) from None
         else:
             try:
-                ds = open_netcdf(path, f"charts are NetCDF ({', '.join(NETCDF)}), GeoTIFF "
-                                       f"({', '.join(GEOTIFF)}) or SIGRID-3 ({', '.join(SIGRID)})")
+                ds = open_netcdf(
+                    path,
+                    f"charts are NetCDF ({', '.join(NETCDF)}), GeoTIFF "
+                    f"({', '.join(GEOTIFF)}) or SIGRID-3 ({', '.join(SIGRID)})",
+                )
             except ValueError as exc:
                 raise ChartError(str(exc)) from None
             kind = "NetCDF chart"
@@ -92,8 +112,11 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
     conc = [n for n in ds.data_vars if is_concentration(ds[n]) and ds[n].ndim >= 2]
     if variable and variable not in ds:
         raise ChartError(f"{path} has no variable {variable!r}; it has {sorted(ds.data_vars)}")
-    if variable and is_concentration(ds[variable]) or (not variable and conc and not (
-            "stage_of_development" in ds or "SA" in ds)):
+    if (
+        variable
+        and is_concentration(ds[variable])
+        or (not variable and conc and not ("stage_of_development" in ds or "SA" in ds))
+    ):
         name = variable or _pick_concentration(path, ds, conc)
         source = _two_d(ds[name], out.notes)
         if not vessel:
@@ -101,10 +124,12 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
                 f"{path}: {name} is a sea-ice concentration (CF sea_ice_area_fraction), not a cost "
                 "per unit length (open water would cost nothing); give --vessel CLASS (e.g. Arc7) "
                 f"to turn it into an ice chart for that class, its ice assumed to be "
-                f"{stage_name(stage or DEFAULT_STAGE)} (--assume-stage CODE to change)")
+                f"{stage_name(stage or DEFAULT_STAGE)} (--assume-stage CODE to change)"
+            )
         try:
-            ice, assumed = concentration_chart(source, stage=stage or DEFAULT_STAGE,
-                                               land=None if land is None else land.values)
+            ice, assumed = concentration_chart(
+                source, stage=stage or DEFAULT_STAGE, land=None if land is None else land.values
+            )
         except ValueError as exc:
             raise ChartError(f"{path}: {exc}") from None
         out.notes += assumed
@@ -114,8 +139,10 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
         out.description += f", {name} as an ice chart for {vessel} (Grinyak et al. 2022)"
     elif variable:
         if vessel:
-            raise ChartError("give either --variable (a cost raster) or --vessel (an ice class "
-                             "applied to the chart's stage of development), not both")
+            raise ChartError(
+                "give either --variable (a cost raster) or --vessel (an ice class "
+                "applied to the chart's stage of development), not both"
+            )
         source = out.cost = _two_d(ds[variable], out.notes)
         out.description += f", cost = {variable}"
     elif "stage_of_development" in ds or "SA" in ds:
@@ -123,18 +150,23 @@ def open_chart(path: str, *, variable=None, vessel=None, land_variable=None, gri
         out.description += f", ice impact for {vessel or 'Arc7'} (Grinyak et al. 2022)"
         # along the legs and on the maps: the stage that governs (SIGRID-3: SA, open and bergy
         # water ice free, fast ice's stated stage) and the form of ice (fast ice)
-        out.environment["stage_of_development"] = (_two_d(ds.stage_of_development, []) if "SA" not in ds
-                                                   else governing_stage(ds, fast_ice=fast_ice))
+        out.environment["stage_of_development"] = (
+            _two_d(ds.stage_of_development, []) if "SA" not in ds else governing_stage(ds, fast_ice=fast_ice)
+        )
         if "FA" in ds:
             out.environment["FA"] = ds["FA"]
     else:
         two_d = [n for n in ds.data_vars if n != land_name and ds[n].ndim >= 2]
         if len(two_d) != 1:
-            raise ChartError(f"{path}: which variable is the cost? name it with --variable, one of "
-                             f"{sorted(map(str, two_d))}")
+            raise ChartError(
+                f"{path}: which variable is the cost? name it with --variable, one of "
+                f"{sorted(map(str, two_d))}"
+            )
         if vessel:
-            raise ChartError(f"{path} has no stage_of_development (or SIGRID SA) variable to apply "
-                             "--vessel to; give the cost with --variable instead")
+            raise ChartError(
+                f"{path} has no stage_of_development (or SIGRID SA) variable to apply "
+                "--vessel to; give the cost with --variable instead"
+            )
         source = out.cost = _two_d(ds[two_d[0]], out.notes)
         out.description += f", cost = {two_d[0]}"
     if source is not None and has_flags(source) and source is out.cost:
@@ -173,8 +205,10 @@ def _land_name(ds):
         return "land"
     for name, v in ds.data_vars.items():
         std = str(v.attrs.get("standard_name", ""))
-        if v.ndim >= 2 and (std == "land_binary_mask" or (
-                std == "area_type" and "land" in str(v.attrs.get("long_name", "")).lower())):
+        if v.ndim >= 2 and (
+            std == "land_binary_mask"
+            or (std == "area_type" and "land" in str(v.attrs.get("long_name", "")).lower())
+        ):
             return name
     return None
 
@@ -194,8 +228,9 @@ def _pick_concentration(path, ds, names):
         return main
     if len(names) == 1:
         return names[0]
-    raise ChartError(f"{path} has several sea-ice concentrations ({', '.join(map(str, names))}); "
-                     "name one with --variable")
+    raise ChartError(
+        f"{path} has several sea-ice concentrations ({', '.join(map(str, names))}); name one with --variable"
+    )
 
 
 def _two_d(da, notes):
@@ -224,8 +259,10 @@ def _impact(ds, vessel, notes, fast_ice=DEFAULT_FAST_ICE):
 
 def _geotiff(path, variable, vessel):
     if vessel:
-        raise ChartError("a GeoTIFF chart is read as a cost raster (band 1); --vessel needs a "
-                         "stage-of-development chart in NetCDF or SIGRID-3")
+        raise ChartError(
+            "a GeoTIFF chart is read as a cost raster (band 1); --vessel needs a "
+            "stage-of-development chart in NetCDF or SIGRID-3"
+        )
     band = int(variable) if variable and str(variable).isdigit() else 1
     try:
         da = read_geotiff(path, band)
@@ -238,6 +275,7 @@ def _geotiff(path, variable, vessel):
 def fast_ice(text: str):
     """argparse type of --fast-ice: 'nearby', 'closed' or a WMO stage code (seaway.ice.forms)."""
     import argparse
+
     try:
         return check_fast_ice(text)
     except ValueError as exc:

@@ -13,8 +13,10 @@ from ..base.interrupt import SettledProgress, reporting
 
 #: The exact methods a command may be asked for.
 CLI_METHODS = ("auto", "bidirectional", "astar", "dijkstra")
-EPILOG = ("exit status: 0 done; 1 no route, or a chart or output file that cannot be used; "
-          "2 a bad command line. Progress goes to stderr, results to stdout.")
+EPILOG = (
+    "exit status: 0 done; 1 no route, or a chart or output file that cannot be used; "
+    "2 a bad command line. Progress goes to stderr, results to stdout."
+)
 
 
 def point(text: str) -> tuple[float, float]:
@@ -24,7 +26,8 @@ def point(text: str) -> tuple[float, float]:
     except ValueError:
         raise argparse.ArgumentTypeError(
             f"expected LAT,LON in decimal degrees (e.g. 70.3,58.5; write --from=-33.9,18.4 for a "
-            f"negative first number), got {text!r}") from None
+            f"negative first number), got {text!r}"
+        ) from None
     if not (np.isfinite(a) and np.isfinite(b)):
         raise argparse.ArgumentTypeError(f"LAT,LON must be finite numbers, got {text!r}")
     return a, b
@@ -32,10 +35,22 @@ def point(text: str) -> tuple[float, float]:
 
 def add_ends(parser: argparse.ArgumentParser) -> None:
     """--from and --to: the ends of a route."""
-    parser.add_argument("--from", dest="start", type=point, required=True, metavar="LAT,LON",
-                        help="start in decimal degrees (ROW,COL on charts with projected y/x)")
-    parser.add_argument("--to", dest="end", type=point, required=True, metavar="LAT,LON",
-                        help="end in decimal degrees (ROW,COL on charts with projected y/x)")
+    parser.add_argument(
+        "--from",
+        dest="start",
+        type=point,
+        required=True,
+        metavar="LAT,LON",
+        help="start in decimal degrees (ROW,COL on charts with projected y/x)",
+    )
+    parser.add_argument(
+        "--to",
+        dest="end",
+        type=point,
+        required=True,
+        metavar="LAT,LON",
+        help="end in decimal degrees (ROW,COL on charts with projected y/x)",
+    )
 
 
 def positive_km(text: str) -> float:
@@ -55,7 +70,8 @@ def grid(text: str) -> tuple:
         south, north, west, east, res = (float(v) for v in text.replace(" ", "").split(","))
     except ValueError:
         raise argparse.ArgumentTypeError(
-            f"expected SOUTH,NORTH,WEST,EAST,RES in degrees (e.g. 58,64,-55,-37,0.02), got {text!r}") from None
+            f"expected SOUTH,NORTH,WEST,EAST,RES in degrees (e.g. 58,64,-55,-37,0.02), got {text!r}"
+        ) from None
     if not (south < north and west < east and res > 0):
         raise argparse.ArgumentTypeError(f"need SOUTH < NORTH, WEST < EAST and RES > 0, got {text!r}")
     return south, north, west, east, res
@@ -79,8 +95,11 @@ class Progress:
 
     def __call__(self, message: str) -> None:
         if not self.quiet:
-            print(f"seaway {self.command}: [{time.perf_counter() - self.t0:6.1f} s] {message}",
-                  file=sys.stderr, flush=True)
+            print(
+                f"seaway {self.command}: [{time.perf_counter() - self.t0:6.1f} s] {message}",
+                file=sys.stderr,
+                flush=True,
+            )
 
 
 def searching(say, pixels: int):

@@ -58,20 +58,50 @@ def constraint_options(args) -> dict:
 
 def add_constraint_options(rp, point) -> None:
     """Add the constraint options to the `seaway route` parser (`point`: the LAT,LON type)."""
-    rp.add_argument("--via", type=point, action="append", metavar="LAT,LON",
-                    help="a waypoint the route must pass (repeatable, in order); each leg is optimal")
-    rp.add_argument("--turn-penalty", type=float, metavar="COST",
-                    help="cost per degree of course change (route cost units); exact search over "
-                         "(pixel, last step), 9 bytes x stencil offsets per pixel")
-    rp.add_argument("--land-buffer", type=float, metavar="KM",
-                    help="keep at least KM from land (great-circle km on lat/lon charts)")
-    rp.add_argument("--land-soft", type=soft_buffer, metavar="KM,PENALTY",
-                    help="within KM of land multiply the cost by up to 1 + PENALTY (at the hard "
-                         "limit), falling linearly to 1 at KM")
-    rp.add_argument("--ice-buffer", type=ice_buffer, action="append", metavar="COST,KM",
-                    help="keep KM from pixels whose cost is COST or more (severe ice); repeatable")
-    rp.add_argument("--zone", action="append", metavar="FILE",
-                    help="exclusion area: GeoJSON, shapefile or GeoPackage polygons in the chart's "
-                         "lon/lat (repeatable)")
-    rp.add_argument("--penalty-zone", type=penalty_zone, action="append", metavar="FILE,FACTOR",
-                    help="penalty area: cost x FACTOR (>= 1) inside the polygons (repeatable)")
+    rp.add_argument(
+        "--via",
+        type=point,
+        action="append",
+        metavar="LAT,LON",
+        help="a waypoint the route must pass (repeatable, in order); each leg is optimal",
+    )
+    rp.add_argument(
+        "--turn-penalty",
+        type=float,
+        metavar="COST",
+        help="cost per degree of course change (route cost units); exact search over "
+        "(pixel, last step), 9 bytes x stencil offsets per pixel",
+    )
+    rp.add_argument(
+        "--land-buffer",
+        type=float,
+        metavar="KM",
+        help="keep at least KM from land (great-circle km on lat/lon charts)",
+    )
+    rp.add_argument(
+        "--land-soft",
+        type=soft_buffer,
+        metavar="KM,PENALTY",
+        help="within KM of land multiply the cost by up to 1 + PENALTY (at the hard "
+        "limit), falling linearly to 1 at KM",
+    )
+    rp.add_argument(
+        "--ice-buffer",
+        type=ice_buffer,
+        action="append",
+        metavar="COST,KM",
+        help="keep KM from pixels whose cost is COST or more (severe ice); repeatable",
+    )
+    rp.add_argument(
+        "--zone",
+        action="append",
+        metavar="FILE",
+        help="exclusion area: GeoJSON, shapefile or GeoPackage polygons in the chart's lon/lat (repeatable)",
+    )
+    rp.add_argument(
+        "--penalty-zone",
+        type=penalty_zone,
+        action="append",
+        metavar="FILE,FACTOR",
+        help="penalty area: cost x FACTOR (>= 1) inside the polygons (repeatable)",
+    )

@@ -16,14 +16,15 @@ from ..depth import (
 )
 
 
-def for_route(path, cost, *, draft=None, ukc=None, variable=None, positive=None, say=print,
-              crs=None):
+def for_route(path, cost, *, draft=None, ukc=None, variable=None, positive=None, say=print, crs=None):
     """What the command line does with --depth/--draft/--ukc: (cost, depth on the cost's grid,
     reasons(rc) for an end that is too shallow). Without a draft the depth is only reported."""
     if path is None:
         if draft is not None or ukc is not None:
-            raise ValueError("--draft and --ukc need --depth FILE (a bathymetry raster, NetCDF or "
-                             "GeoTIFF, e.g. ETOPO or GEBCO)")
+            raise ValueError(
+                "--draft and --ukc need --depth FILE (a bathymetry raster, NetCDF or "
+                "GeoTIFF, e.g. ETOPO or GEBCO)"
+            )
         return cost, None, None
     bathy = open_bathymetry(path, variable=variable, positive=positive)
     say(f"depth from {path}: {bathy.convention}")
@@ -41,8 +42,10 @@ def for_route(path, cost, *, draft=None, ukc=None, variable=None, positive=None,
     z = depth.values
     with np.errstate(invalid="ignore"):
         shallow = int(((z < draft + ukc) & (z > 0)).sum())
-    say(f"draft {draft:g} m + UKC {ukc:g} m = {draft + ukc:g} m needed: {shallow} water pixels "
-        f"too shallow, {int(np.isnan(z).sum())} without depth (impassable)")
+    say(
+        f"draft {draft:g} m + UKC {ukc:g} m = {draft + ukc:g} m needed: {shallow} water pixels "
+        f"too shallow, {int(np.isnan(z).sum())} without depth (impassable)"
+    )
     return out, depth, lambda rc: too_shallow(depth, rc, draft, ukc)
 
 
@@ -54,6 +57,8 @@ def why_no_route(cost, land, depth, start, end, draft, ukc=None) -> str:
     if d is None:
         return "the ice or land alone keeps the ends apart, whatever the draft"
     most = max(d - ukc, 0.0) if given else d / (1 + DEFAULT_UKC_SHARE)
-    return (f"the deepest water joining the ends is {d:.1f} m, less than draft {draft:g} m + UKC "
-            f"{ukc:g} m = {draft + ukc:g} m: a draft of at most {np.floor(most * 10 + 1e-6) / 10:.1f} m "
-            f"({'with this UKC' if given else 'with the default UKC of 10 %'}) gets through")
+    return (
+        f"the deepest water joining the ends is {d:.1f} m, less than draft {draft:g} m + UKC "
+        f"{ukc:g} m = {draft + ukc:g} m: a draft of at most {np.floor(most * 10 + 1e-6) / 10:.1f} m "
+        f"({'with this UKC' if given else 'with the default UKC of 10 %'}) gets through"
+    )

@@ -35,8 +35,10 @@ def describe(layers, rc, vessel, reasons=(), ice_blocks=True) -> str:
         shelf = "ice_shelf" in layers and bool(np.asarray(layers["ice_shelf"].values)[rc])
         return "; ".join(["an ice shelf (SIGRID-3 POLY_TYPE S)" if shelf else "land"] + parts)
     if layers is not None and "off_chart" in layers and bool(np.asarray(layers["off_chart"].values)[rc]):
-        return "; ".join(["off the chart: no chart polygon covers it, so its ice is unknown and "
-                          "counts as impassable"] + parts)
+        return "; ".join(
+            ["off the chart: no chart polygon covers it, so its ice is unknown and counts as impassable"]
+            + parts
+        )
     ice = []
     for c, s in (("CA", "SA"), ("CB", "SB"), ("CC", "SC")):
         stage, conc = _value(layers, s, rc), _value(layers, c, rc)
@@ -60,9 +62,22 @@ def describe(layers, rc, vessel, reasons=(), ice_blocks=True) -> str:
     return "; ".join(parts)
 
 
-def check_ends(cost, land, layers, ends, *, vessel=None, snap=False, snap_km=DEFAULT_SNAP_KM,
-               say=print, neighbourhood=5, reasons=None, chart_cost=None, to_user=None,
-               asked=None):
+def check_ends(
+    cost,
+    land,
+    layers,
+    ends,
+    *,
+    vessel=None,
+    snap=False,
+    snap_km=DEFAULT_SNAP_KM,
+    say=print,
+    neighbourhood=5,
+    reasons=None,
+    chart_cost=None,
+    to_user=None,
+    asked=None,
+):
     """The ends (start, end) the route uses (seaway.engine.snap.snap_ends), and the sentences
     saying how they moved. An impassable end raises ValueError naming why and the nearest
     usable point joined to the other end, or with snap=True is moved there when that is at most
@@ -82,11 +97,13 @@ def check_ends(cost, land, layers, ends, *, vessel=None, snap=False, snap_km=DEF
     given = dict(zip(("start", "end"), asked or ends))
     unit = "km" if chart.geographic or to_user else "chart units"
     try:
-        snapped = snap_ends(cost, ends[0], ends[1], land=land, neighbourhood=neighbourhood,
-                            max_km=np.inf, why=why)
+        snapped = snap_ends(
+            cost, ends[0], ends[1], land=land, neighbourhood=neighbourhood, max_km=np.inf, why=why
+        )
     except SnapError as exc:  # no usable pixel joins the other end
-        raise ValueError("; ".join(_refusal(m, given[m.name], np.inf, snap, snap_km, show, unit)
-                                   for m in exc.moves)) from None
+        raise ValueError(
+            "; ".join(_refusal(m, given[m.name], np.inf, snap, snap_km, show, unit) for m in exc.moves)
+        ) from None
 
     def km(m):  # a projected chart: great-circle km between the point asked for and the new one
         if to_user is None:
@@ -96,12 +113,13 @@ def check_ends(cost, land, layers, ends, *, vessel=None, snap=False, snap_km=DEF
 
     far = [m for m in snapped.moves if not (snap and km(m) <= snap_km)]
     if far:
-        raise ValueError("; ".join(_refusal(m, given[m.name], km(m), snap, snap_km, show, unit)
-                                   for m in far))
+        raise ValueError("; ".join(_refusal(m, given[m.name], km(m), snap, snap_km, show, unit) for m in far))
     notes = []
     for m in snapped.moves:
-        notes.append(f"{m.name} {_pt(given[m.name])} is on an impassable pixel ({m.why}): moved "
-                     f"{km(m):.1f} {unit} to {_pt(show(m.to), 4)} (--snap, at most {snap_km:g} {unit})")
+        notes.append(
+            f"{m.name} {_pt(given[m.name])} is on an impassable pixel ({m.why}): moved "
+            f"{km(m):.1f} {unit} to {_pt(show(m.to), 4)} (--snap, at most {snap_km:g} {unit})"
+        )
         say(notes[-1])
     return list(snapped.ends), notes
 
@@ -117,5 +135,7 @@ def _refusal(m, given, km, snap, snap_km, show, unit) -> str:
     there = f"the nearest point the ship may use is {_pt(show(m.to), 4)}, {km:.1f} {unit} away"
     if not snap:
         return f"{here}; {there}: give it, or pass --snap to move the {m.name} there"
-    return (f"{here}; {there}, farther than --snap-km {snap_km:g}: give a point in water the ship "
-            f"may use, or --snap-km {np.ceil(km):.0f} to move the {m.name} there")
+    return (
+        f"{here}; {there}, farther than --snap-km {snap_km:g}: give a point in water the ship "
+        f"may use, or --snap-km {np.ceil(km):.0f} to move the {m.name} there"
+    )

@@ -10,7 +10,6 @@ time), or the least wave danger (Grinyak et al. 2018)."""
 
 from __future__ import annotations
 
-import argparse
 import dataclasses
 import os
 
@@ -30,93 +29,25 @@ from ..weather import (
     route_safest,
     route_time,
 )
-from ..weather.forecast import ROLES, check_roles
 from .chartfile import open_chart
 from .common import Progress, searching, tell
 from .outputs import check_outputs, write_outputs
-
-OBJECTIVES = ("time", "fuel", "safety")
-EXAMPLE = ("example: seaway route --forecast waves.nc --forecast currents.nc --depart "
-           "2026-10-01T06:00 --from 70.3,58.5 --to 76.5,95.0 --vessel-file pc6-general-cargo "
-           "--out voyage.rtz")
-#: Options that mean something only with --forecast.
-_ONLY_WITH = ("forecast_variable", "depart", "persist", "arrive_by", "displacement", "vessel_file")
-
-
-def role_pair(text: str) -> tuple[str, str]:
-    """argparse type for ROLE=NAME (a forecast role and the file's variable)."""
-    role, sep, name = text.partition("=")
-    if not sep or not name:
-        raise argparse.ArgumentTypeError(f"expected ROLE=NAME, e.g. wave_height=var229, got {text!r}")
-    try:
-        check_roles({role: name})
-    except ValueError as exc:
-        raise argparse.ArgumentTypeError(str(exc).replace("forecast role", "role")) from None
-    return role, name
-
-
-def iso_time(text: str) -> np.datetime64:
-    """argparse type for an ISO 8601 time (UTC), e.g. 2026-10-01T06:00."""
-    try:
-        return np.datetime64(text.rstrip("Z"), "s")
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected an ISO 8601 time in UTC such as "
-                                         f"2026-10-01T06:00, got {text!r}") from None
-
-
-def add_forecast_options(rp) -> None:
-    """The weather-routing options of `seaway route`."""
-    g = rp.add_argument_group(
-        "weather routing", "with --forecast the route is the quickest (or least fuel, or safest) "
-        "through the forecast from --depart; CHART may be left out (the forecast's own grid and "
-        "the package's coastline) or be an ice chart (ice and weather in one voyage)")
-    g.add_argument("--forecast", action="append", metavar="FILE",
-                   help="forecast file: CF NetCDF (fields by standard name, or GRIB short names), "
-                        "CDO output from GRIB, or GRIB (needs seaway[grib]); repeat it for one file "
-                        "per variable (merged on time)")
-    g.add_argument("--forecast-variable", type=role_pair, action="append", metavar="ROLE=NAME",
-                   help=f"the variable that plays ROLE (repeatable); roles: {', '.join(ROLES)}; "
-                        "e.g. wave_height=var229 wave_from=var230 wave_period=var232 for CDO's "
-                        "ECMWF wave fields")
-    g.add_argument("--depart", type=iso_time, metavar="ISO-TIME",
-                   help="departure in UTC (default: the forecast's first time)")
-    g.add_argument("--persist", action="store_true",
-                   help="route a departure outside the forecast's times by holding its nearest "
-                        "frame (persistence), said on stderr; default: refused")
-    g.add_argument("--objective", choices=OBJECTIVES, default="time",
-                   help="time (default), fuel (needs the vessel file's fuel curve) or safety "
-                        "(least wave danger by heading; needs wave height, direction, period)")
-    g.add_argument("--arrive-by", type=iso_time, metavar="ISO-TIME",
-                   help="with --objective fuel: the least fuel that arrives by then (Sotnikova 2009)")
-    g.add_argument("--displacement", type=float, metavar="T",
-                   help="displacement in tonnes for Khokhlov's speed loss (default 15000, or the "
-                        "vessel file's)")
-    g.add_argument("--vessel-file", metavar="FILE",
-                   help="vessel profile (TOML or JSON, seaway.vessel.load) or a shipped example: "
-                        "arc7-lng-carrier, pc6-general-cargo, sotnikova-container-ship; --speed, "
-                        "--displacement and --vessel override its values")
-
-
-def check_forecast_options(args) -> None:
-    """Refuse the weather-routing options without --forecast, naming the fix."""
-    given = [f"--{name.replace('_', '-')}" for name in _ONLY_WITH if getattr(args, name, None)]
-    if args.objective != "time":
-        given.append("--objective")
-    if given and not args.forecast:
-        raise ValueError(f"{', '.join(given)} need --forecast FILE (a forecast to route through)")
 
 
 def _vessel(args, say):
     profile = load(args.vessel_file) if args.vessel_file else None
     base = profile.vessel if profile else Vessel(speed_kn=12.0)
-    changes = {k: v for k, v in (("speed_kn", args.speed), ("displacement_t", args.displacement))
-               if v is not None}
+    changes = {
+        k: v for k, v in (("speed_kn", args.speed), ("displacement_t", args.displacement)) if v is not None
+    }
     vessel = dataclasses.replace(base, **changes)
     if profile:
         say(f"vessel: {profile.describe()}")
     elif not changes:
-        tell("vessel: 12 kn in calm water, 15000 t (the defaults; give --speed, --displacement "
-             "or --vessel-file)")
+        tell(
+            "vessel: 12 kn in calm water, 15000 t (the defaults; give --speed, --displacement "
+            "or --vessel-file)"
+        )
     return vessel, profile, args.vessel or (profile.ice_class if profile else None)
 
 
@@ -126,8 +57,9 @@ def _coastline(ds) -> np.ndarray:
 
     lat = next(ds[c].values for c in ("lat", "latitude") if c in ds.coords)
     lon = next(ds[c].values for c in ("lon", "longitude") if c in ds.coords)
-    la, lo = np.meshgrid(np.asarray(lat, float), (np.asarray(lon, float) + 180.0) % 360.0 - 180.0,
-                         indexing="ij")
+    la, lo = np.meshgrid(
+        np.asarray(lat, float), (np.asarray(lon, float) + 180.0) % 360.0 - 180.0, indexing="ij"
+    )
     return globe.is_land(la, lo)
 
 
@@ -140,20 +72,32 @@ def _season(args, ice_class, departure, say):
         if "time" in ds.dims and ds.sizes["time"] > 1:
             say(f"{path}: a season of {ds.sizes['time']} ice charts")
             return SeasonGrid(as_season(ds))
-    data = open_chart(path, vessel=ice_class, land_variable=args.land_variable,
-                      grid=args.grid, ends=(args.start, args.end), stage=args.assume_stage,
-                      fast_ice=args.fast_ice)
+    data = open_chart(
+        path,
+        vessel=ice_class,
+        land_variable=args.land_variable,
+        grid=args.grid,
+        ends=(args.start, args.end),
+        stage=args.assume_stage,
+        fast_ice=args.fast_ice,
+    )
     for note in data.notes:
         tell(note)
     ice = data.layers
     if data.projection is not None or ice is None or "CT" not in ice or not ({"SA", "thickness"} & set(ice)):
-        raise ValueError(f"{path}: a route through ice and weather needs an ice chart on a lat/lon "
-                         "grid with CT and SA or a thickness (SIGRID-3, NSIDC, a season NetCDF); "
-                         "leave CHART out to route on the forecast's own grid")
-    keep = [k for k in ("CT", "CA", "SA", "CB", "SB", "CC", "SC", "thickness", "land", "off_chart") if k in ice]
+        raise ValueError(
+            f"{path}: a route through ice and weather needs an ice chart on a lat/lon "
+            "grid with CT and SA or a thickness (SIGRID-3, NSIDC, a season NetCDF); "
+            "leave CHART out to route on the forecast's own grid"
+        )
+    keep = [
+        k for k in ("CT", "CA", "SA", "CB", "SB", "CC", "SC", "thickness", "land", "off_chart") if k in ice
+    ]
     one = ice[keep].drop_vars("time", errors="ignore").expand_dims(time=[np.datetime64(departure, "ns")])
-    tell(f"the ice chart{' of ' + data.date if data.date else ''} is taken as valid from the "
-         "departure for the whole voyage (persistence of the ice)")
+    tell(
+        f"the ice chart{' of ' + data.date if data.date else ''} is taken as valid from the "
+        "departure for the whole voyage (persistence of the ice)"
+    )
     return SeasonGrid(one)
 
 
@@ -175,27 +119,47 @@ def run_forecast_route(args) -> int:
     vessel, profile, ice_class = _vessel(args, say)
     method = {"auto": "astar", "bidirectional": None}.get(args.method, args.method)
     if method is None:
-        raise ValueError("a route through a forecast is on a clock: it cannot be searched from both "
-                         "ends; use --method astar or dijkstra")
+        raise ValueError(
+            "a route through a forecast is on a clock: it cannot be searched from both "
+            "ends; use --method astar or dijkstra"
+        )
     common = dict(neighbourhood=args.neighbourhood, method=method)
     rows, cols = fc.shape
     with searching(say, rows * cols):
         if args.chart is not None:
             if args.objective != "time":
-                raise ValueError("through ice and weather at once only the least time is modelled; "
-                                 "use --objective time, or leave CHART out")
+                raise ValueError(
+                    "through ice and weather at once only the least time is modelled; "
+                    "use --objective time, or leave CHART out"
+                )
             season = _season(args, ice_class or "Arc7", departure, say)
             cls = get_class(ice_class or "Arc7")
-            model = "IMO POLARIS speed limits" if cls.system in ("IACS", "FSICR") else "Andreeva 2021's V = F x V0"
+            model = (
+                "IMO POLARIS speed limits"
+                if cls.system in ("IACS", "FSICR")
+                else "Andreeva 2021's V = F x V0"
+            )
             say(f"routing {cls.name} through the ice ({model}) and the forecast")
-            r = route_ice_weather(season, ds, args.start, args.end, ice_class=cls.name, vessel=vessel,
-                                  departure=departure, persist=args.persist, source=source,
-                                  speed="class", **common)
+            r = route_ice_weather(
+                season,
+                ds,
+                args.start,
+                args.end,
+                ice_class=cls.name,
+                vessel=vessel,
+                departure=departure,
+                persist=args.persist,
+                source=source,
+                speed="class",
+                **common,
+            )
             r = dataclasses.replace(r, notes=tuple(r.notes) + (f"speed in ice: {model} ({cls.name})",))
         else:
             land = fc.dry | _coastline(ds)
-            say(f"routing on the forecast's grid ({rows} x {cols} pixels), land from its NaN fields "
-                "and the coastline of global-land-mask")
+            say(
+                f"routing on the forecast's grid ({rows} x {cols} pixels), land from its NaN fields "
+                "and the coastline of global-land-mask"
+            )
             r = _on_forecast(args, ds, fc, vessel, profile, land, source, common, say)
     return _report(args, r, planned, say)
 
@@ -204,20 +168,40 @@ def _on_forecast(args, ds, fc, vessel, profile, land, source, common, say):
     at_h = 0.0 if fc.times is None else float((fc.departure - fc.times[0]) / np.timedelta64(1, "h"))
     if args.objective == "time":
         if args.arrive_by is not None:
-            raise ValueError("--arrive-by asks for the least fuel that arrives in time: give "
-                             "--objective fuel")
-        r = route_time(ds, args.start, args.end, vessel=vessel, departure=fc.departure, land=land,
-                       persist=args.persist, source=source, **common)
+            raise ValueError(
+                "--arrive-by asks for the least fuel that arrives in time: give --objective fuel"
+            )
+        r = route_time(
+            ds,
+            args.start,
+            args.end,
+            vessel=vessel,
+            departure=fc.departure,
+            land=land,
+            persist=args.persist,
+            source=source,
+            **common,
+        )
         if r.stats.danger is not None:
-            tell(f"no route avoids the danger zones: this one spends {r.stats.danger.hours:.1f} h "
-                 "in them, the least possible (Sotnikova 2009); flagged in the outputs")
+            tell(
+                f"no route avoids the danger zones: this one spends {r.stats.danger.hours:.1f} h "
+                "in them, the least possible (Sotnikova 2009); flagged in the outputs"
+            )
         return r
     if args.objective == "safety":
         length = profile.vessel.length_m if profile else None
         if length is None:
             raise ValueError("--objective safety needs the ship's length: a --vessel-file with length_m")
-        return route_safest(ds, args.start, args.end, ship_length_m=length, speed_kn=vessel.speed_kn,
-                            at_hours=at_h, land=land, **common)
+        return route_safest(
+            ds,
+            args.start,
+            args.end,
+            ship_length_m=length,
+            speed_kn=vessel.speed_kn,
+            at_hours=at_h,
+            land=land,
+            **common,
+        )
     if not (profile and profile.fuel_speeds_kn):
         raise ValueError("--objective fuel needs a fuel curve: a --vessel-file with a [fuel] table")
     fuel = FuelCurve(profile.fuel_speeds_kn, profile.fuel_rates_t_per_h)
@@ -226,10 +210,18 @@ def _on_forecast(args, ds, fc, vessel, profile, land, source, common, say):
         deadline = float((args.arrive_by - fc.departure) / np.timedelta64(1, "h"))
         if deadline <= 0:
             raise ValueError(f"--arrive-by {args.arrive_by} is not after the departure {fc.departure}")
-        return route_min_fuel(ds, args.start, args.end, deadline_h=deadline, vessel=vessel,
-                              fuel=fuel, at_hours=at_h, land=land, **common)
-    return route_fuel(ds, args.start, args.end, vessel=vessel, fuel=fuel, at_hours=at_h,
-                      land=land, **common)
+        return route_min_fuel(
+            ds,
+            args.start,
+            args.end,
+            deadline_h=deadline,
+            vessel=vessel,
+            fuel=fuel,
+            at_hours=at_h,
+            land=land,
+            **common,
+        )
+    return route_fuel(ds, args.start, args.end, vessel=vessel, fuel=fuel, at_hours=at_h, land=land, **common)
 
 
 def _report(args, r, planned, say) -> int:
@@ -240,10 +232,12 @@ def _report(args, r, planned, say) -> int:
     print(r)
     if r.stats.fuel is not None:
         f = r.stats.fuel
-        print(f"fuel {f.fuel_t:.2f} t over {f.hours:.1f} h; engine settings "
-              f"{f.speeds_kn.min():g}-{f.speeds_kn.max():g} kn")
+        print(
+            f"fuel {f.fuel_t:.2f} t over {f.hours:.1f} h; engine settings "
+            f"{f.speeds_kn.min():g}-{f.speeds_kn.max():g} kn"
+        )
     v = r.stats.voyage
-    for w in (v.waits if v is not None else ()):
+    for w in v.waits if v is not None else ():
         print(f"  wait {w.hours:.2f} h at {w.position[0]:.4f}, {w.position[1]:.4f} from {str(w.since)[:16]}")
     write_outputs(planned, r, title=f"{args.name}: {r.length:.0f} km, {r.cost:.5g} {r.unit}", say=say)
     return 0

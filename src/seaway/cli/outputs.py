@@ -28,14 +28,16 @@ def check_outputs(outs, plot) -> list:
     for path, _ in planned:
         key = os.path.realpath(path)
         if key in seen:
-            raise ValueError(f"{path} is given twice ({seen[key]} and {path}); each output needs "
-                             "its own file")
+            raise ValueError(
+                f"{path} is given twice ({seen[key]} and {path}); each output needs its own file"
+            )
         seen[key] = path
     for path, fmt in planned:
         missing = [m for m in NEEDS.get(fmt, ()) if importlib.util.find_spec(m) is None]
         if missing:
-            raise ValueError(f"{path}: writing {fmt.upper()} needs {', '.join(missing)}: "
-                             'pip install "seaway[plot]"')
+            raise ValueError(
+                f'{path}: writing {fmt.upper()} needs {", ".join(missing)}: pip install "seaway[plot]"'
+            )
     return planned
 
 
@@ -45,8 +47,9 @@ def write_outputs(planned, route, *, planar=None, title=None, map_options=None, 
     files = []
     for path, fmt in planned:
         if fmt == "png":
-            files.append((path, route_png(planar if planar is not None else route, title=title,
-                                          **(map_options or {}))))
+            files.append(
+                (path, route_png(planar if planar is not None else route, title=title, **(map_options or {})))
+            )
         else:
             options = (map_options or {}) if fmt == "html" else {}
             files.append((path, export.render(route, fmt, **options)))

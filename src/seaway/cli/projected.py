@@ -25,12 +25,14 @@ class Projection:
 
     def to_xy_km(self, lat, lon):
         import pyproj
+
         t = pyproj.Transformer.from_crs("EPSG:4326", self.crs, always_xy=True)
         x, y = t.transform(lon, lat)
         return np.asarray(y) / 1000.0, np.asarray(x) / 1000.0
 
     def to_latlon(self, y_km, x_km) -> np.ndarray:
         import pyproj
+
         t = pyproj.Transformer.from_crs(self.crs, "EPSG:4326", always_xy=True)
         lon, lat = t.transform(np.asarray(x_km) * 1000.0, np.asarray(y_km) * 1000.0)
         return np.column_stack([lat, lon])
@@ -67,8 +69,10 @@ def find_projection(ds, da) -> Projection | None:
     try:
         return Projection(pyproj.CRS.from_cf(dict(attrs)), f"{name} (CF parameters)")
     except pyproj.exceptions.CRSError as exc:
-        raise ValueError(f"cannot read the projection of {da.name} from its grid mapping "
-                         f"{name!r} ({exc}); fix its attributes (crs_wkt or proj4_string)") from None
+        raise ValueError(
+            f"cannot read the projection of {da.name} from its grid mapping "
+            f"{name!r} ({exc}); fix its attributes (crs_wkt or proj4_string)"
+        ) from None
 
 
 def in_km(da):
@@ -79,16 +83,29 @@ def in_km(da):
     for c in (y, x):
         units = str(c.attrs.get("units", "")).lower()
         scale = 1.0 if units in ("km", "kilometre", "kilometer", "kilometres", "kilometers") else 1e-3
-        if units not in ("m", "meter", "meters", "metre", "metres", "km", "kilometre",
-                         "kilometer", "kilometres", "kilometers"):
-            raise ValueError(f"{da.name}: the projected coordinate {c.name} has units "
-                             f"{c.attrs.get('units')!r}; give metres or km")
+        if units not in (
+            "m",
+            "meter",
+            "meters",
+            "metre",
+            "metres",
+            "km",
+            "kilometre",
+            "kilometer",
+            "kilometres",
+            "kilometers",
+        ):
+            raise ValueError(
+                f"{da.name}: the projected coordinate {c.name} has units "
+                f"{c.attrs.get('units')!r}; give metres or km"
+            )
         out.append(np.asarray(c.values, float) * scale)
-    da = da.drop_vars([n for n in da.coords if n not in da.dims or n in (y.name, x.name)],
-                      errors="ignore")
+    da = da.drop_vars([n for n in da.coords if n not in da.dims or n in (y.name, x.name)], errors="ignore")
     da = da.rename({y.dims[0]: "y", x.dims[0]: "x"}) if (y.dims[0], x.dims[0]) != ("y", "x") else da
-    return da.assign_coords(y=("y", out[0], {"standard_name": "projection_y_coordinate", "units": "km"}),
-                            x=("x", out[1], {"standard_name": "projection_x_coordinate", "units": "km"}))
+    return da.assign_coords(
+        y=("y", out[0], {"standard_name": "projection_y_coordinate", "units": "km"}),
+        x=("x", out[1], {"standard_name": "projection_x_coordinate", "units": "km"}),
+    )
 
 
 def end_pixel(da_km, proj: Projection, p, name: str) -> tuple[int, int]:
@@ -101,8 +118,10 @@ def end_pixel(da_km, proj: Projection, p, name: str) -> tuple[int, int]:
     if not (-0.5 <= r <= rows - 0.5 and -0.5 <= c <= cols - 0.5):
         corners = proj.to_latlon([ys[0], ys[0], ys[-1], ys[-1]], [xs[0], xs[-1], xs[0], xs[-1]])
         box = ", ".join(f"{a:.2f},{b:.2f}" for a, b in corners)
-        raise ValueError(f"{name} {p[0]:g},{p[1]:g} lies outside the chart (its corners are at "
-                         f"{box} lat,lon); give a point on the chart")
+        raise ValueError(
+            f"{name} {p[0]:g},{p[1]:g} lies outside the chart (its corners are at "
+            f"{box} lat,lon); give a point on the chart"
+        )
     return min(int(round(r)), rows - 1), min(int(round(c)), cols - 1)
 
 
@@ -116,6 +135,7 @@ def pixel_latlon(da_km, proj: Projection | None):
     def to_user(p):
         lat, lon = proj.to_latlon([ys[int(p[0])]], [xs[int(p[1])]])[0]
         return float(lat), float(lon)
+
     return to_user
 
 
@@ -135,8 +155,10 @@ def project_chart(out, ds, source) -> None:
         raise ValueError(f"{source.name}: {exc}") from None
     out.projection = proj
     _check_latlon(out, source, proj)
-    out.notes.append(f"projected chart ({proj.crs.name}, from {proj.source}): routed on its own "
-                     "grid in km; --from/--to and the outputs in lat/lon")
+    out.notes.append(
+        f"projected chart ({proj.crs.name}, from {proj.source}): routed on its own "
+        "grid in km; --from/--to and the outputs in lat/lon"
+    )
 
 
 def _check_latlon(out, source, proj) -> None:
@@ -150,8 +172,10 @@ def _check_latlon(out, source, proj) -> None:
     lat = np.asarray(two["lat"].transpose(*source.dims[-2:]).values, float).ravel()
     err = np.nanmax(np.abs(ll[:, 0] - lat)) if lat.size == ll.shape[0] else 0.0
     if err > 0.01:
-        out.notes.append(f"{source.name}: the file's latitudes and its projection differ by up to "
-                         f"{err:.2f} deg; the route and the outputs use the projection")
+        out.notes.append(
+            f"{source.name}: the file's latitudes and its projection differ by up to "
+            f"{err:.2f} deg; the route and the outputs use the projection"
+        )
 
 
 __all__ = ["Projection", "find_projection", "in_km", "end_pixel", "project_chart", "pixel_latlon"]

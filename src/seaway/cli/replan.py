@@ -10,7 +10,8 @@ import json
 import numpy as np
 
 from .common import CLI_METHODS, EPILOG, neighbourhood, point, tell
-from .forecast import add_forecast_options, iso_time, run_forecast_route
+from .forecast import run_forecast_route
+from .forecastargs import add_forecast_options, iso_time
 
 
 def read_voyage(path) -> tuple[np.ndarray, np.ndarray, dict]:
@@ -23,8 +24,10 @@ def read_voyage(path) -> tuple[np.ndarray, np.ndarray, dict]:
     except (OSError, ValueError, KeyError, TypeError) as exc:
         raise ValueError(f"{path}: not a route GeoJSON written by seaway ({exc})") from None
     if "vertex_times" not in props:
-        raise ValueError(f"{path}: the route has no times (vertex_times): re-planning needs a route "
-                         "found through a forecast (seaway route --forecast ... --out ROUTE.geojson)")
+        raise ValueError(
+            f"{path}: the route has no times (vertex_times): re-planning needs a route "
+            "found through a forecast (seaway route --forecast ... --out ROUTE.geojson)"
+        )
     parts = geom["coordinates"] if geom["type"] == "MultiLineString" else [geom["coordinates"]]
     pts = list(parts[0])
     for part in parts[1:]:  # drop the two points inserted where the route crosses +-180
@@ -57,9 +60,11 @@ def run_replan(args) -> int:
         raise ValueError("give --at ISO-TIME: when to re-plan from (within the voyage)")
     here, i = position_at(xy, times, args.at)
     end = args.end or (float(xy[-1, 0]), float(xy[-1, 1]))
-    tell(f"at {args.at} the ship is at {here[0]:.4f},{here[1]:.4f} (after vertex {i + 1} of "
-         f"{len(xy)}); re-planning to {end[0]:.4f},{end[1]:.4f} through {', '.join(args.forecast)}",
-         "replan")
+    tell(
+        f"at {args.at} the ship is at {here[0]:.4f},{here[1]:.4f} (after vertex {i + 1} of "
+        f"{len(xy)}); re-planning to {end[0]:.4f},{end[1]:.4f} through {', '.join(args.forecast)}",
+        "replan",
+    )
     if args.speed is None and args.vessel_file is None and props.get("speed_kn"):
         args.speed = float(props["speed_kn"])
         tell(f"the route's speed {args.speed:g} kn (give --speed or --vessel-file to change it)", "replan")
@@ -69,23 +74,39 @@ def run_replan(args) -> int:
 
 def add_replan_command(commands) -> None:
     rp = commands.add_parser(
-        "replan", help="re-plan a voyage from where the ship is, through a newer forecast",
+        "replan",
+        help="re-plan a voyage from where the ship is, through a newer forecast",
         description="Where is the ship at --at on ROUTE (a GeoJSON that seaway route --forecast "
-                    "wrote, with its vertex times), and which is the quickest route from there to "
-                    "the same end through the newer --forecast, leaving then (Grinyak et al. 2018).",
+        "wrote, with its vertex times), and which is the quickest route from there to "
+        "the same end through the newer --forecast, leaving then (Grinyak et al. 2018).",
         epilog=f"{EPILOG} Example: seaway replan voyage.geojson --forecast gale-0106.nc --at "
-               "2026-10-01T18:00 --out voyage-2.rtz")
+        "2026-10-01T18:00 --out voyage-2.rtz",
+    )
     rp.add_argument("route", metavar="ROUTE", help="the voyage's GeoJSON (seaway route --forecast ... --out)")
-    rp.add_argument("--at", type=iso_time, metavar="ISO-TIME", help="re-plan from the ship's position at this time (UTC)")
+    rp.add_argument(
+        "--at", type=iso_time, metavar="ISO-TIME", help="re-plan from the ship's position at this time (UTC)"
+    )
     rp.add_argument("--to", dest="end", type=point, metavar="LAT,LON", help="a new end (default the route's)")
     rp.add_argument("--speed", type=float, metavar="KN", help="calm-water speed (default the route's)")
     rp.add_argument("--vessel", metavar="CLASS", help="ice class (unused on the forecast's grid)")
-    rp.add_argument("--neighbourhood", type=neighbourhood, default=5, metavar="K", help="k of the k x k stencil (default 5)")
+    rp.add_argument(
+        "--neighbourhood",
+        type=neighbourhood,
+        default=5,
+        metavar="K",
+        help="k of the k x k stencil (default 5)",
+    )
     rp.add_argument("--method", default="astar", choices=CLI_METHODS, help="search algorithm (default astar)")
     rp.add_argument("--name", default="seaway route, re-planned", help="route name in the outputs")
-    rp.add_argument("--out", action="append", metavar="FILE", help="write the new route (.geojson, .gpx, .rtz, .csv, .html)")
+    rp.add_argument(
+        "--out",
+        action="append",
+        metavar="FILE",
+        help="write the new route (.geojson, .gpx, .rtz, .csv, .html)",
+    )
     rp.add_argument("--plot", metavar="PNG", help="draw the new route to a PNG (needs seaway[plot])")
     rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")
     add_forecast_options(rp)
-    rp.set_defaults(chart=None, start=None, land_variable=None, grid=None, assume_stage=None, fast_ice="nearby")
-
+    rp.set_defaults(
+        chart=None, start=None, land_variable=None, grid=None, assume_stage=None, fast_ice="nearby"
+    )

@@ -7,28 +7,15 @@ import dataclasses
 from ..base.units import KM_PER_NM
 from ..depth import check_draft
 from ..engine.api import route
-from ..engine.snap import DEFAULT_SNAP_KM
 from ..errors import NoRouteError
 from ..ice.speed import ice_speed
-from ..models import EDGE_COSTS
-from .chartfile import fast_ice, open_chart
-from .common import (
-    CLI_METHODS,
-    EPILOG,
-    Progress,
-    add_ends,
-    grid,
-    neighbourhood,
-    point,
-    positive_km,
-    searching,
-    tell,
-)
-from .constraints import add_constraint_options, constraint_options
+from .chartfile import open_chart
+from .common import Progress, searching, tell
+from .constraints import constraint_options
 from .depth import for_route
 from .ends import check_ends
-from .forecast import EXAMPLE as FORECAST_EXAMPLE
-from .forecast import add_forecast_options, check_forecast_options, run_forecast_route
+from .forecast import run_forecast_route
+from .forecastargs import check_forecast_options
 from .noroute import ice_chart, why_no_route
 from .outputs import check_outputs, write_outputs
 from .projected import end_pixel, pixel_latlon
@@ -39,51 +26,87 @@ def run_route(args) -> int:
     if args.forecast:  # weather routing (seaway.cli.forecast)
         return run_forecast_route(args)
     if args.chart is None:
-        raise ValueError("give a CHART file, or --forecast FILE to route through a forecast on its "
-                         "own grid")
+        raise ValueError("give a CHART file, or --forecast FILE to route through a forecast on its own grid")
     say = Progress("route", args.quiet)
     planned = check_outputs(args.out, args.plot)  # before any work: nothing found is then lost
     say(f"reading {args.chart}")
-    data = open_chart(args.chart, variable=args.variable, vessel=args.vessel,
-                      land_variable=args.land_variable, grid=args.grid,
-                      ends=(args.start, args.end), stage=args.assume_stage,
-                      fast_ice=args.fast_ice)
+    data = open_chart(
+        args.chart,
+        variable=args.variable,
+        vessel=args.vessel,
+        land_variable=args.land_variable,
+        grid=args.grid,
+        ends=(args.start, args.end),
+        stage=args.assume_stage,
+        fast_ice=args.fast_ice,
+    )
     for note in data.notes:  # what the chart's reading assumed or decided: even with --quiet
         tell(note)
     cost = data.cost
     start, end = args.start, args.end
     if data.projection is not None:
-        start, end = (end_pixel(cost, data.projection, p, name)
-                      for p, name in ((start, "start"), (end, "end")))
+        start, end = (
+            end_pixel(cost, data.projection, p, name) for p, name in ((start, "start"), (end, "end"))
+        )
     elif not ("lat" in cost.coords or "latitude" in cost.coords):
-        say("the chart has projected y/x coordinates but names no projection (CF grid_mapping): "
-            "--from and --to are ROW,COL pixel indices")
+        say(
+            "the chart has projected y/x coordinates but names no projection (CF grid_mapping): "
+            "--from and --to are ROW,COL pixel indices"
+        )
     chart_cost = cost
-    cost, depth, shallow = for_route(args.depth, cost, draft=args.draft, ukc=args.ukc,
-                                     variable=args.depth_variable, positive=args.depth_positive,
-                                     say=say, crs=getattr(data.layers, "attrs", {}).get("crs"))
-    (start, end), moved = check_ends(cost, data.land, data.layers, (start, end), vessel=args.vessel,
-                                     snap=args.snap, snap_km=args.snap_km, say=tell,
-                                     neighbourhood=args.neighbourhood, reasons=shallow,
-                                     chart_cost=chart_cost, to_user=pixel_latlon(cost, data.projection),
-                                     asked=(args.start, args.end))
+    cost, depth, shallow = for_route(
+        args.depth,
+        cost,
+        draft=args.draft,
+        ukc=args.ukc,
+        variable=args.depth_variable,
+        positive=args.depth_positive,
+        say=say,
+        crs=getattr(data.layers, "attrs", {}).get("crs"),
+    )
+    (start, end), moved = check_ends(
+        cost,
+        data.land,
+        data.layers,
+        (start, end),
+        vessel=args.vessel,
+        snap=args.snap,
+        snap_km=args.snap_km,
+        say=tell,
+        neighbourhood=args.neighbourhood,
+        reasons=shallow,
+        chart_cost=chart_cost,
+        to_user=pixel_latlon(cost, data.projection),
+        asked=(args.start, args.end),
+    )
     rows, cols = cost.shape
-    say(f"routing on {rows} x {cols} pixels ({data.description}; {args.method}, "
-        f"{args.neighbourhood}x{args.neighbourhood} stencil, edge cost {args.edge_cost})")
+    say(
+        f"routing on {rows} x {cols} pixels ({data.description}; {args.method}, "
+        f"{args.neighbourhood}x{args.neighbourhood} stencil, edge cost {args.edge_cost})"
+    )
     constraints = constraint_options(args)  # seaway.cli.constraints
     for name, value in constraints.items():
         if value not in (None, []):
             say(f"constraint {name}: {value if name != 'zones' else [z.name for z in value]}")
     try:
         # With a turn penalty the search settles (pixel, incoming step) states: scale the total.
-        states = args.neighbourhood ** 2 - 1 if constraints["turn_penalty"] is not None else 1
+        states = args.neighbourhood**2 - 1 if constraints["turn_penalty"] is not None else 1
         with searching(say, rows * cols * states):
-            r = route(cost, start, end, land=data.land, neighbourhood=args.neighbourhood,
-                      edge_cost=args.edge_cost, method=args.method, **constraints)
+            r = route(
+                cost,
+                start,
+                end,
+                land=data.land,
+                neighbourhood=args.neighbourhood,
+                edge_cost=args.edge_cost,
+                method=args.method,
+                **constraints,
+            )
     except NoRouteError:
         used = any(v not in (None, []) for v in constraints.values())
-        raise why_no_route(data, cost, (start, end), args, depth=depth, shallow=shallow,
-                           constrained=used) from None
+        raise why_no_route(
+            data, cost, (start, end), args, depth=depth, shallow=shallow, constrained=used
+        ) from None
     say(f"found: cost {r.cost:.6g}, {len(r.pixels)} pixels, {r.stats.search.settled} settled")
     if constraints["via"] or constraints["turn_penalty"] is not None:
         say("not smoothed: smoothing would cut the via-points or ignore the turn penalty")
@@ -91,13 +114,22 @@ def run_route(args) -> int:
         say(f"smoothing {r.course_changes} course changes")
         r = r.smoothed()
         done = r.stats.smoothing
-        say(f"smoothed: cost {done.cost_before:.6g} -> {r.cost:.6g}, course changes "
-            f"{done.course_changes_before} -> {done.course_changes_after}")
-    r = dataclasses.replace(r, name=args.name, speed_kn=args.speed, notes=r.notes + tuple(moved),
-                            requested=(args.start, args.end))  # every output gives both ends
+        say(
+            f"smoothed: cost {done.cost_before:.6g} -> {r.cost:.6g}, course changes "
+            f"{done.course_changes_before} -> {done.course_changes_after}"
+        )
+    r = dataclasses.replace(
+        r, name=args.name, speed_kn=args.speed, notes=r.notes + tuple(moved), requested=(args.start, args.end)
+    )  # every output gives both ends
     if args.speed and ice_chart(data, args):  # times from the speed in the ice, never open water's
-        knots = ice_speed(data.layers, args.vessel or "Arc7", args.speed, fast_ice=args.fast_ice,
-                          depth=depth if args.draft is not None else None, draft=args.draft)
+        knots = ice_speed(
+            data.layers,
+            args.vessel or "Arc7",
+            args.speed,
+            fast_ice=args.fast_ice,
+            depth=depth if args.draft is not None else None,
+            draft=args.draft,
+        )
         r = r.with_ice_speed(knots)
         tell(f"times from the speed in the ice: {knots.attrs['model']}")
     if data.environment:
@@ -110,8 +142,14 @@ def run_route(args) -> int:
         r = dataclasses.replace(r, latlon=data.projection.to_latlon(y, x))
     print(r)
     shoal = sum(check_draft(args.draft, args.ukc)) if args.draft is not None else None
-    write_outputs(planned, r, planar=planar if data.projection is not None else None,
-                  title=_title(args, data, r), say=say, map_options={"shoal_m": shoal})
+    write_outputs(
+        planned,
+        r,
+        planar=planar if data.projection is not None else None,
+        title=_title(args, data, r),
+        say=say,
+        map_options={"shoal_m": shoal},
+    )
     return 0
 
 
@@ -120,95 +158,3 @@ def _title(args, data, r) -> str:
     head = f"{args.name}" + (f", chart of {data.date}" if data.date else "")
     length = f"{r.length:.0f} km ({r.length / KM_PER_NM:.0f} nm)" if r.geographic else f"{r.length:.1f} units"
     return f"{head}: {length}, cost {r.cost:.5g} {r.unit}; {data.description}"
-
-
-def add_route_command(commands) -> None:
-    rp = commands.add_parser(
-        "route", help="route a ship across a chart file and print, write and plot the route",
-        description="Find the least-cost route across CHART from --from to --to, smooth it, print "
-                    "its legs (course, distance, time, cost, ice along each leg) and optionally "
-                    "write it (GeoJSON, GPX, RTZ, CSV) and plot it (PNG). With --forecast: the "
-                    "quickest route through a weather forecast from --depart, with its schedule.",
-        epilog=f"{EPILOG} Weather routing, {FORECAST_EXAMPLE}")
-    rp.add_argument("chart", metavar="CHART", nargs="?",
-                    help="chart file: NetCDF (.nc), GeoTIFF (.tif, needs rasterio), SIGRID-3 "
-                         "(.shp/.gpkg, needs seaway.ice.sigrid), or 'kara' for the built-in "
-                         "synthetic Kara Sea chart; with --forecast it may be left out (the "
-                         "forecast's own grid) or be an ice chart (ice and weather in one voyage)")
-    add_ends(rp)
-    rp.add_argument("--vessel", metavar="CLASS",
-                    help="ice class (e.g. Arc7, Arc5): turns the chart's stage of development "
-                         "into Grinyak et al. 2022's impact (default Arc7 on stage charts)")
-    rp.add_argument("--assume-stage", type=float, metavar="CODE",
-                    help="WMO stage of development assumed for the ice of a chart that gives only "
-                         "a concentration (CF sea_ice_area_fraction, e.g. NSIDC G02202); default "
-                         "93, thick first-year ice; said on stderr")
-    rp.add_argument("--fast-ice", type=fast_ice, default="nearby", metavar="RULE",
-                    help="stage of fast ice (SIGRID-3 FA 08) the chart gives no stage for: nearby "
-                         "(default: the thickest first-year stage on the grid, else thick "
-                         "first-year 93), closed (impassable), or a WMO stage code, e.g. 91; "
-                         "the assumption is printed (seaway.ice.forms)")
-    rp.add_argument("--variable", metavar="NAME",
-                    help="chart variable holding the cost per unit length (NaN/inf impassable); "
-                         "GeoTIFF: the band number (default 1)")
-    rp.add_argument("--land-variable", metavar="NAME",
-                    help="chart variable holding the land mask (default: 'land' if present)")
-    rp.add_argument("--grid", type=grid, metavar="S,N,W,E,RES",
-                    help="lat/lon grid (degrees) to rasterise a SIGRID-3 chart onto (default: the "
-                         "box around the great circle between the ends, widened by a quarter of "
-                         "its length (at least 300 km), at 0.05 deg of latitude and the same km "
-                         "east-west, clipped to the chart; see seaway.ice.routegrid)")
-    rp.add_argument("--depth", metavar="FILE",
-                    help="bathymetry raster (NetCDF or GeoTIFF on lat/lon; ETOPO/GEBCO elevation "
-                         "or depth positive down, told by the CF attributes): resampled onto the "
-                         "chart (the shallowest depth in each pixel); the route's least depth is "
-                         "reported")
-    rp.add_argument("--draft", type=float, metavar="M",
-                    help="the ship's draft in metres: pixels shallower than draft + UKC are "
-                         "impassable (needs --depth)")
-    rp.add_argument("--ukc", type=float, metavar="M",
-                    help="under-keel clearance in metres (default 10 %% of the draft)")
-    rp.add_argument("--depth-variable", metavar="NAME",
-                    help="the bathymetry file's variable (default: found by CF standard name)")
-    rp.add_argument("--depth-positive", choices=("up", "down"),
-                    help="override the bathymetry's sign: up = elevation (ETOPO/GEBCO), down = "
-                         "depth (default: from its CF attributes, else guessed and said so)")
-    rp.add_argument("--neighbourhood", type=neighbourhood, default=5, metavar="K",
-                    help="k of the k x k stencil: odd, 3 to 15 (default 5, as in Grinyak et al. 2022)")
-    rp.add_argument("--edge-cost", default="max", choices=tuple(EDGE_COSTS),
-                    help="step cost: max (Grinyak et al. 2022), mean (Grinyak et al. 2018), integral (exact line "
-                         "integral) or length (the shortest route through passable water); default max")
-    rp.add_argument("--method", default="auto", choices=CLI_METHODS,
-                    help="search algorithm (all exact; default auto: the fastest for the query)")
-    rp.add_argument("--no-smooth", action="store_true",
-                    help="keep the raw pixel route (default: any-angle smoothing, never costlier)")
-    rp.add_argument("--snap", action="store_true",
-                    help="move a start or end on land, in ice the class may not enter or in too "
-                         "shallow water to the nearest point the ship may use in water that joins "
-                         "both ends, at most --snap-km away; the ends asked for and used are in "
-                         "every output (default: stop with an error naming why, that point and "
-                         "its distance)")
-    rp.add_argument("--snap-km", type=positive_km, default=DEFAULT_SNAP_KM, metavar="KM",
-                    help=f"the farthest --snap moves an end (default {DEFAULT_SNAP_KM:g} km; "
-                         "farther: stop, naming the distance)")
-    add_constraint_options(rp, point)
-    rp.add_argument("--speed", type=float, metavar="KN",
-                    help="speed in open water, knots: adds each leg's time and the voyage time; "
-                         "on an ice chart the speed in the ice comes from a model named in the "
-                         "output: Andreeva 2021's V = F x V0 for Register classes, the IMO POLARIS "
-                         "speed limits for Polar Classes and Finnish-Swedish classes "
-                         "(seaway.ice.speed); with --forecast the calm-water speed (default 12, or the "
-                         "vessel file's)")
-    rp.add_argument("--name", default="seaway route", help="route name in the outputs")
-    rp.add_argument("--out", action="append", metavar="FILE",
-                    help="write the route; the extension picks the format: .geojson/.json, .gpx, "
-                         ".rtz (IEC 61174, for ECDIS), .csv, .html (interactive map, offline; "
-                         "needs seaway[plot]); may be repeated. Every path is checked before the "
-                         "chart is read, and all files are written or none; each carries the ends "
-                         "asked for and used and what the route assumes")
-    rp.add_argument("--plot", metavar="PNG",
-                    help="draw the chart, land and route to a PNG (needs seaway[plot]): ice in the "
-                         "WMO colour code (by stage of development on stage charts, fast ice grey), "
-                         "with --depth/--draft the shoals and the least depth")
-    rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")
-    add_forecast_options(rp)  # seaway.cli.forecast

@@ -25,8 +25,9 @@ def dated_chart(text: str) -> tuple[str, str]:
     try:
         np.datetime64(date, "s")
     except ValueError:
-        raise argparse.ArgumentTypeError(f"{date!r} is not a date (e.g. 2026-07-01 or "
-                                         "2026-07-01T12)") from None
+        raise argparse.ArgumentTypeError(
+            f"{date!r} is not a date (e.g. 2026-07-01 or 2026-07-01T12)"
+        ) from None
     return date, path
 
 
@@ -36,8 +37,9 @@ def speed_table(text: str) -> dict:
         pairs = [item.split(":") for item in text.replace(" ", "").split(",")]
         return {int(s): float(v) for s, v in pairs}
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected STAGE:KNOTS,... (e.g. 55:14,87:7,91:3,93:0), "
-                                         f"got {text!r}") from None
+        raise argparse.ArgumentTypeError(
+            f"expected STAGE:KNOTS,... (e.g. 55:14,87:7,91:3,93:0), got {text!r}"
+        ) from None
 
 
 def _season(args):
@@ -69,6 +71,7 @@ def _season(args):
 def _bounds(charts):
     """The union of the charts' extents in degrees, or None when one is not in degrees."""
     import pyogrio
+
     boxes = []
     for _, path in charts:
         info = pyogrio.read_info(path)
@@ -89,14 +92,19 @@ def _check_cover(ds, charts, ends, target):
             r = int(np.argmin(np.abs(lat - p[0])))
             c = int(np.argmin(np.abs((lon - p[1] + 180) % 360 - 180)))
             if off[k, r, c]:
-                raise ValueError(f"the chart of {date} ({path}) does not cover the {name} "
-                                 f"{p[0]:g},{p[1]:g}: no polygon of it lies there, so its ice is "
-                                 "unknown; give a chart that covers the voyage, or set the grid "
-                                 "with --grid")
+                raise ValueError(
+                    f"the chart of {date} ({path}) does not cover the {name} "
+                    f"{p[0]:g},{p[1]:g}: no polygon of it lies there, so its ice is "
+                    "unknown; give a chart that covers the voyage, or set the grid "
+                    "with --grid"
+                )
         share = float(off[k].mean())
         if share > 0.05:
-            tell(f"the chart of {date} ({path}) leaves {100 * share:.0f} % of the grid uncovered: "
-                 "off its polygons the ice is unknown and impassable", "season")
+            tell(
+                f"the chart of {date} ({path}) leaves {100 * share:.0f} % of the grid uncovered: "
+                "off its polygons the ice is unknown and impassable",
+                "season",
+            )
 
 
 def run_season(args) -> int:
@@ -107,18 +115,27 @@ def run_season(args) -> int:
     t = season.times
     say(f"{t.size} charts from {t[0]} to {t[-1]} on {season.shape[0]} x {season.shape[1]} pixels")
     speed = "andreeva" if args.speed_table is None else args.speed_table
-    model = IceSeasonTime(season, args.vessel, args.speed, departure=args.depart, speed=speed,
-                          concentration_limit=not args.no_concentration_limit)
-    say(f"routing {model.ice_class} at {args.speed:g} kn from {model.departure} "
-        f"({args.neighbourhood}x{args.neighbourhood} stencil, waiting allowed)")
+    model = IceSeasonTime(
+        season,
+        args.vessel,
+        args.speed,
+        departure=args.depart,
+        speed=speed,
+        concentration_limit=not args.no_concentration_limit,
+    )
+    say(
+        f"routing {model.ice_class} at {args.speed:g} kn from {model.departure} "
+        f"({args.neighbourhood}x{args.neighbourhood} stencil, waiting allowed)"
+    )
     r = season.prepare(args.neighbourhood).route(args.start, args.end, model=model, method=args.method)
     r.name = args.name
     st = r.stats.voyage
     print(r)
-    print(f"departure {st.departure}, arrival {str(st.arrival)[:16]}: {r.cost:.2f} h "
-          f"({r.cost / 24:.2f} days), {st.hours_under_way:.2f} h under way, "
-          f"{st.hours_waiting:.2f} h waiting; charts used: "
-          + ", ".join(str(d)[:16] for d in st.charts_used))
+    print(
+        f"departure {st.departure}, arrival {str(st.arrival)[:16]}: {r.cost:.2f} h "
+        f"({r.cost / 24:.2f} days), {st.hours_under_way:.2f} h under way, "
+        f"{st.hours_waiting:.2f} h waiting; charts used: " + ", ".join(str(d)[:16] for d in st.charts_used)
+    )
     for _, (a, b), since, hours in st.waits:
         print(f"  wait {hours:.2f} h at {a:.4f}, {b:.4f} from {str(since)[:16]}")
     for path in args.out or []:
@@ -128,32 +145,64 @@ def run_season(args) -> int:
 
 def add_season_command(commands) -> None:
     sp = commands.add_parser(
-        "season", help="the quickest route through a season of dated ice charts",
+        "season",
+        help="the quickest route through a season of dated ice charts",
         description="Find the earliest-arriving route through a time series of ice charts: each "
-                    "step crosses the chart valid when the ship is there, at the class's speed "
-                    "(Andreeva 2021's V = F x V0, or --speed-table); the ship may wait for the ice "
-                    "to clear (the route lists its waits).", epilog=EPILOG)
-    sp.add_argument("charts", nargs="+", metavar="DATE=CHART",
-                    help="SIGRID-3 charts with the date each is valid from (2026-07-01=a.shp "
-                         "2026-07-02=b.shp ...), or one NetCDF file with a time dimension of CT "
-                         "(or sea_ice_area_fraction) and SA or thickness")
+        "step crosses the chart valid when the ship is there, at the class's speed "
+        "(Andreeva 2021's V = F x V0, or --speed-table); the ship may wait for the ice "
+        "to clear (the route lists its waits).",
+        epilog=EPILOG,
+    )
+    sp.add_argument(
+        "charts",
+        nargs="+",
+        metavar="DATE=CHART",
+        help="SIGRID-3 charts with the date each is valid from (2026-07-01=a.shp "
+        "2026-07-02=b.shp ...), or one NetCDF file with a time dimension of CT "
+        "(or sea_ice_area_fraction) and SA or thickness",
+    )
     add_ends(sp)
     sp.add_argument("--vessel", default="Arc7", metavar="CLASS", help="ice class (default Arc7)")
-    sp.add_argument("--speed", type=float, default=12.0, metavar="KN",
-                    help="open-water speed in knots (default 12)")
+    sp.add_argument(
+        "--speed", type=float, default=12.0, metavar="KN", help="open-water speed in knots (default 12)"
+    )
     sp.add_argument("--depart", metavar="DATE", help="departure (default the first chart's date)")
-    sp.add_argument("--speed-table", type=speed_table, metavar="STAGE:KN,...",
-                    help="speeds per WMO stage instead of Andreeva 2021 (55 is open water)")
-    sp.add_argument("--no-concentration-limit", action="store_true",
-                    help="let the class enter ice above its independent-navigation concentration")
-    sp.add_argument("--grid", type=grid, metavar="S,N,W,E,RES",
-                    help="lat/lon grid (degrees) to rasterise SIGRID-3 charts onto (default: as seaway "
-                         "route chooses it, the box around the great circle between the ends)")
-    sp.add_argument("--neighbourhood", type=neighbourhood, default=5, metavar="K",
-                    help="k of the k x k stencil: odd, 3 to 15 (default 5)")
-    sp.add_argument("--method", default="astar", choices=("astar", "dijkstra"),
-                    help="search algorithm (both exact; default astar)")
+    sp.add_argument(
+        "--speed-table",
+        type=speed_table,
+        metavar="STAGE:KN,...",
+        help="speeds per WMO stage instead of Andreeva 2021 (55 is open water)",
+    )
+    sp.add_argument(
+        "--no-concentration-limit",
+        action="store_true",
+        help="let the class enter ice above its independent-navigation concentration",
+    )
+    sp.add_argument(
+        "--grid",
+        type=grid,
+        metavar="S,N,W,E,RES",
+        help="lat/lon grid (degrees) to rasterise SIGRID-3 charts onto (default: as seaway "
+        "route chooses it, the box around the great circle between the ends)",
+    )
+    sp.add_argument(
+        "--neighbourhood",
+        type=neighbourhood,
+        default=5,
+        metavar="K",
+        help="k of the k x k stencil: odd, 3 to 15 (default 5)",
+    )
+    sp.add_argument(
+        "--method",
+        default="astar",
+        choices=("astar", "dijkstra"),
+        help="search algorithm (both exact; default astar)",
+    )
     sp.add_argument("--name", default="seaway season route", help="route name in the outputs")
-    sp.add_argument("--out", action="append", metavar="FILE",
-                    help="write the route (.geojson, .gpx, .rtz, .csv); may be repeated")
+    sp.add_argument(
+        "--out",
+        action="append",
+        metavar="FILE",
+        help="write the route (.geojson, .gpx, .rtz, .csv); may be repeated",
+    )
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")

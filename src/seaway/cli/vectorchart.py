@@ -18,8 +18,9 @@ def sigrid_chart(path, grid, ends=None, notes=None):
     try:
         import pyogrio
     except ImportError as exc:
-        raise ValueError(f"{path}: reading SIGRID-3 charts needs the [ice] extra ({exc}): "
-                         'pip install "seaway[ice]"') from None
+        raise ValueError(
+            f'{path}: reading SIGRID-3 charts needs the [ice] extra ({exc}): pip install "seaway[ice]"'
+        ) from None
     # a directory, an empty file, a shapefile without .dbf/.shx or with a broken .prj: ValueError
     assumed = check_vector_file(path)
     if notes is not None:
@@ -41,8 +42,10 @@ def sigrid_chart(path, grid, ends=None, notes=None):
         info = pyogrio.read_info(path)
         west, south, east, north = info["total_bounds"]
         if not (-180 <= west <= east <= 360 and -90 <= south <= north <= 90):
-            raise ValueError(f"{path}: the chart is not in degrees ({info['crs']}); give the lat/lon "
-                             "grid to rasterise onto with --grid SOUTH,NORTH,WEST,EAST,RES")
+            raise ValueError(
+                f"{path}: the chart is not in degrees ({info['crs']}); give the lat/lon "
+                "grid to rasterise onto with --grid SOUTH,NORTH,WEST,EAST,RES"
+            )
         res = max(north - south, east - west) / 1000
         north = south + np.ceil((north - south) / res - 1e-9) * res  # whole pixels
         east = west + np.ceil((east - west) / res - 1e-9) * res
@@ -57,6 +60,7 @@ def in_degrees(info) -> bool:
     if crs:
         try:
             import pyproj
+
             return bool(pyproj.CRS.from_user_input(crs).is_geographic)
         except Exception:  # an unparsable CRS: judge by the numbers
             pass

@@ -7,5 +7,14 @@ from ..chart.distance import distance_to
 from .timed import hard_only, timed_zone_engine
 from .zones import KeepAway, Zone, constrain, constraint_factor, rasterise_zone
 
-__all__ = ["KeepAway", "Zone", "constrain", "constraint_factor", "rasterise_zone", "distance_to",
-           "hard_only", "timed_zone_engine", "EARTH_RADIUS_KM"]
+__all__ = [
+    "KeepAway",
+    "Zone",
+    "constrain",
+    "constraint_factor",
+    "rasterise_zone",
+    "distance_to",
+    "hard_only",
+    "timed_zone_engine",
+    "EARTH_RADIUS_KM",
+]

@@ -33,11 +33,15 @@ def hard_only(km, keep_away, land) -> np.ndarray:
     keep_away = [keep_away] if isinstance(keep_away, KeepAway) else list(keep_away)
     for k in keep_away:
         if isinstance(k, KeepAway) and k.soft_km:
-            raise ValueError("time routes take hard keep-away buffers only (KeepAway(km=...)): a "
-                             "soft penalty scales a static cost, and a time route's cost is hours")
+            raise ValueError(
+                "time routes take hard keep-away buffers only (KeepAway(km=...)): a "
+                "soft penalty scales a static cost, and a time route's cost is hours"
+            )
         if isinstance(k, KeepAway) and k.ice is not None and not hasattr(k.ice, "shape"):
-            raise ValueError("on a time route KeepAway.ice must be a boolean mask of the forecast's "
-                             "grid (there is no static cost to threshold)")
+            raise ValueError(
+                "on a time route KeepAway.ice must be a boolean mask of the forecast's "
+                "grid (there is no static cost to threshold)"
+            )
     chart = as_chart(km, land=land)
     return np.isinf(constraint_factor(chart, keep_away)) | np.asarray(land, bool)
 
@@ -50,17 +54,22 @@ def _hours(t, forecast) -> float:
     try:
         return float((np.datetime64(t) - forecast.departure) / np.timedelta64(1, "h"))
     except (TypeError, ValueError):
-        raise ValueError(f"a zone window time must be a datetime or hours after departure, got {t!r}") from None
+        raise ValueError(
+            f"a zone window time must be a datetime or hours after departure, got {t!r}"
+        ) from None
 
 
-def timed_zone_engine(forecast: TimedGrid, base: _core.TravelTimeModel,
-                      zones: Iterable[Zone]) -> _core.ZonedTravelTimeModel:
+def timed_zone_engine(
+    forecast: TimedGrid, base: _core.TravelTimeModel, zones: Iterable[Zone]
+) -> _core.ZonedTravelTimeModel:
     """The engine's TravelTime model with `zones` (at most 8 exclusions, each closed always or in
     its `active` window) rasterised on the forecast's grid (a seaway.weather.ForecastGrid)."""
     zones = list(zones)
     if len(zones) > 8:
-        raise ValueError(f"a time route takes at most 8 zones, got {len(zones)}; merge polygons "
-                         "with the same window into one Zone")
+        raise ValueError(
+            f"a time route takes at most 8 zones, got {len(zones)}; merge polygons "
+            "with the same window into one Zone"
+        )
     chart = as_chart(forecast.template)
     mask = np.zeros(chart.shape, np.uint8)
     closes, opens = [], []
@@ -68,12 +77,16 @@ def timed_zone_engine(forecast: TimedGrid, base: _core.TravelTimeModel,
         if not isinstance(z, Zone):
             raise TypeError(f"zones takes Zone objects, got {type(z).__name__}")
         if math.isfinite(z.penalty):
-            raise ValueError(f"zone {z.name!r} is a penalty zone; a time route's cost is hours, so it "
-                             "takes exclusion zones (penalty=inf), optionally with a time window")
+            raise ValueError(
+                f"zone {z.name!r} is a penalty zone; a time route's cost is hours, so it "
+                "takes exclusion zones (penalty=inf), optionally with a time window"
+            )
         mask[rasterise_zone(z, chart)] |= np.uint8(1 << i)
         a, b = (-math.inf, math.inf) if z.active is None else (_hours(t, forecast) for t in z.active)
         if not a < b:
-            raise ValueError(f"zone {z.name!r}: its window must close before it opens again, got {z.active!r}")
+            raise ValueError(
+                f"zone {z.name!r}: its window must close before it opens again, got {z.active!r}"
+            )
         closes.append(a)
         opens.append(b)
     from scipy.ndimage import maximum_filter

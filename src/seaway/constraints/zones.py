@@ -54,15 +54,23 @@ class KeepAway:
     def __post_init__(self):
         for name in ("km", "soft_km", "penalty"):
             v = getattr(self, name)
-            if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) \
-                    or not math.isfinite(v) or v < 0:
+            if (
+                isinstance(v, bool)
+                or not isinstance(v, (int, float, np.floating, np.integer))
+                or not math.isfinite(v)
+                or v < 0
+            ):
                 raise ValueError(f"KeepAway.{name} must be a finite number >= 0, got {v!r}")
         if self.soft_km and self.soft_km <= self.km:
-            raise ValueError(f"KeepAway.soft_km ({self.soft_km:g}) must exceed km ({self.km:g}); "
-                             "give soft_km=0 for a hard limit only")
+            raise ValueError(
+                f"KeepAway.soft_km ({self.soft_km:g}) must exceed km ({self.km:g}); "
+                "give soft_km=0 for a hard limit only"
+            )
         if self.ice is None and self.km == 0 and self.soft_km == 0:
-            raise ValueError("KeepAway from land with km=0 and soft_km=0 changes nothing; give km= "
-                             "(hard limit) and/or soft_km= (soft penalty)")
+            raise ValueError(
+                "KeepAway from land with km=0 and soft_km=0 changes nothing; give km= "
+                "(hard limit) and/or soft_km= (soft penalty)"
+            )
 
 
 @dataclass(frozen=True)
@@ -89,8 +97,12 @@ class Zone:
 
     def __post_init__(self):
         p = self.penalty
-        if isinstance(p, bool) or not isinstance(p, (int, float, np.floating, np.integer)) \
-                or math.isnan(p) or p < 1:
+        if (
+            isinstance(p, bool)
+            or not isinstance(p, (int, float, np.floating, np.integer))
+            or math.isnan(p)
+            or p < 1
+        ):
             raise ValueError(f"Zone penalty must be >= 1 (a cost factor) or inf (an exclusion), got {p!r}")
         if self.active is not None:
             if not (isinstance(self.active, (tuple, list)) and len(self.active) == 2):
@@ -130,8 +142,10 @@ def _geometry(zone: Zone, chart_crs):
     elif isinstance(geom, shapely.Geometry):
         src_crs = zone.crs
     else:
-        raise TypeError(f"zone {zone.name!r}: geometry must be a shapely geometry, a GeoJSON "
-                        f"mapping or a vector file path, got {type(geom).__name__}")
+        raise TypeError(
+            f"zone {zone.name!r}: geometry must be a shapely geometry, a GeoJSON "
+            f"mapping or a vector file path, got {type(geom).__name__}"
+        )
     if geom.is_empty or geom.area == 0:
         raise ValueError(f"zone {zone.name!r} has no area; give a Polygon or MultiPolygon")
     if not geom.is_valid:
@@ -181,11 +195,14 @@ def _mask_of(ice, chart: Chart, template) -> np.ndarray:
         ice = ice.transpose(*template.dims)
     arr = np.asarray(ice.values if hasattr(ice, "dims") else ice)
     if arr.shape != chart.shape:
-        raise ValueError(f"KeepAway.ice mask has shape {arr.shape} but the chart has {chart.shape}; "
-                         "give a boolean mask of the chart's shape or a cost threshold")
+        raise ValueError(
+            f"KeepAway.ice mask has shape {arr.shape} but the chart has {chart.shape}; "
+            "give a boolean mask of the chart's shape or a cost threshold"
+        )
     if arr.dtype != np.bool_:
-        raise TypeError(f"KeepAway.ice mask must be boolean (e.g. ds.sea_ice_concentration >= 9), "
-                        f"got dtype {arr.dtype}")
+        raise TypeError(
+            f"KeepAway.ice mask must be boolean (e.g. ds.sea_ice_concentration >= 9), got dtype {arr.dtype}"
+        )
     return arr
 
 
@@ -210,18 +227,27 @@ def constraint_factor(chart: Chart, keep_away=(), zones=(), *, chart_crs=None) -
         if not isinstance(z, Zone):
             raise TypeError(f"zones takes Zone objects, got {type(z).__name__}")
         if z.active is not None:
-            raise ValueError(f"zone {z.name!r} has a time window, which only a time route can "
-                             "follow: pass it to seaway.weather.route_time(zones=...), or drop "
-                             "active= for a static chart")
+            raise ValueError(
+                f"zone {z.name!r} has a time window, which only a time route can "
+                "follow: pass it to seaway.weather.route_time(zones=...), or drop "
+                "active= for a static chart"
+            )
         factor[rasterise_zone(z, chart, chart_crs)] *= z.penalty
     return factor
 
 
-def constrain(cost: npt.ArrayLike | xr.DataArray, *, keep_away: KeepAway | Collection[KeepAway] = (),
-              zones: Zone | Collection[Zone] = (), lat: npt.ArrayLike | None = None,
-              lon: npt.ArrayLike | None = None, dx: float = 1.0, dy: float = 1.0,
-              land: npt.ArrayLike | xr.DataArray | None = None,
-              chart_crs: object = None) -> npt.NDArray[np.float64] | xr.DataArray:
+def constrain(
+    cost: npt.ArrayLike | xr.DataArray,
+    *,
+    keep_away: KeepAway | Collection[KeepAway] = (),
+    zones: Zone | Collection[Zone] = (),
+    lat: npt.ArrayLike | None = None,
+    lon: npt.ArrayLike | None = None,
+    dx: float = 1.0,
+    dy: float = 1.0,
+    land: npt.ArrayLike | xr.DataArray | None = None,
+    chart_crs: object = None,
+) -> npt.NDArray[np.float64] | xr.DataArray:
     """The cost raster with keep-away buffers and zones applied: cost x factor, inf where
     excluded. A DataArray in gives a DataArray out (same coordinates); a numpy array gives a
     float64 array. Arguments as in seaway.route(); `chart_crs` reprojects zones with a `crs`

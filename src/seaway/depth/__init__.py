@@ -5,14 +5,23 @@ way between two points."""
 
 from .bathymetry import Bathymetry, open_bathymetry
 from .draft import (
-                    DEFAULT_UKC_SHARE,
-                    apply_draft,
-                    check_draft,
-                    deepest_way,
-                    depth_on_grid,
-                    least_depth,
-                    too_shallow,
+    DEFAULT_UKC_SHARE,
+    apply_draft,
+    check_draft,
+    deepest_way,
+    depth_on_grid,
+    least_depth,
+    too_shallow,
 )
 
-__all__ = ["Bathymetry", "open_bathymetry", "DEFAULT_UKC_SHARE", "apply_draft", "check_draft",
-           "deepest_way", "depth_on_grid", "least_depth", "too_shallow"]
+__all__ = [
+    "Bathymetry",
+    "open_bathymetry",
+    "DEFAULT_UKC_SHARE",
+    "apply_draft",
+    "check_draft",
+    "deepest_way",
+    "depth_on_grid",
+    "least_depth",
+    "too_shallow",
+]

@@ -20,18 +20,51 @@ from ..base.files import open_netcdf, read_geotiff
 from ..chart.cf import coord_role
 
 #: CF standard names of depth below the surface (positive down) and of elevation (positive up).
-DEPTH_NAMES = ("sea_floor_depth_below_sea_surface", "sea_floor_depth_below_geoid",
-               "sea_floor_depth_below_mean_sea_level", "sea_floor_depth_below_reference_ellipsoid",
-               "sea_floor_depth", "depth")
-ELEVATION_NAMES = ("height_above_mean_sea_level", "height_above_geoid", "altitude",
-                   "surface_altitude", "height_above_reference_ellipsoid", "bedrock_altitude",
-                   "height", "sea_floor_height_above_geoid",
-                   "sea_floor_height_above_mean_sea_level")
-_ELEVATION_WORDS = ("elevation", "elev", "z", "topo", "topography", "altitude", "height", "rose",
-                    "band1", "relief")
+DEPTH_NAMES = (
+    "sea_floor_depth_below_sea_surface",
+    "sea_floor_depth_below_geoid",
+    "sea_floor_depth_below_mean_sea_level",
+    "sea_floor_depth_below_reference_ellipsoid",
+    "sea_floor_depth",
+    "depth",
+)
+ELEVATION_NAMES = (
+    "height_above_mean_sea_level",
+    "height_above_geoid",
+    "altitude",
+    "surface_altitude",
+    "height_above_reference_ellipsoid",
+    "bedrock_altitude",
+    "height",
+    "sea_floor_height_above_geoid",
+    "sea_floor_height_above_mean_sea_level",
+)
+_ELEVATION_WORDS = (
+    "elevation",
+    "elev",
+    "z",
+    "topo",
+    "topography",
+    "altitude",
+    "height",
+    "rose",
+    "band1",
+    "relief",
+)
 _DEPTH_WORDS = ("depth", "bathymetry", "bathy", "h", "deptho", "sounding", "soundings")
-_UNITS = {"m": 1.0, "meter": 1.0, "meters": 1.0, "metre": 1.0, "metres": 1.0, "1 m": 1.0,
-          "ft": 0.3048, "feet": 0.3048, "foot": 0.3048, "fathom": 1.8288, "fathoms": 1.8288}
+_UNITS = {
+    "m": 1.0,
+    "meter": 1.0,
+    "meters": 1.0,
+    "metre": 1.0,
+    "metres": 1.0,
+    "1 m": 1.0,
+    "ft": 0.3048,
+    "feet": 0.3048,
+    "foot": 0.3048,
+    "fathom": 1.8288,
+    "fathoms": 1.8288,
+}
 
 
 @dataclass
@@ -52,8 +85,7 @@ class Bathymetry:
         """The whole raster as depth in m, positive down (loads it)."""
         out = self.raw.astype(np.float64) * self.factor
         out.name = "depth"
-        out.attrs = {"long_name": "water depth", "units": "m", "positive": "down",
-                     "source": self.path}
+        out.attrs = {"long_name": "water depth", "units": "m", "positive": "down", "source": self.path}
         return out
 
 
@@ -72,16 +104,19 @@ def _pick_variable(path, ds, variable):
         return named[0]
     if len(two_d) == 1:
         return two_d[0]
-    raise ValueError(f"{path}: which variable is the bathymetry? name it (variable=, or "
-                     f"--depth-variable), one of {sorted(two_d)}")
+    raise ValueError(
+        f"{path}: which variable is the bathymetry? name it (variable=, or "
+        f"--depth-variable), one of {sorted(two_d)}"
+    )
 
 
 def _sign(path, name, attrs, positive):
     """(+1 for depth positive down, -1 for elevation positive up, how it was decided, guessed)."""
     if positive is not None:
         if positive not in ("up", "down"):
-            raise ValueError(f"positive must be 'up' (elevation, ETOPO/GEBCO) or 'down' (depth), "
-                             f"got {positive!r}")
+            raise ValueError(
+                f"positive must be 'up' (elevation, ETOPO/GEBCO) or 'down' (depth), got {positive!r}"
+            )
         return (1 if positive == "down" else -1), f"positive {positive} as given", False
     pos = str(attrs.get("positive", "")).strip().lower()
     if pos in ("up", "down"):
@@ -92,12 +127,23 @@ def _sign(path, name, attrs, positive):
     if std in ELEVATION_NAMES:
         return -1, f"CF standard_name {std!r}", False
     if name.lower() in _DEPTH_WORDS:
-        return 1, f"ASSUMED depth positive down from the variable's name {name!r} (no CF positive " \
-                  "or standard_name attribute)", True
-    why = (f"from the variable's name {name!r}" if name.lower() in _ELEVATION_WORDS
-           else f"for {name!r}, whose name says neither")
-    return -1, f"ASSUMED elevation positive up (the ETOPO/GEBCO convention) {why} (no CF " \
-               "positive or standard_name attribute)", True
+        return (
+            1,
+            f"ASSUMED depth positive down from the variable's name {name!r} (no CF positive "
+            "or standard_name attribute)",
+            True,
+        )
+    why = (
+        f"from the variable's name {name!r}"
+        if name.lower() in _ELEVATION_WORDS
+        else f"for {name!r}, whose name says neither"
+    )
+    return (
+        -1,
+        f"ASSUMED elevation positive up (the ETOPO/GEBCO convention) {why} (no CF "
+        "positive or standard_name attribute)",
+        True,
+    )
 
 
 def _scale(path, name, attrs, notes):
@@ -106,9 +152,11 @@ def _scale(path, name, attrs, notes):
         notes.append(f"{path}: {name} states no units: ASSUMED metres")
         return 1.0
     if units not in _UNITS:
-        raise ValueError(f"{path}: {name} is in {attrs.get('units')!r}; depths must be in metres "
-                         "(m), feet (ft) or fathoms: convert the file, or set its units attribute "
-                         "if it is wrong")
+        raise ValueError(
+            f"{path}: {name} is in {attrs.get('units')!r}; depths must be in metres "
+            "(m), feet (ft) or fathoms: convert the file, or set its units attribute "
+            "if it is wrong"
+        )
     return _UNITS[units]
 
 
@@ -120,9 +168,11 @@ def _latlon_dims(path, da):
             if role in ("lat", "lon"):
                 roles[role] = dim
     if set(roles) != {"lat", "lon"}:
-        raise ValueError(f"{path}: the bathymetry needs 1-D lat and lon coordinates (degrees); "
-                         f"its dimensions are {da.dims}. Regrid it to lat/lon first (e.g. gdalwarp "
-                         "-t_srs EPSG:4326)")
+        raise ValueError(
+            f"{path}: the bathymetry needs 1-D lat and lon coordinates (degrees); "
+            f"its dimensions are {da.dims}. Regrid it to lat/lon first (e.g. gdalwarp "
+            "-t_srs EPSG:4326)"
+        )
     return roles["lat"], roles["lon"]
 
 
@@ -149,22 +199,28 @@ def open_bathymetry(path, *, variable=None, positive=None) -> Bathymetry:
     sign, how, guessed = _sign(path, name, da.attrs, positive)
     scale = _scale(path, name, da.attrs, notes)
     if guessed:
-        notes.append(f"{path}: {name} read as {'depth' if sign > 0 else 'elevation'}: {how}; "
-                     f"pass positive={'up' if sign > 0 else 'down'!r} (--depth-positive) if it "
-                     "holds the opposite")
+        notes.append(
+            f"{path}: {name} read as {'depth' if sign > 0 else 'elevation'}: {how}; "
+            f"pass positive={'up' if sign > 0 else 'down'!r} (--depth-positive) if it "
+            "holds the opposite"
+        )
     raw = da.transpose(lat, lon).rename({lat: "lat", lon: "lon"})
     for dim in ("lat", "lon"):
         values = raw[dim].values
         if values.size > 1 and not np.all(np.diff(values) > 0):
             raw = raw.sortby(dim)
-    convention = (f"{name} in {da.attrs.get('units', 'm (assumed)')}, "
-                  f"{'depth positive down' if sign > 0 else 'elevation positive up'} ({how})")
+    convention = (
+        f"{name} in {da.attrs.get('units', 'm (assumed)')}, "
+        f"{'depth positive down' if sign > 0 else 'elevation positive up'} ({how})"
+    )
     return Bathymetry(raw, float(sign * scale), path, convention, notes)
 
 
 def _geotiff(path):
     da = read_geotiff(path)
     if "crs" in da.attrs:
-        raise ValueError(f"{path}: the bathymetry is in {da.attrs['crs']}, not lat/lon; warp it "
-                         f"first: gdalwarp -t_srs EPSG:4326 {path} out.tif")
+        raise ValueError(
+            f"{path}: the bathymetry is in {da.attrs['crs']}, not lat/lon; warp it "
+            f"first: gdalwarp -t_srs EPSG:4326 {path} out.tif"
+        )
     return da

@@ -110,15 +110,20 @@ def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None, crs=None):
     half_la = (dla or cell_la) / 2
     d = d.sel(lat=slice(la[0] - half_la - 2 * cell_la, la[-1] + half_la + 2 * cell_la))
     if d.sizes["lat"] < 2 or d.sizes["lon"] < 2:
-        raise ValueError(f"the bathymetry ({source}, lat {float(depth.lat[0]):g}..{float(depth.lat[-1]):g}) does not cover "
-                         f"the chart (lat {la[0]:g}..{la[-1]:g}, lon {lo[0]:g}..{lo[-1]:g})")
+        raise ValueError(
+            f"the bathymetry ({source}, lat {float(depth.lat[0]):g}..{float(depth.lat[-1]):g}) does not cover "
+            f"the chart (lat {la[0]:g}..{la[-1]:g}, lon {lo[0]:g}..{lo[-1]:g})"
+        )
     values = np.asarray(d.values, dtype=np.float64) * factor  # reads only this window
     if not np.isfinite(values).any():
-        raise ValueError(f"the bathymetry ({source}) has no data over the chart (lat {la[0]:g}.."
-                         f"{la[-1]:g}, lon {lo[0]:g}..{lo[-1]:g}): all missing")
+        raise ValueError(
+            f"the bathymetry ({source}) has no data over the chart (lat {la[0]:g}.."
+            f"{la[-1]:g}, lon {lo[0]:g}..{lo[-1]:g}): all missing"
+        )
     rule = []
-    for axis, (name, centres, step, cell) in enumerate((("lat", la, dla, cell_la),
-                                                         ("lon", lo, dlo, cell_lo))):
+    for axis, (name, centres, step, cell) in enumerate(
+        (("lat", la, dla, cell_la), ("lon", lo, dlo, cell_lo))
+    ):
         nodes = d[name].values
         if step is not None and step > cell * (1 + 1e-9):
             values = _binned_min(values, nodes, centres, step, axis)
@@ -127,8 +132,9 @@ def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None, crs=None):
             try:
                 import scipy  # noqa: F401  (DataArray.interp)
             except ImportError:
-                raise ImportError('interpolating the bathymetry needs scipy: pip install '
-                                  '"seaway[depth]"') from None
+                raise ImportError(
+                    'interpolating the bathymetry needs scipy: pip install "seaway[depth]"'
+                ) from None
             da = xr.DataArray(values, dims=("a", "b"), coords={("a", "b")[axis]: nodes})
             values = da.interp({("a", "b")[axis]: centres}, method="linear").values
             rule.append(f"{name}: linear interpolation")
@@ -136,26 +142,38 @@ def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None, crs=None):
     dims = ("lat", "lon")
     out = xr.DataArray(values, dims=dims, coords={"lat": lat, "lon": lon}, name="depth")
     if like is not None and hasattr(like, "coords"):
-        out = out.assign_coords(lat=like.coords[_dim(like, "lat")].values,
-                                lon=like.coords[_dim(like, "lon")].values)
+        out = out.assign_coords(
+            lat=like.coords[_dim(like, "lat")].values, lon=like.coords[_dim(like, "lon")].values
+        )
         out = out.rename({"lat": _dim(like, "lat"), "lon": _dim(like, "lon")})
-    out.attrs = {"long_name": "water depth (shallowest in the pixel)", "units": "m",
-                 "positive": "down", "resampling": "; ".join(rule)}
+    out.attrs = {
+        "long_name": "water depth (shallowest in the pixel)",
+        "units": "m",
+        "positive": "down",
+        "resampling": "; ".join(rule),
+    }
     return out
 
 
 def _on_projected(depth, factor, like, coords, crs):
 
     if not crs:
-        raise ValueError("the chart has projected y/x coordinates but no CRS: pass crs= (e.g. "
-                         "'EPSG:3413'), or set the chart's attribute 'crs'")
+        raise ValueError(
+            "the chart has projected y/x coordinates but no CRS: pass crs= (e.g. "
+            "'EPSG:3413'), or set the chart's attribute 'crs'"
+        )
     ydim, xdim = like.dims
     units = like.coords[ydim].attrs.get("units", "km")
     values, rule = projected_depth(depth, factor, coords["y"], coords["x"], crs, units)
     out = like.copy(data=values)
     out.name = "depth"
-    out.attrs = {"long_name": "water depth (shallowest in the pixel)", "units": "m",
-                 "positive": "down", "resampling": rule, "crs": str(crs)}
+    out.attrs = {
+        "long_name": "water depth (shallowest in the pixel)",
+        "units": "m",
+        "positive": "down",
+        "resampling": rule,
+        "crs": str(crs),
+    }
     return out
 
 
@@ -192,8 +210,10 @@ def apply_draft(cost, depth, draft, ukc=None):
     z = np.asarray(getattr(depth, "values", depth), dtype=float)
     values = np.asarray(getattr(cost, "values", cost), dtype=float)
     if z.shape != values.shape:
-        raise ValueError(f"depth has shape {z.shape} but the cost {values.shape}; resample it onto "
-                         "the chart with seaway.depth.depth_on_grid")
+        raise ValueError(
+            f"depth has shape {z.shape} but the cost {values.shape}; resample it onto "
+            "the chart with seaway.depth.depth_on_grid"
+        )
     with np.errstate(invalid="ignore"):
         shallow = ~(z >= draft + ukc)
     out = np.where(shallow, np.inf, values)

@@ -7,8 +7,16 @@ from __future__ import annotations
 
 import numpy as np
 
-UNITS = {"km": 1000.0, "kilometre": 1000.0, "kilometer": 1000.0, "m": 1.0, "metre": 1.0,
-         "meter": 1.0, "meters": 1.0, "metres": 1.0}
+UNITS = {
+    "km": 1000.0,
+    "kilometre": 1000.0,
+    "kilometer": 1000.0,
+    "m": 1.0,
+    "metre": 1.0,
+    "meter": 1.0,
+    "meters": 1.0,
+    "metres": 1.0,
+}
 
 
 def projected_depth(raw, factor, y, x, crs, units="km"):
@@ -29,15 +37,19 @@ def projected_depth(raw, factor, y, x, crs, units="km"):
     lon_c, lat_c = to_ll.transform(xx, yy)
     cell = float(np.median(np.diff(raw.lat.values)))
     pole_x, pole_y = to_xy.transform(0.0, 90.0)
-    pole = (min(x[0], x[-1]) - abs(dx) / 2 <= pole_x / scale <= max(x[0], x[-1]) + abs(dx) / 2
-            and min(y[0], y[-1]) - abs(dy) / 2 <= pole_y / scale <= max(y[0], y[-1]) + abs(dy) / 2)
+    pole = (
+        min(x[0], x[-1]) - abs(dx) / 2 <= pole_x / scale <= max(x[0], x[-1]) + abs(dx) / 2
+        and min(y[0], y[-1]) - abs(dy) / 2 <= pole_y / scale <= max(y[0], y[-1]) + abs(dy) / 2
+    )
     pixel_deg = max(abs(dx), abs(dy)) * scale / 111_195.0
     south = np.nanmin(lat_c) - pixel_deg - 2 * cell
     north = 90.0 if pole else np.nanmax(lat_c) + pixel_deg + 2 * cell
     window = raw.sel(lat=slice(south, north))
     if window.sizes["lat"] < 2:
-        raise ValueError(f"the bathymetry (lat {float(raw.lat[0]):g}..{float(raw.lat[-1]):g}) does "
-                         f"not cover the chart (lat {np.nanmin(lat_c):.3g}..{np.nanmax(lat_c):.3g})")
+        raise ValueError(
+            f"the bathymetry (lat {float(raw.lat[0]):g}..{float(raw.lat[-1]):g}) does "
+            f"not cover the chart (lat {np.nanmin(lat_c):.3g}..{np.nanmax(lat_c):.3g})"
+        )
     values = np.asarray(window.values, dtype=np.float64) * factor
     lon2, lat2 = np.meshgrid(window.lon.values, window.lat.values)
     nx, ny = to_xy.transform(lon2, lat2)
@@ -55,8 +67,14 @@ def projected_depth(raw, factor, y, x, crs, units="km"):
         span = lon[-1] - lon[0] + float(np.median(np.diff(lon)))
         w = window
         if span >= 360.0 - 1e-6:  # periodic: pad one column each side
-            w = xr.concat([window.isel(lon=[-1]).assign_coords(lon=[lon[-1] - 360.0]), window,
-                           window.isel(lon=[0]).assign_coords(lon=[lon[0] + 360.0])], dim="lon")
+            w = xr.concat(
+                [
+                    window.isel(lon=[-1]).assign_coords(lon=[lon[-1] - 360.0]),
+                    window,
+                    window.isel(lon=[0]).assign_coords(lon=[lon[0] + 360.0]),
+                ],
+                dim="lon",
+            )
         qlon = (lon_c[empty] - lon[0]) % 360.0 + lon[0]
         pts = w.interp(lat=xr.DataArray(lat_c[empty], dims="p"), lon=xr.DataArray(qlon, dims="p"))
         out[empty] = np.asarray(pts.values, dtype=np.float64) * factor

@@ -8,5 +8,14 @@ from .prepared import PreparedChart
 from .reach import explain_no_route
 from .snap import SnapError, SnappedEnds, snap_ends
 
-__all__ = ["PreparedChart", "prepare", "route", "cost_field", "METHODS", "snap_ends",
-           "SnappedEnds", "SnapError", "explain_no_route"]
+__all__ = [
+    "PreparedChart",
+    "prepare",
+    "route",
+    "cost_field",
+    "METHODS",
+    "snap_ends",
+    "SnappedEnds",
+    "SnapError",
+    "explain_no_route",
+]

@@ -19,27 +19,60 @@ if TYPE_CHECKING:
     from .constrained import Point, TurnPenalty, Via
 
 
-def prepare(cost: npt.ArrayLike | xr.DataArray, *, lat: npt.ArrayLike | None = None,
-            lon: npt.ArrayLike | None = None, dx: float = 1.0, dy: float = 1.0,
-            land: npt.ArrayLike | xr.DataArray | None = None, neighbourhood: int = 5,
-            directions: str = "full", edge_cost: str = "max", landmarks: int = 0,
-            keep_away: KeepAway | Collection[KeepAway] = (),
-            zones: Zone | Collection[Zone] = ()) -> PreparedChart:
+def prepare(
+    cost: npt.ArrayLike | xr.DataArray,
+    *,
+    lat: npt.ArrayLike | None = None,
+    lon: npt.ArrayLike | None = None,
+    dx: float = 1.0,
+    dy: float = 1.0,
+    land: npt.ArrayLike | xr.DataArray | None = None,
+    neighbourhood: int = 5,
+    directions: str = "full",
+    edge_cost: str = "max",
+    landmarks: int = 0,
+    keep_away: KeepAway | Collection[KeepAway] = (),
+    zones: Zone | Collection[Zone] = (),
+) -> PreparedChart:
     """Validate and prepare a chart once for many routes; arguments as in route().
     landmarks=N (optional) also tabulates N landmarks for edge_cost (4 N bytes per pixel), so
     that later exact queries run A* with the landmark bound (PreparedChart.prepare_landmarks)."""
-    return PreparedChart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land,
-                         neighbourhood=neighbourhood, directions=directions, edge_cost=edge_cost,
-                         landmarks=landmarks, keep_away=keep_away, zones=zones)
+    return PreparedChart(
+        cost,
+        lat=lat,
+        lon=lon,
+        dx=dx,
+        dy=dy,
+        land=land,
+        neighbourhood=neighbourhood,
+        directions=directions,
+        edge_cost=edge_cost,
+        landmarks=landmarks,
+        keep_away=keep_away,
+        zones=zones,
+    )
 
 
-def route(cost: npt.ArrayLike | xr.DataArray, start: Point, end: Point, *,
-          lat: npt.ArrayLike | None = None, lon: npt.ArrayLike | None = None, dx: float = 1.0,
-          dy: float = 1.0, land: npt.ArrayLike | xr.DataArray | None = None,
-          neighbourhood: int = 5, directions: str = "full", edge_cost: str = "max",
-          method: str = "auto", weight: float | None = None, via: Via | None = (),
-          turn_penalty: TurnPenalty | None = None, keep_away: KeepAway | Collection[KeepAway] = (),
-          zones: Zone | Collection[Zone] = ()) -> Route:
+def route(
+    cost: npt.ArrayLike | xr.DataArray,
+    start: Point,
+    end: Point,
+    *,
+    lat: npt.ArrayLike | None = None,
+    lon: npt.ArrayLike | None = None,
+    dx: float = 1.0,
+    dy: float = 1.0,
+    land: npt.ArrayLike | xr.DataArray | None = None,
+    neighbourhood: int = 5,
+    directions: str = "full",
+    edge_cost: str = "max",
+    method: str = "auto",
+    weight: float | None = None,
+    via: Via | None = (),
+    turn_penalty: TurnPenalty | None = None,
+    keep_away: KeepAway | Collection[KeepAway] = (),
+    zones: Zone | Collection[Zone] = (),
+) -> Route:
     """The least-cost route from `start` to `end` over the raster `cost`.
 
     cost: 2-D numpy array or xarray.DataArray of cost per unit length (>= 0; inf or NaN is
@@ -69,22 +102,50 @@ def route(cost: npt.ArrayLike | xr.DataArray, start: Point, end: Point, *,
     For many routes on one chart, prepare it once with seaway.prepare().
     """
     methods.heuristic_weight(method, weight)  # reject a bad method before the chart is prepared
-    return prepare(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, neighbourhood=neighbourhood,
-                   directions=directions, edge_cost=edge_cost, keep_away=keep_away,
-                   zones=zones).route(start, end, method=method, weight=weight, via=via,
-                                      turn_penalty=turn_penalty)
+    return prepare(
+        cost,
+        lat=lat,
+        lon=lon,
+        dx=dx,
+        dy=dy,
+        land=land,
+        neighbourhood=neighbourhood,
+        directions=directions,
+        edge_cost=edge_cost,
+        keep_away=keep_away,
+        zones=zones,
+    ).route(start, end, method=method, weight=weight, via=via, turn_penalty=turn_penalty)
 
 
-def cost_field(cost: npt.ArrayLike | xr.DataArray, start: Point, *,
-               lat: npt.ArrayLike | None = None, lon: npt.ArrayLike | None = None,
-               dx: float = 1.0, dy: float = 1.0, land: npt.ArrayLike | xr.DataArray | None = None,
-               neighbourhood: int = 5, directions: str = "full", edge_cost: str = "max",
-               keep_away: KeepAway | Collection[KeepAway] = (),
-               zones: Zone | Collection[Zone] = ()) -> npt.NDArray[np.float64] | xr.DataArray:
+def cost_field(
+    cost: npt.ArrayLike | xr.DataArray,
+    start: Point,
+    *,
+    lat: npt.ArrayLike | None = None,
+    lon: npt.ArrayLike | None = None,
+    dx: float = 1.0,
+    dy: float = 1.0,
+    land: npt.ArrayLike | xr.DataArray | None = None,
+    neighbourhood: int = 5,
+    directions: str = "full",
+    edge_cost: str = "max",
+    keep_away: KeepAway | Collection[KeepAway] = (),
+    zones: Zone | Collection[Zone] = (),
+) -> npt.NDArray[np.float64] | xr.DataArray:
     """The accumulated least cost from `start` to every pixel (inf where unreachable).
 
     Takes the same arguments as route() (no via points or turn penalty: a field has no single
     path). A DataArray in gives a DataArray out, on the same coordinates."""
-    return prepare(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, neighbourhood=neighbourhood,
-                   directions=directions, edge_cost=edge_cost, keep_away=keep_away,
-                   zones=zones).cost_field(start)
+    return prepare(
+        cost,
+        lat=lat,
+        lon=lon,
+        dx=dx,
+        dy=dy,
+        land=land,
+        neighbourhood=neighbourhood,
+        directions=directions,
+        edge_cost=edge_cost,
+        keep_away=keep_away,
+        zones=zones,
+    ).cost_field(start)

@@ -51,8 +51,10 @@ def turn_table(turn_penalty: TurnPenalty | None) -> Turns | None:
     try:
         pairs = sorted((float(a), float(c)) for a, c in items)
     except (TypeError, ValueError):
-        raise TypeError("turn_penalty must be a cost per degree or a table {angle_deg: cost} "
-                        f"(e.g. {{0: 0, 45: 2, 90: 10, 180: 40}}), got {turn_penalty!r}") from None
+        raise TypeError(
+            "turn_penalty must be a cost per degree or a table {angle_deg: cost} "
+            f"(e.g. {{0: 0, 45: 2, 90: 10, 180: 40}}), got {turn_penalty!r}"
+        ) from None
     if not pairs:
         raise ValueError("turn_penalty table is empty; give e.g. {0: 0, 90: 10, 180: 40}")
     angles, costs = [a for a, _ in pairs], [c for _, c in pairs]
@@ -98,11 +100,20 @@ def _check_turn_model(model: CostModel) -> None:
         raise ValueError(
             f"turn_penalty works with the static edge costs {EDGE_COST_NAMES}, not the {model.name!r} "
             "model (a time, fuel or danger cost would need its own penalty units and, for time, a "
-            "clock that the penalty would shift); route without turn_penalty, or on a static cost")
+            "clock that the penalty would shift); route without turn_penalty, or on a static cost"
+        )
 
 
-def search_leg(prepared: PreparedChart, s: tuple[int, int], e: tuple[int, int], weight: float,
-               model: CostModel, turns: Turns | None, incoming: int, method: str = "astar") -> Search:
+def search_leg(
+    prepared: PreparedChart,
+    s: tuple[int, int],
+    e: tuple[int, int],
+    weight: float,
+    model: CostModel,
+    turns: Turns | None,
+    incoming: int,
+    method: str = "astar",
+) -> Search:
     """The search of one leg between located pixels; `method` as resolved by
     seaway.engine.methods. The turn search is Dijkstra for "dijkstra" and A* (weighted if asked)
     for every other method: it has no bidirectional or landmark form."""
@@ -111,13 +122,33 @@ def search_leg(prepared: PreparedChart, s: tuple[int, int], e: tuple[int, int], 
     weight = 0.0 if method == "dijkstra" else (weight if method == "astar" else 1.0)
     engine = cast("_core.RasterRule", model.engine(prepared))  # a turn_penalty model (checked)
     angles, costs = turns
-    return Search.from_core(interruptible(lambda cancel: _core.route_turns(
-        prepared.router, engine, prepared.flat(s), prepared.flat(e), weight, angles, costs,
-        incoming, cancel)))
+    return Search.from_core(
+        interruptible(
+            lambda cancel: _core.route_turns(
+                prepared.router,
+                engine,
+                prepared.flat(s),
+                prepared.flat(e),
+                weight,
+                angles,
+                costs,
+                incoming,
+                cancel,
+            )
+        )
+    )
 
 
-def route_constrained(prepared: PreparedChart, start: Point, end: Point, model: CostModel, method: str,
-                      weight: float, via: Via | None, turn_penalty: TurnPenalty | None) -> Route:
+def route_constrained(
+    prepared: PreparedChart,
+    start: Point,
+    end: Point,
+    model: CostModel,
+    method: str,
+    weight: float,
+    via: Via | None,
+    turn_penalty: TurnPenalty | None,
+) -> Route:
     """PreparedChart.route with via points and/or a turn penalty: one search per leg, each
     optimal between consecutive points; with a turn penalty, a leg starts with the previous
     leg's last step, so the course change at a via point is charged. A time model's next leg
@@ -130,9 +161,11 @@ def route_constrained(prepared: PreparedChart, start: Point, end: Point, model: 
     names = ["start"] + [f"via point {i + 1}" for i in range(len(points) - 2)] + ["end"]
     located = [locate(chart, p, n) for p, n in zip(points, names)]
     if len(located) > 2 and model.time_dependent and not model.chainable:
-        raise ValueError(f"via points on a {model.name!r} route need each leg to depart when the "
-                         "last one arrives, which this model cannot do yet; route the legs one by "
-                         "one with their departures")
+        raise ValueError(
+            f"via points on a {model.name!r} route need each leg to depart when the "
+            "last one arrives, which this model cannot do yet; route the legs one by "
+            "one with their departures"
+        )
     pixels, steps, per_step = np.zeros((0, 2), np.int64), [], StepValues()
     figures = SearchStats()
     leg_model, elapsed = model, 0.0
@@ -150,12 +183,20 @@ def route_constrained(prepared: PreparedChart, start: Point, end: Point, model: 
         steps.append(np.diff(found.cumulative))
         per_step = per_step.then(found.per_step)
         figures = found.stats if i == 0 else figures.plus(found.stats)
-    asked = Constraints(via_pixels=tuple((int(p[0]), int(p[1])) for p in located[1:-1]),
-                        turn_penalty=None if turns is None else dict(zip(*turns)))
+    asked = Constraints(
+        via_pixels=tuple((int(p[0]), int(p[1])) for p in located[1:-1]),
+        turn_penalty=None if turns is None else dict(zip(*turns)),
+    )
     stats = RouteStats(search=figures, constraints=asked)
     step_costs = np.concatenate(steps)
-    route = Route(chart=chart, cost=float(step_costs.sum()), pixels=pixels, method=method,
-                  neighbourhood=prepared.neighbourhood,
-                  model=model if turns is None else TurnPenalised(model.name), stats=stats,
-                  step_costs=step_costs)
+    route = Route(
+        chart=chart,
+        cost=float(step_costs.sum()),
+        pixels=pixels,
+        method=method,
+        neighbourhood=prepared.neighbourhood,
+        model=model if turns is None else TurnPenalised(model.name),
+        stats=stats,
+        step_costs=step_costs,
+    )
     return model.finish(route, per_step)

@@ -41,8 +41,14 @@ SAMPLE = 4096
 #: Wall nanoseconds per settled pixel with two free cores: 5x5 stencil, the benchmark chart's
 #: corner voyage on a prepared chart (benchmarks/README.md; the two-thread searches' pixels
 #: are settled by both threads, so their time per pixel is half their CPU time's).
-PIXEL_NS = {"dijkstra": 133.0, "astar": 163.0, "bidirectional": 75.0, "bidirectional A*": 100.0,
-            "landmarks": 235.0, "landmarks one thread": 272.0}
+PIXEL_NS = {
+    "dijkstra": 133.0,
+    "astar": 163.0,
+    "bidirectional": 75.0,
+    "bidirectional A*": 100.0,
+    "landmarks": 235.0,
+    "landmarks one thread": 272.0,
+}
 #: Start-up seconds: the second thread and the first rounds of the two-thread searches.
 START_S = {"bidirectional": 3e-4, "bidirectional A*": 3e-4, "landmarks": 3e-4}
 #: The two-thread searches settle at least two rounds of 4096 pixels per side.
@@ -62,7 +68,7 @@ class Sample:
     rows: npt.NDArray[np.int64]
     cols: npt.NDArray[np.int64]
     table: Floats  # (landmarks, SAMPLE): one landmark's costs contiguous
-    reached: int       # pixels the landmarks reach (the population sampled)
+    reached: int  # pixels the landmarks reach (the population sampled)
 
 
 def make_sample(table: npt.NDArray[np.float32], cols: int) -> Sample:
@@ -71,8 +77,13 @@ def make_sample(table: npt.NDArray[np.float32], cols: int) -> Sample:
     reached = np.flatnonzero(np.isfinite(table[:, 0]))
     rng = np.random.default_rng(0)
     flat = np.sort(rng.choice(reached, min(SAMPLE, reached.size), replace=False))
-    return Sample(flat, flat // cols, flat % cols, np.ascontiguousarray(np.asarray(table[flat], float).T),
-                  int(reached.size))
+    return Sample(
+        flat,
+        flat // cols,
+        flat % cols,
+        np.ascontiguousarray(np.asarray(table[flat], float).T),
+        int(reached.size),
+    )
 
 
 def _bound(table: Floats, at: Floats) -> Floats:
@@ -83,8 +94,9 @@ def _bound(table: Floats, at: Floats) -> Floats:
     return out
 
 
-def _distance(prepared: PreparedChart, rows: npt.NDArray[np.int64], cols: npt.NDArray[np.int64],
-              rc: tuple[int, int]) -> Floats:
+def _distance(
+    prepared: PreparedChart, rows: npt.NDArray[np.int64], cols: npt.NDArray[np.int64], rc: tuple[int, int]
+) -> Floats:
     """Straight-line (planar) or great-circle (km) distance from pixels to pixel rc."""
     g = prepared.chart.grid
     if not g.geographic:
@@ -97,8 +109,15 @@ def _distance(prepared: PreparedChart, rows: npt.NDArray[np.int64], cols: npt.ND
     return km
 
 
-def settled(prepared: PreparedChart, model: CostModel, sample: Sample, table: npt.NDArray[np.float32],
-            s: tuple[int, int], e: tuple[int, int], astar_potential: bool) -> dict[str, float]:
+def settled(
+    prepared: PreparedChart,
+    model: CostModel,
+    sample: Sample,
+    table: npt.NDArray[np.float32],
+    s: tuple[int, int],
+    e: tuple[int, int],
+    astar_potential: bool,
+) -> dict[str, float]:
     """Predicted pixels each exact search settles for the query s -> e (pixels (row, col))."""
     cols = prepared.chart.shape[1]
     ts, te = (np.asarray(table[p[0] * cols + p[1]], float) for p in (s, e))
@@ -114,17 +133,25 @@ def settled(prepared: PreparedChart, model: CostModel, sample: Sample, table: np
     ellipse = n * np.count_nonzero(a + b < (1 + LANDMARK_SLACK) * c) + LANDMARK_FLOOR
     pixels: dict[str, float] = {"dijkstra": ball, "astar": n * np.count_nonzero(a + h < c)}
     if astar_potential:
-        pixels["bidirectional A*"] = n * (np.count_nonzero(a + (h - g) / 2 < c / 2)
-                                          + np.count_nonzero(b + (g - h) / 2 < c / 2))
+        pixels["bidirectional A*"] = n * (
+            np.count_nonzero(a + (h - g) / 2 < c / 2) + np.count_nonzero(b + (g - h) / 2 < c / 2)
+        )
     else:
         pixels["bidirectional"] = n * (np.count_nonzero(a < c / 2) + np.count_nonzero(b < c / 2))
     for m, (k, x, y) in LANDMARK_FIT.items():
-        pixels[m] = math.exp(k) * ellipse ** x * (ball + LANDMARK_FLOOR) ** y
+        pixels[m] = math.exp(k) * ellipse**x * (ball + LANDMARK_FLOOR) ** y
     return {m: float(max(p, ROUND_PIXELS if m in START_S else 1.0)) for m, p in pixels.items()}
 
 
-def estimate(prepared: PreparedChart, model: CostModel, sample: Sample, table: npt.NDArray[np.float32],
-             s: tuple[int, int], e: tuple[int, int], astar_potential: bool) -> dict[str, float]:
+def estimate(
+    prepared: PreparedChart,
+    model: CostModel,
+    sample: Sample,
+    table: npt.NDArray[np.float32],
+    s: tuple[int, int],
+    e: tuple[int, int],
+    astar_potential: bool,
+) -> dict[str, float]:
     """Predicted seconds of each exact method for the query s -> e (pixels (row, col))."""
     pixels = settled(prepared, model, sample, table, s, e, astar_potential)
     return {m: START_S.get(m, 0.0) + p * PIXEL_NS[m] * 1e-9 for m, p in pixels.items()}

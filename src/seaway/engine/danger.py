@@ -27,8 +27,9 @@ if TYPE_CHECKING:
     from .prepared import PreparedChart
 
 
-def danger_stretches(route: Route, danger_h: npt.NDArray[np.float64],
-                     start_h: float) -> tuple[DangerLeg, ...]:
+def danger_stretches(
+    route: Route, danger_h: npt.NDArray[np.float64], start_h: float
+) -> tuple[DangerLeg, ...]:
     """Consecutive steps in danger merged: where (start, end as lat/lon), when (hours after
     departure) and for how long (hours)."""
     coords = route.coords
@@ -42,16 +43,22 @@ def danger_stretches(route: Route, danger_h: npt.NDArray[np.float64],
         j = i
         while j + 1 < n and danger_h[j + 1] > 0:
             j += 1
-        out.append(DangerLeg(start=(float(coords[i][0]), float(coords[i][1])),
-                             end=(float(coords[j + 1][0]), float(coords[j + 1][1])),
-                             start_h=float(elapsed[i]), hours=float(np.sum(danger_h[i:j + 1])),
-                             steps=(i, j + 1)))
+        out.append(
+            DangerLeg(
+                start=(float(coords[i][0]), float(coords[i][1])),
+                end=(float(coords[j + 1][0]), float(coords[j + 1][1])),
+                start_h=float(elapsed[i]),
+                hours=float(np.sum(danger_h[i : j + 1])),
+                steps=(i, j + 1),
+            )
+        )
         i = j + 1
     return tuple(out)
 
 
-def least_danger_route(prepared: PreparedChart, model: TravelTime, start: Point, end: Point,
-                       method: str) -> Route | None:
+def least_danger_route(
+    prepared: PreparedChart, model: TravelTime, start: Point, end: Point, method: str
+) -> Route | None:
     """The lexicographic (hours in danger, hours) route under a TravelTime model (its zones
     included), or None when even the hard limits leave no route."""
     fc, vessel = model.forecast, model.vessel
@@ -65,15 +72,19 @@ def least_danger_route(prepared: PreparedChart, model: TravelTime, start: Point,
     wave = np.inf if vessel.danger_wave_m is None else float(vessel.danger_wave_m)
     w = heuristic_weight(method, None)
     result, danger_h = interruptible(
-        lambda cancel: _core.route_least_danger(prepared.router, hard, wind, wave,
-                                                prepared.flat(s), prepared.flat(e), w, cancel))
+        lambda cancel: _core.route_least_danger(
+            prepared.router, hard, wind, wave, prepared.flat(s), prepared.flat(e), w, cancel
+        )
+    )
     found = Search.from_core(result)
     if not found.found:
         return None
     r = to_route(prepared, found, model, method)
     r = model.finish(r, StepValues())
     danger_h = np.asarray(danger_h, dtype=float)
-    r.stats = dataclasses.replace(r.stats, danger=Danger(
-        hours=float(danger_h.sum()), step_h=danger_h, legs=danger_stretches(r, danger_h, 0.0)))
+    r.stats = dataclasses.replace(
+        r.stats,
+        danger=Danger(hours=float(danger_h.sum()), step_h=danger_h, legs=danger_stretches(r, danger_h, 0.0)),
+    )
     r.name = "seaway route (through danger: no route avoids the danger zones)"
     return r

@@ -78,13 +78,16 @@ def heuristic_weight(method: str, weight: float | None) -> float:
         if weight not in (None, 1, 1.0):
             raise ValueError("weight inflates the A* heuristic; use it with method='astar'")
         return 0.0
-    return 1.0 if weight is None else number(
-        weight, "weight", minimum=1, what="a finite number >= 1 (cost <= weight x optimum)",
-        example=1.5)
+    return (
+        1.0
+        if weight is None
+        else number(
+            weight, "weight", minimum=1, what="a finite number >= 1 (cost <= weight x optimum)", example=1.5
+        )
+    )
 
 
-def resolve(prepared: PreparedChart, model: CostModel, method: str,
-            weight: float | None = None) -> str:
+def resolve(prepared: PreparedChart, model: CostModel, method: str, weight: float | None = None) -> str:
     """The method that answers the query; refuses a method the model does not allow."""
     if method == "auto" and weight is not None:
         return "astar"
@@ -100,17 +103,20 @@ def resolve(prepared: PreparedChart, model: CostModel, method: str,
         raise ValueError(
             f"method='bidirectional' needs a static raster model (edge_cost in {EDGE_COST_NAMES}); "
             f"the {model.name!r} model's step costs depend on the time of arrival, so the backward "
-            "search cannot price them: use method='astar' or 'dijkstra'")
+            "search cannot price them: use method='astar' or 'dijkstra'"
+        )
     if method == "landmarks":
         if not (model.static and model.symmetric):
             raise ValueError(
                 f"method='landmarks' needs a symmetric static model (edge_cost in "
-                f"{EDGE_COST_NAMES}), not {model.name!r}: use method='bidirectional' or 'astar'")
+                f"{EDGE_COST_NAMES}), not {model.name!r}: use method='bidirectional' or 'astar'"
+            )
         if prepared.landmarks_for(model) is None:
             raise ValueError(
                 f"the chart has no landmarks for the {model.name!r} model: call "
                 f"prepared.prepare_landmarks(8, model={model.name!r}) first (or "
-                "seaway.prepare(..., landmarks=8)), or use method='auto'")
+                "seaway.prepare(..., landmarks=8)), or use method='auto'"
+            )
     return method
 
 
@@ -118,21 +124,36 @@ def resolve(prepared: PreparedChart, model: CostModel, method: str,
 PUBLIC = {"bidirectional A*": "bidirectional", "landmarks one thread": "landmarks"}
 
 
-def refine(prepared: PreparedChart, model: CostModel, method: str, requested: str,
-           s: tuple[int, int], e: tuple[int, int]) -> str:
+def refine(
+    prepared: PreparedChart,
+    model: CostModel,
+    method: str,
+    requested: str,
+    s: tuple[int, int],
+    e: tuple[int, int],
+) -> str:
     """The search that answers the query s -> e (located pixels): for "auto" on a chart with
     landmarks, the cheapest by the cost model (seaway.engine.costmodel); else `method`."""
     landmarks = prepared.landmarks_for(model)
     if requested != "auto" or method != "landmarks" or landmarks is None:
         return method
-    times = costmodel.estimate(prepared, model, prepared.landmark_sample(model), landmarks.table,
-                               s, e, low_contrast(prepared))
+    times = costmodel.estimate(
+        prepared, model, prepared.landmark_sample(model), landmarks.table, s, e, low_contrast(prepared)
+    )
     best: str = min(times, key=lambda m: times[m])
     return best
 
 
-def search(prepared: PreparedChart, engine: _core.Model, s: int, e: int, method: str,
-           weight: float, model: CostModel, cancel: _core.CancelToken | None) -> Search:
+def search(
+    prepared: PreparedChart,
+    engine: _core.Model,
+    s: int,
+    e: int,
+    method: str,
+    weight: float,
+    model: CostModel,
+    cancel: _core.CancelToken | None,
+) -> Search:
     """The search between flat pixels s and e by `method` (a public method, or a search the cost
     model names: "bidirectional A*", "landmarks one thread")."""
     router = prepared.router
@@ -142,16 +163,23 @@ def search(prepared: PreparedChart, engine: _core.Model, s: int, e: int, method:
     if method == "landmarks one thread":
         landmarks = prepared.landmarks_for(model)
         assert landmarks is not None
-        return Search.from_core(router.route_landmarks(
-            cast("_core.RasterRule", engine), landmarks, s, e, False, cancel))
+        return Search.from_core(
+            router.route_landmarks(cast("_core.RasterRule", engine), landmarks, s, e, False, cancel)
+        )
     if method == "bidirectional":
-        return Search.from_core(router.route_bidirectional(
-            cast("_core.StaticModel", engine), s, e, low_contrast(prepared), cancel))
+        return Search.from_core(
+            router.route_bidirectional(
+                cast("_core.StaticModel", engine), s, e, low_contrast(prepared), cancel
+            )
+        )
     if method == "landmarks":
         landmarks = prepared.landmarks_for(model)
         assert landmarks is not None
-        return Search.from_core(router.route_landmarks(
-            cast("_core.RasterRule", engine), landmarks, s, e, BIDIRECTIONAL_LANDMARKS, cancel))
+        return Search.from_core(
+            router.route_landmarks(
+                cast("_core.RasterRule", engine), landmarks, s, e, BIDIRECTIONAL_LANDMARKS, cancel
+            )
+        )
     return Search.from_core(router.route(engine, s, e, weight, cancel))
 
 
@@ -162,16 +190,22 @@ def low_contrast(prepared: PreparedChart) -> bool:
     return span <= ASTAR_CONTRAST
 
 
-def build_landmarks(prepared: PreparedChart, count: int, model: CostModel, seed_rc: tuple[int, int],
-                    cancel: _core.CancelToken | None) -> tuple[_core.Landmarks, float]:
+def build_landmarks(
+    prepared: PreparedChart,
+    count: int,
+    model: CostModel,
+    seed_rc: tuple[int, int],
+    cancel: _core.CancelToken | None,
+) -> tuple[_core.Landmarks, float]:
     """The landmark tables of `model` on `prepared`, and the seconds it took."""
     if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
         raise TypeError(f"landmarks must be an integer from 1 to 64, got {count!r}")
     if not 1 <= count <= 64:
         raise ValueError(f"landmarks must be from 1 to 64 (4 bytes per pixel each), got {count}")
     if not (model.static and model.symmetric):
-        raise ValueError(f"landmarks need a symmetric static model (edge_cost in {EDGE_COST_NAMES}), "
-                         f"not {model.name!r}")
+        raise ValueError(
+            f"landmarks need a symmetric static model (edge_cost in {EDGE_COST_NAMES}), not {model.name!r}"
+        )
     t0 = time.perf_counter()
     seed = seed_rc[0] * prepared.chart.shape[1] + seed_rc[1]
     engine = cast("_core.RasterRule", model.engine(prepared))  # symmetric and static: checked above

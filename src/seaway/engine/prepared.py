@@ -60,17 +60,28 @@ class PreparedChart:
     _landmarks: dict[str, _core.Landmarks]
     _dims: tuple[Hashable, ...] | None
 
-    def __init__(self, cost: npt.ArrayLike | xr.DataArray, *, lat: npt.ArrayLike | None = None,
-                 lon: npt.ArrayLike | None = None, dx: float = 1.0, dy: float = 1.0,
-                 land: npt.ArrayLike | xr.DataArray | None = None, neighbourhood: int = 5,
-                 directions: str = "full", edge_cost: str = "max", landmarks: int = 0,
-                 keep_away: KeepAway | Collection[KeepAway] = (),
-                 zones: Zone | Collection[Zone] = ()) -> None:
+    def __init__(
+        self,
+        cost: npt.ArrayLike | xr.DataArray,
+        *,
+        lat: npt.ArrayLike | None = None,
+        lon: npt.ArrayLike | None = None,
+        dx: float = 1.0,
+        dy: float = 1.0,
+        land: npt.ArrayLike | xr.DataArray | None = None,
+        neighbourhood: int = 5,
+        directions: str = "full",
+        edge_cost: str = "max",
+        landmarks: int = 0,
+        keep_away: KeepAway | Collection[KeepAway] = (),
+        zones: Zone | Collection[Zone] = (),
+    ) -> None:
         methods.check_options(neighbourhood, directions)
         model = EdgeCost(edge_cost)
         if keep_away or zones:  # rasterised once, with the chart (seaway.constraints)
-            cost = constrain(cost, keep_away=keep_away, zones=zones, lat=lat, lon=lon, dx=dx,
-                             dy=dy, land=land)
+            cost = constrain(
+                cost, keep_away=keep_away, zones=zones, lat=lat, lon=lon, dx=dx, dy=dy, land=land
+            )
         chart = as_chart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land)
         self._setup(chart, neighbourhood, directions, model, "segment")
         self._dims = getattr(cost, "dims", None)
@@ -78,8 +89,9 @@ class PreparedChart:
             self.prepare_landmarks(landmarks)
 
     @classmethod
-    def from_chart(cls, chart: Chart, neighbourhood: int, directions: str, model: CostModel,
-                   land_rule: str = "segment") -> PreparedChart:
+    def from_chart(
+        cls, chart: Chart, neighbourhood: int, directions: str, model: CostModel, land_rule: str = "segment"
+    ) -> PreparedChart:
         """A prepared chart from a validated Chart, with engine options the public API does not
         offer ("axis" directions, the "pixel" land rule: seaway.compat)."""
         self = cls.__new__(cls)
@@ -87,18 +99,19 @@ class PreparedChart:
         self._dims = None
         return self
 
-    def _setup(self, chart: Chart, neighbourhood: int, directions: str, model: CostModel,
-               land_rule: str) -> None:
+    def _setup(
+        self, chart: Chart, neighbourhood: int, directions: str, model: CostModel, land_rule: str
+    ) -> None:
         check_tiny(chart, neighbourhood)
         self.chart, self.model = chart, model
         self.neighbourhood, self.directions = neighbourhood, directions
-        self.router = _core.make_router(chart.values, chart.land, chart.grid, neighbourhood,
-                                        directions, land_rule)
+        self.router = _core.make_router(
+            chart.values, chart.land, chart.grid, neighbourhood, directions, land_rule
+        )
         self._landmarks, self.landmark_stats = {}, {}
         self._samples: dict[str, costmodel.Sample] = {}
 
-    def prepare_landmarks(self, count: int = 8, *,
-                          model: CostModel | str | None = None) -> LandmarkStats:
+    def prepare_landmarks(self, count: int = 8, *, model: CostModel | str | None = None) -> LandmarkStats:
         """Tabulate the least costs from `count` landmark pixels (float32, 4 bytes per pixel
         each) for `model` (default the chart's edge_cost), so that method="landmarks" (and
         "auto") answers later queries by A* with the landmark bound. Returns the stats:
@@ -107,14 +120,17 @@ class PreparedChart:
         seed = nearest_passable(self.chart, tuple(n // 2 for n in self.chart.shape))
         if seed is None:
             raise ValueError("no pixel of the chart is passable: landmarks need water")
-        lm, seconds = interruptible(lambda cancel: methods.build_landmarks(self, count, model, seed,
-                                                                           cancel))
+        lm, seconds = interruptible(lambda cancel: methods.build_landmarks(self, count, model, seed, cancel))
         self._landmarks[model.name] = lm
         self._samples[model.name] = costmodel.make_sample(lm.table, self.chart.shape[1])
         px = [divmod(int(p), self.chart.shape[1]) for p in lm.pixels]
         self.landmark_stats[model.name] = stats = LandmarkStats(
-            count=len(px), seconds=seconds, bytes=lm.bytes, bytes_per_pixel=lm.bytes / self.chart.values.size,
-            pixels=px)
+            count=len(px),
+            seconds=seconds,
+            bytes=lm.bytes,
+            bytes_per_pixel=lm.bytes / self.chart.values.size,
+            pixels=px,
+        )
         return stats
 
     def landmarks_for(self, model: CostModel) -> _core.Landmarks | None:
@@ -134,16 +150,28 @@ class PreparedChart:
         """The flat index of pixel (row, col)."""
         return rc[0] * self.chart.shape[1] + rc[1]
 
-    def search(self, s: tuple[int, int], e: tuple[int, int], weight: float, model: CostModel,
-               method: str = "astar") -> Search:
+    def search(
+        self, s: tuple[int, int], e: tuple[int, int], weight: float, model: CostModel, method: str = "astar"
+    ) -> Search:
         """The search between two located pixels (cost inf if unreachable)."""
         engine = model.engine(self)
-        return interruptible(lambda cancel: methods.search(self, engine, self.flat(s), self.flat(e),
-                                                           method, weight, model, cancel))
+        return interruptible(
+            lambda cancel: methods.search(
+                self, engine, self.flat(s), self.flat(e), method, weight, model, cancel
+            )
+        )
 
-    def route(self, start: Point, end: Point, *, model: CostModel | str | None = None,
-              method: str = "auto", weight: float | None = None, via: Via | None = (),
-              turn_penalty: TurnPenalty | None = None) -> Route:
+    def route(
+        self,
+        start: Point,
+        end: Point,
+        *,
+        model: CostModel | str | None = None,
+        method: str = "auto",
+        weight: float | None = None,
+        via: Via | None = (),
+        turn_penalty: TurnPenalty | None = None,
+    ) -> Route:
         """The least-cost route from `start` to `end` under `model` (a seaway.models.CostModel
         or an edge-cost name; default the chart's edge_cost), through the `via` points in order
         and with an optional turn penalty (seaway.engine.constrained). See seaway.route."""
@@ -161,8 +189,9 @@ class PreparedChart:
             raise no_route(self, model, (("start", s), ("end", e)))
         return model.finish(to_route(self, found, model, methods.PUBLIC.get(used, used)), found.per_step)
 
-    def cost_field(self, start: Point, *,
-                   model: CostModel | str | None = None) -> npt.NDArray[np.float64] | xr.DataArray:
+    def cost_field(
+        self, start: Point, *, model: CostModel | str | None = None
+    ) -> npt.NDArray[np.float64] | xr.DataArray:
         """The accumulated least cost from `start` to every pixel (inf where unreachable) under
         `model` (default the chart's edge_cost); a DataArray chart gives a DataArray, in the
         dimension order it came in."""
@@ -180,6 +209,9 @@ class PreparedChart:
         if self._dims is not None and out.dims != tuple(self._dims):
             out = out.transpose(*self._dims)  # the chart was turned to (lat, lon): give it back
         out.name = "accumulated_cost"
-        out.attrs = {"long_name": "least accumulated cost from the start", "start": str(tuple(start)),
-                     "units": model.unit(chart.geographic)}
+        out.attrs = {
+            "long_name": "least accumulated cost from the start",
+            "start": str(tuple(start)),
+            "units": model.unit(chart.geographic),
+        }
         return out

@@ -74,8 +74,9 @@ def nearest_reachable(prepared: PreparedChart, start: Point, end: Point) -> Reac
     return Reach((r, c), point, float(d[i]))
 
 
-def least_barrier(chart: Chart, levels: npt.ArrayLike, start: Point, end: Point,
-                  neighbourhood: int = 5) -> Route | None:
+def least_barrier(
+    chart: Chart, levels: npt.ArrayLike, start: Point, end: Point, neighbourhood: int = 5
+) -> Route | None:
     """The route between the ends on the validated `chart`'s grid that crosses the least of the
     highest level, then of the next, ... (`levels`, in the chart's (row, col) order: 0 where the
     ship may go, k >= 1 where it may not, the higher the harder; negative: closed, like land);
@@ -95,17 +96,28 @@ def least_barrier(chart: Chart, levels: npt.ArrayLike, start: Point, end: Point,
     else:
         where = {"dx": chart.grid.dx, "dy": chart.grid.dy}
     try:
-        return route(raster, start, end, land=chart.land, neighbourhood=neighbourhood,
-                     method="dijkstra", **where)  # faster than the others on costs this uneven
+        return route(
+            raster, start, end, land=chart.land, neighbourhood=neighbourhood, method="dijkstra", **where
+        )  # faster than the others on costs this uneven
     except NoRouteError:
         return None
 
 
-def explain_no_route(cost: Any, start: Point, end: Point, *, levels: Any = None,
-                     lat: npt.ArrayLike | None = None, lon: npt.ArrayLike | None = None,
-                     dx: float = 1.0, dy: float = 1.0, land: Any = None, neighbourhood: int = 5,
-                     show: Show | None = None,
-                     asked: tuple[Point, Point] | None = None) -> NoRouteError:
+def explain_no_route(
+    cost: Any,
+    start: Point,
+    end: Point,
+    *,
+    levels: Any = None,
+    lat: npt.ArrayLike | None = None,
+    lon: npt.ArrayLike | None = None,
+    dx: float = 1.0,
+    dy: float = 1.0,
+    land: Any = None,
+    neighbourhood: int = 5,
+    show: Show | None = None,
+    asked: tuple[Point, Point] | None = None,
+) -> NoRouteError:
     """The NoRouteError for ends that `cost` does not join, with its cause ("land" or
     "impassable"), the reachable point nearest the end and its distance (seaway.errors).
 
@@ -113,8 +125,7 @@ def explain_no_route(cost: Any, start: Point, end: Point, *, levels: Any = None,
     is not land). show: (row, col) -> the point to report (e.g. lat/lon of a projected chart's
     pixel; default the pixel's own coordinates); asked: the ends as the user gave them, for the
     message (default start, end)."""
-    prepared = PreparedChart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land,
-                             neighbourhood=neighbourhood)
+    prepared = PreparedChart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, neighbourhood=neighbourhood)
     chart = prepared.chart
     if levels is None:
         levels = np.where(np.isfinite(chart.values) & (chart.values >= 0), 0.0, 1.0)
@@ -127,13 +138,14 @@ def explain_no_route(cost: Any, start: Point, end: Point, *, levels: Any = None,
     unit = "km" if chart.geographic or show else "chart units"
     text = "no route from {} to {}: ".format(*(_pt(p) for p in (asked or (start, end))))
     if way is None:
-        text += ("even with every impassable pixel that is not land opened, no chain of steps joins "
-                 f"them with neighbourhood={neighbourhood} (separate water bodies, or a passage "
-                 "narrower than the land rule allows): check the land mask, try a larger "
-                 "neighbourhood or choose other ends")
+        text += (
+            "even with every impassable pixel that is not land opened, no chain of steps joins "
+            f"them with neighbourhood={neighbourhood} (separate water bodies, or a passage "
+            "narrower than the land rule allows): check the land mask, try a larger "
+            "neighbourhood or choose other ends"
+        )
     else:
-        text += ("pixels of infinite or NaN cost that are not land close the way (the land alone "
-                 "does not)")
+        text += "pixels of infinite or NaN cost that are not land close the way (the land alone does not)"
     err = NoRouteError(text, cause="land" if way is None else "impassable")
     return with_reach(err, reach, show, unit, (asked or (start, end))[1] if asked else None)
 
@@ -148,8 +160,13 @@ def chart_order(array: Any, chart: Chart) -> npt.NDArray[np.float64]:
     return out
 
 
-def with_reach(err: NoRouteError, reach: Reach | None, show: Show | None = None, unit: str = "km",
-               end: Point | None = None) -> NoRouteError:
+def with_reach(
+    err: NoRouteError,
+    reach: Reach | None,
+    show: Show | None = None,
+    unit: str = "km",
+    end: Point | None = None,
+) -> NoRouteError:
     """`err` with the reachable point nearest the end (attributes and message). show: pixel ->
     (lat, lon) of a projected chart, with `end` the end in lat/lon: the distance is then the
     great-circle distance between them."""
@@ -161,12 +178,26 @@ def with_reach(err: NoRouteError, reach: Reach | None, show: Show | None = None,
         if end is not None:
             e = [float(v) for v in end]
             dist = float(distance_km(point[0], point[1], e[0], e[1]))
-    return NoRouteError(f"{err}; the ship can get as far as {_pt(point, 4)}, {dist:.1f} {unit} "
-                        "from the end", cause=err.cause, closing_ice=err.closing_ice,
-                        weakest_class=err.weakest_class, reachable=point, reachable_km=dist)
+    return NoRouteError(
+        f"{err}; the ship can get as far as {_pt(point, 4)}, {dist:.1f} {unit} from the end",
+        cause=err.cause,
+        closing_ice=err.closing_ice,
+        weakest_class=err.weakest_class,
+        reachable=point,
+        reachable_km=dist,
+    )
 
 
 def _pt(p: Point, digits: int | None = None) -> str:
     return ",".join(f"{float(v):g}" if digits is None else f"{float(v):.{digits}f}" for v in p)
 
-__all__ = ["BASE", "Reach", "nearest_reachable", "least_barrier", "explain_no_route", "with_reach", "chart_order"]
+
+__all__ = [
+    "BASE",
+    "Reach",
+    "nearest_reachable",
+    "least_barrier",
+    "explain_no_route",
+    "with_reach",
+    "chart_order",
+]

@@ -38,8 +38,13 @@ class Search:
     @classmethod
     def from_core(cls, result: _core.QueryResult) -> Search:
         """From the C++ search's answer (_core.QueryResult, cpp/results.hpp)."""
-        return cls(float(result.cost), np.asarray(result.path), SearchStats.from_core(result.stats),
-                   np.asarray(result.cumulative, float), StepValues.from_core(result.steps))
+        return cls(
+            float(result.cost),
+            np.asarray(result.path),
+            SearchStats.from_core(result.stats),
+            np.asarray(result.cumulative, float),
+            StepValues.from_core(result.steps),
+        )
 
     @property
     def found(self) -> bool:
@@ -63,6 +68,13 @@ def no_route(prepared: PreparedChart, model: CostModel, ends: tuple[End, End]) -
 def to_route(prepared: PreparedChart, found: Search, model: CostModel, method: str) -> Route:
     """The Route of a found search, before the model adds its own results (model.finish)."""
     chart = prepared.chart
-    return Route(chart=chart, cost=float(found.cost), pixels=found.pixels(chart.shape[1]),
-                 method=method, neighbourhood=prepared.neighbourhood, model=model,
-                 stats=RouteStats(search=found.stats), step_costs=np.diff(found.cumulative))
+    return Route(
+        chart=chart,
+        cost=float(found.cost),
+        pixels=found.pixels(chart.shape[1]),
+        method=method,
+        neighbourhood=prepared.neighbourhood,
+        model=model,
+        stats=RouteStats(search=found.stats),
+        step_costs=np.diff(found.cumulative),
+    )

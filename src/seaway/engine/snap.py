@@ -57,8 +57,10 @@ class Move:
         here = f"{self.name} {_fmt(self.requested)} is on an impassable pixel ({self.why})"
         if self.to is None:
             return f"{here}; no usable pixel of the chart is joined to the other end"
-        return f"{here}; the nearest point the ship may use is {_fmt(self.to, 4)}, " \
-               f"{self.distance:.1f} {unit} away"
+        return (
+            f"{here}; the nearest point the ship may use is {_fmt(self.to, 4)}, "
+            f"{self.distance:.1f} {unit} away"
+        )
 
 
 class SnapError(ValueError):
@@ -69,8 +71,10 @@ class SnapError(ValueError):
     def __init__(self, moves: Iterable[Move], limit: float, unit: str) -> None:
         self.moves, self.limit, self.unit = tuple(moves), float(limit), unit
         far = "; ".join(m.sentence(unit) for m in self.moves)
-        super().__init__(f"{far}: farther than max_km={self.limit:g}; give ends in water the ship "
-                         "can use, or a larger max_km")
+        super().__init__(
+            f"{far}: farther than max_km={self.limit:g}; give ends in water the ship "
+            "can use, or a larger max_km"
+        )
 
 
 @dataclass(frozen=True)
@@ -95,24 +99,38 @@ class SnappedEnds:
     @property
     def notes(self) -> tuple[str, ...]:
         """A sentence per moved end, as the outputs record it."""
-        return tuple(f"{m.name} {_fmt(m.requested)} is on an impassable pixel ({m.why}): moved "
-                     f"{m.distance:.1f} {self.unit} to {_fmt(m.to or (), 4)}" for m in self.moves)
+        return tuple(
+            f"{m.name} {_fmt(m.requested)} is on an impassable pixel ({m.why}): moved "
+            f"{m.distance:.1f} {self.unit} to {_fmt(m.to or (), 4)}"
+            for m in self.moves
+        )
 
     def record(self, route: Any) -> Any:
         """`route` (found between .ends) carrying the requested ends (Route.requested, in every
         output) and the moves (Route.assumptions)."""
-        return dataclasses.replace(route, requested=tuple(self.requested),
-                                   notes=tuple(route.notes) + self.notes)
+        return dataclasses.replace(
+            route, requested=tuple(self.requested), notes=tuple(route.notes) + self.notes
+        )
 
 
 def _fmt(p: Iterable[float], digits: int | None = None) -> str:
     return ",".join(f"{v:g}" if digits is None else f"{v:.{digits}f}" for v in p)
 
 
-def snap_ends(cost: Any, start: Point, end: Point, *, lat: npt.ArrayLike | None = None,
-              lon: npt.ArrayLike | None = None, dx: float = 1.0, dy: float = 1.0, land: Any = None,
-              neighbourhood: int = 5, max_km: float = DEFAULT_SNAP_KM,
-              why: Callable[[int, int], str] | None = None) -> SnappedEnds:
+def snap_ends(
+    cost: Any,
+    start: Point,
+    end: Point,
+    *,
+    lat: npt.ArrayLike | None = None,
+    lon: npt.ArrayLike | None = None,
+    dx: float = 1.0,
+    dy: float = 1.0,
+    land: Any = None,
+    neighbourhood: int = 5,
+    max_km: float = DEFAULT_SNAP_KM,
+    why: Callable[[int, int], str] | None = None,
+) -> SnappedEnds:
     """The ends of a route on `cost` (arguments as seaway.route's), an impassable one moved to
     the nearest point the ship may use in water that joins both ends (see the module).
 
@@ -120,8 +138,7 @@ def snap_ends(cost: Any, start: Point, end: Point, *, lat: npt.ArrayLike | None 
         farther one raises SnapError naming the point and its distance (max_km=0: report, never
         move). why(row, col) -> str says what makes a pixel impassable (default: land, or
         its cost). An end off the chart raises ValueError."""
-    prepared = PreparedChart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land,
-                             neighbourhood=neighbourhood)
+    prepared = PreparedChart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, neighbourhood=neighbourhood)
     chart = prepared.chart
     requested: tuple[End, End] = (tuple(map(float, start)), tuple(map(float, end)))
     pixels = [pixel_of(chart, p, name) for p, name in zip(requested, ("start", "end"))]
@@ -191,8 +208,9 @@ def _component(prepared: PreparedChart, rc: Iterable[Any], usable: Mask) -> Mask
     return reach & usable
 
 
-def _joint_water(prepared: PreparedChart, usable: Mask, cand: npt.NDArray[np.intp],
-                 dist: list[Distances]) -> Mask | None:
+def _joint_water(
+    prepared: PreparedChart, usable: Mask, cand: npt.NDArray[np.intp], dist: list[Distances]
+) -> Mask | None:
     """Mask (over `cand`) of the body of water with the least total move of both ends: bodies
     explored from the unexplored usable pixel nearest to either end, until no unexplored one
     can beat the best (its total is at least the two nearest unexplored distances)."""
@@ -214,5 +232,6 @@ def _joint_water(prepared: PreparedChart, usable: Mask, cand: npt.NDArray[np.int
         if total < best_total:
             best, best_total = water, total
     return best
+
 
 __all__ = ["DEFAULT_SNAP_KM", "Move", "SnapError", "SnappedEnds", "snap_ends"]

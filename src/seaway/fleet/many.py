@@ -16,14 +16,45 @@ from collections.abc import Mapping
 from ..base.validate import number
 from .run import _Progress, _run_dask, _run_threads
 
-COLUMNS = ["chart", "vessel", "voyage", "start", "end", "cost", "length", "settled", "time_s",
-           "status", "error"]
+COLUMNS = [
+    "chart",
+    "vessel",
+    "voyage",
+    "start",
+    "end",
+    "cost",
+    "length",
+    "settled",
+    "time_s",
+    "status",
+    "error",
+]
 
 
-def route_many(charts, voyages, *, vessels=None, lat=None, lon=None, dx=1.0, dy=1.0, land=None,
-               neighbourhood=5, directions="full", edge_cost="max", method="auto", weight=None,
-               threads=None, cluster=None, progress=None, keep_routes=False, time_dim="time",
-               keep_away=(), zones=(), turn_penalty=None):
+def route_many(
+    charts,
+    voyages,
+    *,
+    vessels=None,
+    lat=None,
+    lon=None,
+    dx=1.0,
+    dy=1.0,
+    land=None,
+    neighbourhood=5,
+    directions="full",
+    edge_cost="max",
+    method="auto",
+    weight=None,
+    threads=None,
+    cluster=None,
+    progress=None,
+    keep_routes=False,
+    time_dim="time",
+    keep_away=(),
+    zones=(),
+    turn_penalty=None,
+):
     """Route every voyage for every vessel on every chart; a pandas DataFrame, one row per route.
 
     charts: one chart (2-D array or DataArray, or an xarray.Dataset when vessels turn it into a
@@ -53,19 +84,35 @@ def route_many(charts, voyages, *, vessels=None, lat=None, lon=None, dx=1.0, dy=
     ("ok", "no route", "bad input" or "error") and error (the message; "" when ok)."""
     import pandas as pd
 
-    threads = (os.cpu_count() or 1) if threads is None else number(threads, "threads", minimum=1,
-                                                                      integer=True)
-    opts = dict(chart=dict(lat=lat, lon=lon, dx=dx, dy=dy, neighbourhood=neighbourhood,
-                           directions=directions, edge_cost=edge_cost, keep_away=keep_away,
-                           zones=zones),
-                method=method, weight=weight, land=land, keep=bool(keep_routes),
-                turn_penalty=turn_penalty)
+    threads = (
+        (os.cpu_count() or 1) if threads is None else number(threads, "threads", minimum=1, integer=True)
+    )
+    opts = dict(
+        chart=dict(
+            lat=lat,
+            lon=lon,
+            dx=dx,
+            dy=dy,
+            neighbourhood=neighbourhood,
+            directions=directions,
+            edge_cost=edge_cost,
+            keep_away=keep_away,
+            zones=zones,
+        ),
+        method=method,
+        weight=weight,
+        land=land,
+        keep=bool(keep_routes),
+        turn_penalty=turn_penalty,
+    )
     chart_items = _chart_items(charts, time_dim)
     vessel_items = [(None, None)] if vessels is None else _items(vessels, "vessels")
     voyage_items = _voyage_items(voyages)
     if charts is not None and any(v is not None and not callable(v) for _, v in vessel_items):
-        raise ValueError("a vessel given as a cost raster ignores the charts; pass charts=None, "
-                         "or give the vessel as a callable turning a chart into a cost raster")
+        raise ValueError(
+            "a vessel given as a cost raster ignores the charts; pass charts=None, "
+            "or give the vessel as a callable turning a chart into a cost raster"
+        )
     n = len(chart_items) * len(vessel_items) * len(voyage_items)
     bar = _Progress(n, cluster is not None if progress is None else bool(progress))
     if cluster is None:
@@ -74,9 +121,10 @@ def route_many(charts, voyages, *, vessels=None, lat=None, lon=None, dx=1.0, dy=
         rows = _run_dask(chart_items, vessel_items, voyage_items, opts, cluster, bar)
     bar.close()
     ids = [(c, v, y) for c, _ in chart_items for v, _ in vessel_items for y, _ in voyage_items]
-    table = pd.DataFrame([dict(chart=c, vessel=v, voyage=y, **row)
-                          for (c, v, y), row in zip(ids, rows)],
-                         columns=COLUMNS + (["route"] if keep_routes else []))
+    table = pd.DataFrame(
+        [dict(chart=c, vessel=v, voyage=y, **row) for (c, v, y), row in zip(ids, rows)],
+        columns=COLUMNS + (["route"] if keep_routes else []),
+    )
     table["settled"] = table["settled"].astype("Int64")
     return table
 

@@ -29,8 +29,9 @@ def _target(chart, vessel, opts):
         cost = vessel(chart) if callable(vessel) else vessel
     cost, land = _loaded(cost), _loaded(land)
     prepared = prepare(cost, land=land, **opts["chart"])  # once; a workspace per thread
-    return lambda s, e, via=(): prepared.route(s, e, method=opts["method"], weight=opts["weight"],
-                                               via=via, turn_penalty=opts.get("turn_penalty"))
+    return lambda s, e, via=(): prepared.route(
+        s, e, method=opts["method"], weight=opts["weight"], via=via, turn_penalty=opts.get("turn_penalty")
+    )
 
 
 def _status(exc):
@@ -58,13 +59,19 @@ def _route_one(get_target, voyage, keep):
     t0 = time.perf_counter()
     try:
         if malformed:
-            raise TypeError(f"a voyage must be a (start, end) pair or a (start, end, via) triple, got {voyage!r}")
+            raise TypeError(
+                f"a voyage must be a (start, end) pair or a (start, end, via) triple, got {voyage!r}"
+            )
         target = get_target()
         t0 = time.perf_counter()
         route = target(start, end, via) if len(via) else target(start, end)
-        row.update(cost=float(route.cost), length=float(route.length),
-                   settled=None if route.stats.search is None else route.stats.search.settled,
-                   status="ok", error="")
+        row.update(
+            cost=float(route.cost),
+            length=float(route.length),
+            settled=None if route.stats.search is None else route.stats.search.settled,
+            status="ok",
+            error="",
+        )
     except Exception as exc:  # noqa: BLE001 - a failing route is reported in its row
         status = _status(exc)
         row.update(status=status, error=f"{type(exc).__name__}: {exc}" if status == "error" else str(exc))

@@ -45,11 +45,13 @@ def _run_threads(chart_items, vessel_items, voyage_items, opts, threads, bar):
     targets = {}
     for ci in range(len(chart_items)):
         for vi, (_, vessel) in enumerate(vessel_items):
+
             def make(ci=ci, vessel=vessel):
                 try:
                     return _target(loaded[ci].get(), vessel, opts)
                 finally:
                     loaded[ci].release()
+
             targets[ci, vi] = _Shared(make, ny)
 
     def item(ci, vi, voyage):
@@ -58,8 +60,9 @@ def _run_threads(chart_items, vessel_items, voyage_items, opts, threads, bar):
         finally:
             targets[ci, vi].release()
 
-    work = [(ci, vi, voyage) for ci in range(len(chart_items)) for vi in range(nv)
-            for _, voyage in voyage_items]
+    work = [
+        (ci, vi, voyage) for ci in range(len(chart_items)) for vi in range(nv) for _, voyage in voyage_items
+    ]
     if threads == 1:
         rows = []
         for w in work:
@@ -98,6 +101,7 @@ def _run_dask(chart_items, vessel_items, voyage_items, opts, cluster, bar):
     else:
         client = cluster
     try:
+
         def ship(obj):  # arrays go to the workers once; dask-backed charts are loaded there
             if obj is None or callable(obj) or dask.is_dask_collection(obj):
                 return obj
@@ -108,7 +112,7 @@ def _run_dask(chart_items, vessel_items, voyage_items, opts, cluster, bar):
         per_group = min(max(math.ceil(4 * workers / groups), 1), max(len(voyage_items), 1))
         size = max(math.ceil(len(voyage_items) / per_group), 1)
         voyages = [v for _, v in voyage_items]
-        batches = [voyages[i:i + size] for i in range(0, len(voyages), size)]
+        batches = [voyages[i : i + size] for i in range(0, len(voyages), size)]
         opts = dict(opts, land=ship(opts["land"]))
         run = dask.delayed(_run_batch, pure=False)
         tasks = []
@@ -146,8 +150,10 @@ class _Progress:
             return
         frac = self.done / self.total if self.total else 1.0
         fill = int(round(frac * self.width))
-        sys.stderr.write(f"\rroutes {self.done:>{len(str(self.total))}}/{self.total} "
-                         f"[{'#' * fill}{'.' * (self.width - fill)}] {100 * frac:3.0f} %")
+        sys.stderr.write(
+            f"\rroutes {self.done:>{len(str(self.total))}}/{self.total} "
+            f"[{'#' * fill}{'.' * (self.width - fill)}] {100 * frac:3.0f} %"
+        )
         sys.stderr.flush()
 
     def close(self):

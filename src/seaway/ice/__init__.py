@@ -44,6 +44,22 @@ def __getattr__(name):
         return importlib.import_module(f"{__name__}.{name}")
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
-__all__ = ["andreeva", "classes", "codes", "impact", "polaris", "pareto", "season", "summary",
-           "noroute", "CLASSES",
-           "IceClass", "class_names", "get_class", "ICE_IMPACT", "ice_impact", "chart_impact"]
+
+__all__ = [
+    "andreeva",
+    "classes",
+    "codes",
+    "impact",
+    "polaris",
+    "pareto",
+    "season",
+    "summary",
+    "noroute",
+    "CLASSES",
+    "IceClass",
+    "class_names",
+    "get_class",
+    "ICE_IMPACT",
+    "ice_impact",
+    "chart_impact",
+]

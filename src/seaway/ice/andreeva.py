@@ -57,8 +57,11 @@ def depth_factor(depth, draft, delta_l=0.0):
     if hasattr(depth, "dims"):
         out = depth.copy(data=f)
         out.name = "f1"
-        out.attrs = {"long_name": "depth factor 1 - d / (Z - dL) (Andreeva 2021, eq. 9)",
-                     "units": "1", "draft_m": float(draft)}
+        out.attrs = {
+            "long_name": "depth factor 1 - d / (Z - dL) (Andreeva 2021, eq. 9)",
+            "units": "1",
+            "draft_m": float(draft),
+        }
         return out
     return f
 
@@ -116,8 +119,7 @@ def time_cost(F, v0_kn):
     if hasattr(F, "dims"):
         out = F.copy(data=cost)
         out.name = "time_cost"
-        out.attrs = {"long_name": "time per unit length at V = F*V0 (Andreeva 2021)",
-                     "units": "h km-1"}
+        out.attrs = {"long_name": "time per unit length at V = F*V0 (Andreeva 2021)", "units": "h km-1"}
         return out
     return cost
 

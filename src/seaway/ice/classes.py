@@ -59,44 +59,66 @@ def _rs(name, conc, h, pc, pc_assumed=True):
 
 
 #: Every class (IceClass), by canonical name, weakest first within each system.
-CLASSES = {c.name: c for c in [
-    IceClass("none", "none", 0.0, 0.0, "none", "not ice strengthened"),
-    # Russian Register, Grinyak et al. 2022 Table 1.
-    _rs("Ice1", _OPEN, 0.4, "IC"),
-    _rs("Ice2", _OPEN, 0.5, "IB"),
-    _rs("Ice3", _OPEN, 0.7, "IA", pc_assumed=False),
-    _rs("Arc4", _OPEN, 0.8, "IA Super", pc_assumed=False),
-    _rs("Arc5", _OPEN, 1.0, "PC6"),
-    _rs("Arc6", _OPEN, 1.3, "PC5"),
-    _rs("Arc7", _CLOSE, 1.4, "PC4"),
-    _rs("Arc8", _CLOSE, 2.1, "PC3"),
-    _rs("Arc9", _COMPACT, 3.5, "PC2"),
-    _rs("Icebreaker6", _COMPACT, 1.5, "PC4"),
-    _rs("Icebreaker7", _COMPACT, 2.0, "PC3"),
-    _rs("Icebreaker8", _COMPACT, 3.0, "PC2"),
-    _rs("Icebreaker9", _COMPACT, 4.0, "PC1"),
-    # IACS Polar Classes: RS equivalent and its thickness/concentration assumed.
-    *[IceClass(f"PC{n}", "IACS", 0.0, 0.0, rs, f"PC{n}", ("h_pass", "max_concentration", "rs_class"))
-      for n, rs in [(1, "Arc9"), (2, "Arc8"), (3, "Arc7"), (4, "Arc6"), (5, "Arc5"),
-                    (6, "Arc4"), (7, "Ice3")]],
-    # Finnish-Swedish: design thickness from FSICR; RS equivalent nominal (IMO guidelines).
-    IceClass("IC", "FSICR", 0.4, _OPEN, "Ice1", "IC", ("rs_class",)),
-    IceClass("IB", "FSICR", 0.6, _OPEN, "Ice2", "IB", ("rs_class",)),
-    IceClass("IA", "FSICR", 0.8, _OPEN, "Ice3", "IA"),
-    IceClass("IA Super", "FSICR", 1.0, _OPEN, "Arc4", "IA Super"),
-]}
+CLASSES = {
+    c.name: c
+    for c in [
+        IceClass("none", "none", 0.0, 0.0, "none", "not ice strengthened"),
+        # Russian Register, Grinyak et al. 2022 Table 1.
+        _rs("Ice1", _OPEN, 0.4, "IC"),
+        _rs("Ice2", _OPEN, 0.5, "IB"),
+        _rs("Ice3", _OPEN, 0.7, "IA", pc_assumed=False),
+        _rs("Arc4", _OPEN, 0.8, "IA Super", pc_assumed=False),
+        _rs("Arc5", _OPEN, 1.0, "PC6"),
+        _rs("Arc6", _OPEN, 1.3, "PC5"),
+        _rs("Arc7", _CLOSE, 1.4, "PC4"),
+        _rs("Arc8", _CLOSE, 2.1, "PC3"),
+        _rs("Arc9", _COMPACT, 3.5, "PC2"),
+        _rs("Icebreaker6", _COMPACT, 1.5, "PC4"),
+        _rs("Icebreaker7", _COMPACT, 2.0, "PC3"),
+        _rs("Icebreaker8", _COMPACT, 3.0, "PC2"),
+        _rs("Icebreaker9", _COMPACT, 4.0, "PC1"),
+        # IACS Polar Classes: RS equivalent and its thickness/concentration assumed.
+        *[
+            IceClass(f"PC{n}", "IACS", 0.0, 0.0, rs, f"PC{n}", ("h_pass", "max_concentration", "rs_class"))
+            for n, rs in [
+                (1, "Arc9"),
+                (2, "Arc8"),
+                (3, "Arc7"),
+                (4, "Arc6"),
+                (5, "Arc5"),
+                (6, "Arc4"),
+                (7, "Ice3"),
+            ]
+        ],
+        # Finnish-Swedish: design thickness from FSICR; RS equivalent nominal (IMO guidelines).
+        IceClass("IC", "FSICR", 0.4, _OPEN, "Ice1", "IC", ("rs_class",)),
+        IceClass("IB", "FSICR", 0.6, _OPEN, "Ice2", "IB", ("rs_class",)),
+        IceClass("IA", "FSICR", 0.8, _OPEN, "Ice3", "IA"),
+        IceClass("IA Super", "FSICR", 1.0, _OPEN, "Arc4", "IA Super"),
+    ]
+}
 # PC classes take thickness and concentration from their RS equivalent (assumed).
 for _n in range(1, 8):
     _pc = CLASSES[f"PC{_n}"]
     _eq = CLASSES[_pc.rs_class]
-    CLASSES[_pc.name] = IceClass(_pc.name, "IACS", _eq.h_pass, _eq.max_concentration,
-                                 _pc.rs_class, _pc.polaris_class, _pc.assumed)
+    CLASSES[_pc.name] = IceClass(
+        _pc.name, "IACS", _eq.h_pass, _eq.max_concentration, _pc.rs_class, _pc.polaris_class, _pc.assumed
+    )
 
 #: Other spellings accepted by get_class (case and spaces/underscores/hyphens are ignored too).
-ALIASES = {"not ice strengthened": "none", "nis": "none", "ia super": "IA Super",
-           "1a super": "IA Super", "1a": "IA", "1b": "IB", "1c": "IC",
-           "icebraker6": "Icebreaker6", "icebraker7": "Icebreaker7",
-           "icebraker8": "Icebreaker8", "icebraker9": "Icebreaker9"}  # Grinyak et al. 2022's spelling
+ALIASES = {
+    "not ice strengthened": "none",
+    "nis": "none",
+    "ia super": "IA Super",
+    "1a super": "IA Super",
+    "1a": "IA",
+    "1b": "IB",
+    "1c": "IC",
+    "icebraker6": "Icebreaker6",
+    "icebraker7": "Icebreaker7",
+    "icebraker8": "Icebreaker8",
+    "icebraker9": "Icebreaker9",
+}  # Grinyak et al. 2022's spelling
 
 
 def _key(name: str) -> str:

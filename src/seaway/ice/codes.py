@@ -44,8 +44,7 @@ UNKNOWN_STAGE = 99
 
 #: Special SIGRID-3 concentration codes -> (low, high) in tenths. Every other two-digit code
 #: "ab" is a/10 to b/10 (a < b), or n/10 exactly for "n0".
-_SPECIAL_CONCENTRATION = {0: (0.0, 0.0), 1: (0.0, 1.0), 2: (0.0, 1.0), 91: (9.0, 10.0),
-                          92: (10.0, 10.0)}
+_SPECIAL_CONCENTRATION = {0: (0.0, 0.0), 1: (0.0, 1.0), 2: (0.0, 1.0), 91: (9.0, 10.0), 92: (10.0, 10.0)}
 #: How a range code becomes one number: the upper bound is the conservative default (more ice).
 CONCENTRATION_RULES = ("upper", "mean", "lower")
 
@@ -128,11 +127,22 @@ def stage_code(value) -> float:
 
 
 #: SIGRID-3 form of ice (FA, FB, FC; the egg code's Fa Fb Fc), JCOMM TR-23 v3.0 -> name.
-FORM_CODES = {0: "pancake ice", 1: "shuga, small ice cake, brash ice", 2: "ice cake",
-              3: "small floe", 4: "medium floe", 5: "big floe", 6: "vast floe", 7: "giant floe",
-              8: "fast ice", 9: "growlers, floebergs or floebits", 10: "icebergs",
-              **{10 + n: f"strips and patches, {n}/10" for n in range(1, 11)},
-              21: "level ice", 99: "undetermined or unknown"}
+FORM_CODES = {
+    0: "pancake ice",
+    1: "shuga, small ice cake, brash ice",
+    2: "ice cake",
+    3: "small floe",
+    4: "medium floe",
+    5: "big floe",
+    6: "vast floe",
+    7: "giant floe",
+    8: "fast ice",
+    9: "growlers, floebergs or floebits",
+    10: "icebergs",
+    **{10 + n: f"strips and patches, {n}/10" for n in range(1, 11)},
+    21: "level ice",
+    99: "undetermined or unknown",
+}
 FAST_ICE = 8
 #: Ice of land origin among the forms (growlers, bergy bits; icebergs).
 LAND_ORIGIN_FORMS = (9, 10)

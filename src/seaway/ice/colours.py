@@ -41,21 +41,21 @@ CONCENTRATION = (
 #: Stage of development: SIGRID-3 code -> RGB. Codes 80 (no stage), 98 (glacier ice) and
 #: 99 (unknown) have no colour in the standard: they are drawn as undefined ice.
 STAGE_RGB = {
-    55: (0, 100, 255),     # ice free
-    81: (240, 210, 250),   # new ice
-    82: (255, 135, 255),   # nilas, ice rind
-    83: (170, 40, 240),    # young ice
-    84: (135, 60, 215),    # grey ice
-    85: (220, 80, 235),    # grey-white ice
-    86: (255, 255, 0),     # first-year ice
-    87: (155, 210, 0),     # thin first-year ice
-    88: (215, 250, 130),   # thin first-year ice, first stage
-    89: (175, 250, 0),     # thin first-year ice, second stage
-    91: (0, 200, 20),      # medium first-year ice
-    93: (0, 120, 0),       # thick first-year ice
-    95: (180, 100, 50),    # old ice
-    96: (255, 120, 10),    # second-year ice
-    97: (200, 0, 0),       # multi-year ice
+    55: (0, 100, 255),  # ice free
+    81: (240, 210, 250),  # new ice
+    82: (255, 135, 255),  # nilas, ice rind
+    83: (170, 40, 240),  # young ice
+    84: (135, 60, 215),  # grey ice
+    85: (220, 80, 235),  # grey-white ice
+    86: (255, 255, 0),  # first-year ice
+    87: (155, 210, 0),  # thin first-year ice
+    88: (215, 250, 130),  # thin first-year ice, first stage
+    89: (175, 250, 0),  # thin first-year ice, second stage
+    91: (0, 200, 20),  # medium first-year ice
+    93: (0, 120, 0),  # thick first-year ice
+    95: (180, 100, 50),  # old ice
+    96: (255, 120, 10),  # second-year ice
+    97: (200, 0, 0),  # multi-year ice
 }
 UNDEFINED = ("undefined ice", (255, 255, 255))
 FAST_ICE = ("fast ice", (150, 150, 150))

@@ -41,8 +41,10 @@ def concentration_chart(conc, *, stage=DEFAULT_STAGE, open_water=OPEN_WATER, lan
 
     stage = float(stage)
     if not np.isfinite(stage) or stage_name(stage).startswith("unknown"):
-        raise ValueError(f"stage {stage:g} is not a WMO stage of development code; give one, e.g. "
-                         f"{DEFAULT_STAGE} ({stage_name(DEFAULT_STAGE)})")
+        raise ValueError(
+            f"stage {stage:g} is not a WMO stage of development code; give one, e.g. "
+            f"{DEFAULT_STAGE} ({stage_name(DEFAULT_STAGE)})"
+        )
     if not 0 <= open_water <= 1:
         raise ValueError(f"open_water is a fraction (0-1), got {open_water!r}")
     name = str(conc.name)
@@ -59,21 +61,30 @@ def concentration_chart(conc, *, stage=DEFAULT_STAGE, open_water=OPEN_WATER, lan
     ct = np.where(np.isnan(frac) | is_land, np.nan, ct)
     sa = np.where(ice & ~np.isnan(ct), stage, np.nan)
     dims = conc.dims
-    ds = xr.Dataset({"CT": (dims, ct.astype(np.float32), {"long_name": "total concentration",
-                                                           "units": "0.1"}),
-                     "SA": (dims, sa.astype(np.float32),
-                            {"long_name": "stage of development (assumed)", "units": "1"}),
-                     "land": (dims, is_land)}, coords=conc.coords)
-    assumed = [f"{name}: ice of {open_water:g} or more is taken as {stage_name(stage)} (WMO stage "
-               f"{stage:g}), an assumption: a concentration does not tell the stage; below "
-               f"{open_water:g} is open water"] + flagged.notes
+    ds = xr.Dataset(
+        {
+            "CT": (dims, ct.astype(np.float32), {"long_name": "total concentration", "units": "0.1"}),
+            "SA": (
+                dims,
+                sa.astype(np.float32),
+                {"long_name": "stage of development (assumed)", "units": "1"},
+            ),
+            "land": (dims, is_land),
+        },
+        coords=conc.coords,
+    )
+    assumed = [
+        f"{name}: ice of {open_water:g} or more is taken as {stage_name(stage)} (WMO stage "
+        f"{stage:g}), an assumption: a concentration does not tell the stage; below "
+        f"{open_water:g} is open water"
+    ] + flagged.notes
     unknown = np.isnan(ct) & ~is_land
     if unknown.any():
-        assumed.append(f"{name}: {int(unknown.sum())} pixels of no concentration are unknown ice "
-                       "(impassable)")
+        assumed.append(
+            f"{name}: {int(unknown.sum())} pixels of no concentration are unknown ice (impassable)"
+        )
     ds.attrs["assumptions"] = "; ".join(assumed)
     return ds, assumed
 
 
-__all__ = ["STANDARD_NAME", "DEFAULT_STAGE", "OPEN_WATER", "is_concentration",
-           "concentration_chart"]
+__all__ = ["STANDARD_NAME", "DEFAULT_STAGE", "OPEN_WATER", "is_concentration", "concentration_chart"]

@@ -37,14 +37,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .codes import (
-    FAST_ICE,
-    FIRST_YEAR,
-    STAGE_CODES,
-    UNKNOWN_STAGE,
-    stage_name,
-    thickest_first_year,
-)
+from .codes import FAST_ICE, FIRST_YEAR, STAGE_CODES, UNKNOWN_STAGE, stage_name, thickest_first_year
 
 FAST_ICE_CHOICES = ("nearby", "closed")
 DEFAULT_FAST_ICE = "nearby"
@@ -63,8 +56,10 @@ def check_fast_ice(fast_ice):
         code = np.nan
     if np.isfinite(code) and int(code) == code and int(code) in STAGE_CODES and code not in (55, 80, 99):
         return code
-    raise ValueError(f"fast_ice must be 'nearby', 'closed' or a WMO stage code of ice (81-98, e.g. 93 "
-                     f"thick first-year ice), got {fast_ice!r}")
+    raise ValueError(
+        f"fast_ice must be 'nearby', 'closed' or a WMO stage code of ice (81-98, e.g. 93 "
+        f"thick first-year ice), got {fast_ice!r}"
+    )
 
 
 def fast_ice_mask(ds):
@@ -97,9 +92,12 @@ def fast_ice_stage(ds, fast_ice=DEFAULT_FAST_ICE):
     if rule == "nearby":
         codes = [ds[s].values[~land] for s in ("SA", "SB", "SC") if s in ds]
         code = thickest_first_year(np.concatenate(codes)) if codes else None
-        why = ("the thickest first-year stage the chart shows nearby (on the grid)" if code is not None
-               else f"no first-year stage ({', '.join(map(str, FIRST_YEAR))}) on the grid: the "
-                    "thickest first-year stage")
+        why = (
+            "the thickest first-year stage the chart shows nearby (on the grid)"
+            if code is not None
+            else f"no first-year stage ({', '.join(map(str, FIRST_YEAR))}) on the grid: the "
+            "thickest first-year stage"
+        )
         code = DEFAULT_FAST_STAGE if code is None else code
     else:
         code, why = rule, "as you chose"
@@ -115,5 +113,7 @@ def free_water_rule(ds):
     said = [f"{name} on {n} pixels" for name, n in counts.items() if n]
     if not said:
         return kind > 0, ""
-    return kind > 0, (f"{' and '.join(said)} (CT 01/02): freely navigable water (WMO-No. 259), "
-                      "costed as ice free; icebergs may be present")
+    return kind > 0, (
+        f"{' and '.join(said)} (CT 01/02): freely navigable water (WMO-No. 259), "
+        "costed as ice free; icebergs may be present"
+    )

@@ -54,8 +54,7 @@ def _ring_region(ring):
             warnings.simplefilter("ignore")  # winding corrections are what we ask for
             if abs(winding) > 180:  # around a pole: the pole of the ring's hemisphere
                 north = np.asarray(ring.coords)[:, 1].mean() >= 0
-                poly = antimeridian.fix_polygon(poly, force_north_pole=north,
-                                                force_south_pole=not north)
+                poly = antimeridian.fix_polygon(poly, force_north_pole=north, force_south_pole=not north)
             else:
                 poly = antimeridian.fix_polygon(poly, fix_winding=True)
     return poly if poly.is_valid else _polygonal(shapely.make_valid(poly))
@@ -80,8 +79,13 @@ def fix_lonlat(geom):
 
     if geom is None or geom.is_empty:
         return shapely.Polygon()
-    rings = [r for p in shapely.get_parts(geom) if p.geom_type == "Polygon"
-             for r in (p.exterior, *p.interiors) if len(r.coords) >= 4]
+    rings = [
+        r
+        for p in shapely.get_parts(geom)
+        if p.geom_type == "Polygon"
+        for r in (p.exterior, *p.interiors)
+        if len(r.coords) >= 4
+    ]
     regions = [g for g in (_ring_region(r) for r in rings) if not g.is_empty]
     if not regions:
         return shapely.Polygon()

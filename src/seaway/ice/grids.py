@@ -55,12 +55,14 @@ class Grid:
     def coords(self) -> dict:
         """xarray coordinates with CF attributes."""
         if self.geographic:
-            return {"lat": ("lat", self.y, {"standard_name": "latitude", "units": "degrees_north"}),
-                    "lon": ("lon", self.x, {"standard_name": "longitude", "units": "degrees_east"})}
-        return {"y": ("y", self.y, {"standard_name": "projection_y_coordinate", "units": "km",
-                                    "axis": "Y"}),
-                "x": ("x", self.x, {"standard_name": "projection_x_coordinate", "units": "km",
-                                    "axis": "X"})}
+            return {
+                "lat": ("lat", self.y, {"standard_name": "latitude", "units": "degrees_north"}),
+                "lon": ("lon", self.x, {"standard_name": "longitude", "units": "degrees_east"}),
+            }
+        return {
+            "y": ("y", self.y, {"standard_name": "projection_y_coordinate", "units": "km", "axis": "Y"}),
+            "x": ("x", self.x, {"standard_name": "projection_x_coordinate", "units": "km", "axis": "X"}),
+        }
 
     def centres(self) -> tuple:
         """2-D arrays (X, Y) of pixel centres in CRS units."""
@@ -70,12 +72,12 @@ class Grid:
 
 def _axis(lo, hi, step, name):
     if not (np.isfinite(lo) and np.isfinite(hi) and hi > lo and step > 0):
-        raise ValueError(f"{name}: need finite low < high and a positive resolution, got "
-                         f"{lo!r}, {hi!r}, {step!r}")
+        raise ValueError(
+            f"{name}: need finite low < high and a positive resolution, got {lo!r}, {hi!r}, {step!r}"
+        )
     n = int(round((hi - lo) / step))
     if n < 2 or abs(n * step - (hi - lo)) > 1e-6 * step:
-        raise ValueError(f"{name}: extent {hi - lo:g} is not a whole number (>= 2) of "
-                         f"resolution {step:g}")
+        raise ValueError(f"{name}: extent {hi - lo:g} is not a whole number (>= 2) of resolution {step:g}")
     return lo + (np.arange(n) + 0.5) * step
 
 

@@ -34,11 +34,35 @@ INF = float("inf")
 #: Grinyak et al. 2022, Table 2 ("Arc7 and stronger"), by WMO stage code. The paper's "thin" (тонкий) is
 #: thin first-year ice (87, with its stages 88 and 89), "first-year" (однолетний) the undivided
 #: 86, "medium" 91, "thick" 93; "new ice" (начальные виды) 81.
-TABLE_2 = {55: 2.0, 81: 3.0, 82: 5.0, 84: 8.0, 83: 10.0, 85: 13.0, 87: 15.0, 88: 15.0,
-           89: 15.0, 86: 20.0, 91: 25.0, 93: 30.0}
+TABLE_2 = {
+    55: 2.0,
+    81: 3.0,
+    82: 5.0,
+    84: 8.0,
+    83: 10.0,
+    85: 13.0,
+    87: 15.0,
+    88: 15.0,
+    89: 15.0,
+    86: 20.0,
+    91: 25.0,
+    93: 30.0,
+}
 #: Grinyak et al. 2022, Table 3 (Arc5).
-TABLE_3 = {55: 1.0, 81: 3.0, 82: 5.0, 84: 10.0, 83: 15.0, 85: 25.0, 87: 30.0, 88: 30.0,
-           89: 30.0, 86: INF, 91: INF, 93: INF}
+TABLE_3 = {
+    55: 1.0,
+    81: 3.0,
+    82: 5.0,
+    84: 10.0,
+    83: 15.0,
+    85: 25.0,
+    87: 30.0,
+    88: 30.0,
+    89: 30.0,
+    86: INF,
+    91: INF,
+    93: INF,
+}
 
 
 def derive_table(ice_class) -> dict:
@@ -99,9 +123,11 @@ def ice_impact(stage, ice_class="Arc7", *, table=None, unknown="raise", concentr
         if isinstance(unknown, str):
             if unknown != "raise":
                 raise ValueError(f"unknown must be 'raise' or a number, got {unknown!r}")
-            raise ValueError(f"stage codes {bad[:10]} have no impact for {cls.name}; known WMO "
-                             f"codes: {sorted(table)} (NaN is impassable). Pass unknown=np.inf "
-                             "to forbid them or unknown=<u> to cost them")
+            raise ValueError(
+                f"stage codes {bad[:10]} have no impact for {cls.name}; known WMO "
+                f"codes: {sorted(table)} (NaN is impassable). Pass unknown=np.inf "
+                "to forbid them or unknown=<u> to cost them"
+            )
         u[~known] = float(unknown)
     if concentration is not None:
         c = np.asarray(getattr(concentration, "values", concentration), dtype=float)
@@ -109,8 +135,11 @@ def ice_impact(stage, ice_class="Arc7", *, table=None, unknown="raise", concentr
     if hasattr(stage, "dims"):
         out = stage.copy(data=u)
         out.name = "ice_impact"
-        out.attrs = {"long_name": f"ice impact u for a {cls.name} vessel (Grinyak et al. 2022)",
-                     "units": "1", "ice_class": cls.name}
+        out.attrs = {
+            "long_name": f"ice impact u for a {cls.name} vessel (Grinyak et al. 2022)",
+            "units": "1",
+            "ice_class": cls.name,
+        }
         return out
     return u
 
@@ -134,24 +163,38 @@ def governing_stage(ds, unknown_stage=UNKNOWN_STAGE, *, fast_ice=DEFAULT_FAST_IC
     blocked = ds["land"].values | off | (fast if code is None else np.zeros(ct.shape, bool))
     stage = np.where(fast & ~blocked, code if code is not None else np.nan, stage)
     out = ds["CT"].copy(data=np.where(blocked, np.nan, stage)).rename("stage_of_development")
-    out.attrs = {"long_name": "governing stage of development (WMO code)", "units": "1",
-                 "assumptions": tuple(n for n in (fast_note, free_note) if n)}
+    out.attrs = {
+        "long_name": "governing stage of development (WMO code)",
+        "units": "1",
+        "assumptions": tuple(n for n in (fast_note, free_note) if n),
+    }
     return out
 
 
-def chart_impact(ds, ice_class="Arc7", *, unknown=INF, table=None, use_concentration=False,
-                 fast_ice=DEFAULT_FAST_ICE):
+def chart_impact(
+    ds, ice_class="Arc7", *, unknown=INF, table=None, use_concentration=False, fast_ice=DEFAULT_FAST_ICE
+):
     """u for a SIGRID-style chart Dataset: ice_impact of governing_stage(ds, fast_ice=...); land,
     ice shelves and pixels off the chart are inf; stages the table lacks (old ice, glacier ice
     at 1/10 or more, 99) cost `unknown` (impassable by default: conservative, never open water).
     Fast ice, bergy water and icebergs follow seaway.ice.forms; what was assumed is in the
     result's ``assumptions`` attribute (and in Route.assumptions of routes found on it)."""
     stage = governing_stage(ds, fast_ice=fast_ice)
-    u = ice_impact(stage, ice_class, table=table, unknown=unknown,
-                   concentration=ds["CT"] if use_concentration else None)
+    u = ice_impact(
+        stage, ice_class, table=table, unknown=unknown, concentration=ds["CT"] if use_concentration else None
+    )
     u.attrs["assumptions"] = stage.attrs["assumptions"]
     return u
 
 
-__all__ = ["TABLE_2", "TABLE_3", "ICE_IMPACT", "derive_table", "table_for", "ice_impact",
-           "governing_stage", "chart_impact", "IceClass"]
+__all__ = [
+    "TABLE_2",
+    "TABLE_3",
+    "ICE_IMPACT",
+    "derive_table",
+    "table_for",
+    "ice_impact",
+    "governing_stage",
+    "chart_impact",
+    "IceClass",
+]

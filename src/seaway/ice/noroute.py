@@ -42,9 +42,19 @@ NO_CLASS = len(LADDER) + 1  # the level of what no class may enter
 SHOWN = 4  # kinds of ice named in the message
 
 
-def explain_no_route(ds, ice_class, start, end, *, cost=None, neighbourhood=5,
-                     fast_ice=DEFAULT_FAST_ICE, blocked_name="closed by the cost, not by the ice",
-                     show=None, asked=None) -> NoRouteError:
+def explain_no_route(
+    ds,
+    ice_class,
+    start,
+    end,
+    *,
+    cost=None,
+    neighbourhood=5,
+    fast_ice=DEFAULT_FAST_ICE,
+    blocked_name="closed by the cost, not by the ice",
+    show=None,
+    asked=None,
+) -> NoRouteError:
     """The NoRouteError saying why an `ice_class` ship gets no route from `start` to `end` on
     the ice chart `ds` (a SIGRID-style Dataset: CT, SA, ..., land; or one with a
     stage_of_development), with the attributes of seaway.errors.NoRouteError: cause,
@@ -58,7 +68,9 @@ def explain_no_route(ds, ice_class, start, end, *, cost=None, neighbourhood=5,
     cls = get_class(ice_class).name
     stage = _stage(ds, fast_ice)
     if cost is None:
-        cost = chart_impact(ds, cls, fast_ice=fast_ice) if "SA" in ds else ice_impact(stage, cls, unknown=np.inf)
+        cost = (
+            chart_impact(ds, cls, fast_ice=fast_ice) if "SA" in ds else ice_impact(stage, cls, unknown=np.inf)
+        )
     land = ds["land"] if "land" in ds else None
     prepared = PreparedChart(cost, land=land, neighbourhood=neighbourhood)
     chart = prepared.chart
@@ -70,22 +82,31 @@ def explain_no_route(ds, ice_class, start, end, *, cost=None, neighbourhood=5,
     a, b = asked or (start, end)
     head = f"no route for {who} from {_pt(a)} to {_pt(b)}: "
     if way is None:
-        err = NoRouteError(head + "the ends lie in separate water bodies even with all ice open "
-                           f"(or a passage is narrower than the land rule allows with neighbourhood="
-                           f"{neighbourhood}): check the land mask, try a larger neighbourhood or "
-                           "choose other ends", cause="land")
+        err = NoRouteError(
+            head + "the ends lie in separate water bodies even with all ice open "
+            f"(or a passage is narrower than the land rule allows with neighbourhood="
+            f"{neighbourhood}): check the land mask, try a larger neighbourhood or "
+            "choose other ends",
+            cause="land",
+        )
         return with_reach(err, reach, show, unit, asked[1] if asked else None)
     px, km, _ = weighted_samples(way)  # the pixels it crosses, every half pixel, and their km
     closing = kinds.on(px, km)
     weakest = _weakest(kinds, way, px, chart, start, end, neighbourhood)
     said = "; ".join(f"{name}: {km:.0f} km" for name, km in closing[:SHOWN])
     more = f" and {len(closing) - SHOWN} more kinds" if len(closing) > SHOWN else ""
-    through = (f"the weakest class that gets through is {weakest}" if weakest else
-               f"no class of seaway.ice.classes (up to {LADDER[-1]} and the icebreakers) gets through")
+    through = (
+        f"the weakest class that gets through is {weakest}"
+        if weakest
+        else f"no class of seaway.ice.classes (up to {LADDER[-1]} and the icebreakers) gets through"
+    )
     ice = any(kinds.is_ice(name) for name, _ in closing)
-    err = NoRouteError(f"{head}{'ice' if ice else 'what'} closes the way: {said}{more}; {through}",
-                       cause="ice" if ice else "impassable", closing_ice=closing,
-                       weakest_class=weakest)
+    err = NoRouteError(
+        f"{head}{'ice' if ice else 'what'} closes the way: {said}{more}; {through}",
+        cause="ice" if ice else "impassable",
+        closing_ice=closing,
+        weakest_class=weakest,
+    )
     return with_reach(err, reach, show, unit, asked[1] if asked else None)
 
 
@@ -112,11 +133,13 @@ class _Kinds:
             if np.isfinite(own.get(float(code), np.inf)):
                 self.other |= here
                 continue
-            first = next((k for k, c in enumerate(LADDER) if np.isfinite(table_for(c).get(float(code), np.inf))), None)
+            first = next(
+                (k for k, c in enumerate(LADDER) if np.isfinite(table_for(c).get(float(code), np.inf))), None
+            )
             levels[here] = NO_CLASS if first is None else first + 1
         levels[self.other] = NO_CLASS
         self.levels = np.where(land, -1.0, levels)
-        layer = (lambda name: chart_order(ds[name], chart) if name in ds else None)
+        layer = lambda name: chart_order(ds[name], chart) if name in ds else None
         self.off = layer("off_chart")
         self.ct = layer("CT") if "CT" in ds else layer("sea_ice_concentration")
         self.fast = chart_order(fast_ice_mask(ds), chart) != 0 if "CT" in ds else None
@@ -133,7 +156,9 @@ class _Kinds:
         code = self.stage[r, c]
         fast = self.fast is not None and self.fast[r, c]
         if not np.isfinite(code):
-            return "fast ice of unknown stage, closed by the fast_ice rule" if fast else "ice of unknown stage"
+            return (
+                "fast ice of unknown stage, closed by the fast_ice rule" if fast else "ice of unknown stage"
+            )
         text = f"{stage_name(code)} ({self.label} {int(code)}{', assumed' if self.guessed else ''})"
         if fast:
             assumed = self.assumed is not None and self.assumed[r, c]
@@ -144,7 +169,9 @@ class _Kinds:
         level = self.levels[r, c]
         if self.other[r, c]:
             return ""
-        return "no class may enter" if level >= NO_CLASS else f"{LADDER[int(level) - 1]} and stronger may enter"
+        return (
+            "no class may enter" if level >= NO_CLASS else f"{LADDER[int(level) - 1]} and stronger may enter"
+        )
 
     def is_ice(self, name: str) -> bool:
         return not name.startswith(self.blocked_name)
@@ -187,8 +214,11 @@ def _weakest(kinds, way, px, chart, start, end, neighbourhood):
         v = way.vertices
         if all(np.isfinite(seg.leg(a, b)[0]) for a, b in zip(v[:-1], v[1:])):
             return LADDER[k]
-        where = {"lat": chart.lat, "lon": chart.lon} if chart.geographic else \
-            {"dx": chart.grid.dx, "dy": chart.grid.dy}
+        where = (
+            {"lat": chart.lat, "lon": chart.lon}
+            if chart.geographic
+            else {"dx": chart.grid.dx, "dy": chart.grid.dy}
+        )
         try:
             route(u, start, end, land=chart.land, neighbourhood=neighbourhood, **where)
             return LADDER[k]
@@ -199,5 +229,6 @@ def _weakest(kinds, way, px, chart, start, end, neighbourhood):
 
 def _pt(p) -> str:
     return ",".join(f"{float(v):g}" for v in p)
+
 
 __all__ = ["LADDER", "explain_no_route"]

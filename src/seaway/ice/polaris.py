@@ -39,12 +39,26 @@ RIV = {
     "not ice strengthened": (3, 1, 0, -1, -2, -3, -4, -5, -6, -7, -8, -8),
 }
 #: WMO stage code -> POLARIS column (see the module docstring for the conservative choices).
-STAGE_COLUMN = {55: "IF", 81: "new", 82: "new", 84: "grey", 83: "GW", 85: "GW", 88: "TFY1",
-                89: "TFY2", 87: "TFY2", 91: "MFY", 86: "ThFY", 93: "ThFY", 96: "SY", 95: "HMY",
-                97: "HMY", 98: "HMY"}
+STAGE_COLUMN = {
+    55: "IF",
+    81: "new",
+    82: "new",
+    84: "grey",
+    83: "GW",
+    85: "GW",
+    88: "TFY1",
+    89: "TFY2",
+    87: "TFY2",
+    91: "MFY",
+    86: "ThFY",
+    93: "ThFY",
+    96: "SY",
+    95: "HMY",
+    97: "HMY",
+    98: "HMY",
+}
 #: Speed limit (knots) under elevated risk, MSC.1/Circ.1519 Table 1.4.
-SPEED_LIMIT_KN = {"PC1": 11.0, "PC2": 8.0, "PC3": 5.0, "PC4": 5.0, "PC5": 5.0, "PC6": 3.0,
-                  "PC7": 3.0}
+SPEED_LIMIT_KN = {"PC1": 11.0, "PC2": 8.0, "PC3": 5.0, "PC4": 5.0, "PC5": 5.0, "PC6": 3.0, "PC7": 3.0}
 NORMAL, ELEVATED, SPECIAL = 0, 1, 2
 LEVEL_NAMES = ("normal operation", "elevated risk", "special consideration")
 
@@ -117,8 +131,9 @@ def speed_limit_kn(ice_class) -> float:
     return SPEED_LIMIT_KN.get(get_class(ice_class).polaris_class, float("inf"))
 
 
-def polaris_chart(ds, ice_class, *, v0_kn=12.0, elevated_penalty=2.0, unknown_concentration=10.0,
-                  unknown_column="HMY"):
+def polaris_chart(
+    ds, ice_class, *, v0_kn=12.0, elevated_penalty=2.0, unknown_concentration=10.0, unknown_column="HMY"
+):
     """POLARIS layers for a SIGRID-style chart Dataset (CT, CA/SA, CB/SB, CC/SC, land):
 
     rio; level (0/1/2); speed_kn = v0_kn in normal operation, min(v0_kn, limit) under elevated
@@ -128,8 +143,9 @@ def polaris_chart(ds, ice_class, *, v0_kn=12.0, elevated_penalty=2.0, unknown_co
     names = [("CA", "SA"), ("CB", "SB"), ("CC", "SC")]
     partials = [(ds[c].values, ds[s].values) for c, s in names if c in ds and s in ds]
     ct = ds["CT"].values
-    r = rio(ct, partials, ice_class, unknown_concentration=unknown_concentration,
-            unknown_column=unknown_column)
+    r = rio(
+        ct, partials, ice_class, unknown_concentration=unknown_concentration, unknown_column=unknown_column
+    )
     level = operation_level(r, ice_class)
     limit = speed_limit_kn(ice_class)
     speed = np.where(level == NORMAL, v0_kn, np.where(level == ELEVATED, min(v0_kn, limit), 0.0))
@@ -143,14 +159,23 @@ def polaris_chart(ds, ice_class, *, v0_kn=12.0, elevated_penalty=2.0, unknown_co
     out = ds[["land"]].copy()
     dims = ds["CT"].dims
     cls = get_class(ice_class)
-    out["rio"] = (dims, r, {"long_name": f"POLARIS risk index outcome, {cls.polaris_class} RIVs",
-                            "units": "1"})
-    out["level"] = (dims, level, {"long_name": "POLARIS operation level",
-                                  "flag_values": np.array([0, 1, 2], np.int8),
-                                  "flag_meanings": "normal elevated_risk special_consideration"})
+    out["rio"] = (
+        dims,
+        r,
+        {"long_name": f"POLARIS risk index outcome, {cls.polaris_class} RIVs", "units": "1"},
+    )
+    out["level"] = (
+        dims,
+        level,
+        {
+            "long_name": "POLARIS operation level",
+            "flag_values": np.array([0, 1, 2], np.int8),
+            "flag_meanings": "normal elevated_risk special_consideration",
+        },
+    )
     out["speed_kn"] = (dims, speed, {"long_name": "permitted speed", "units": "knot"})
-    out["cost"] = (dims, cost, {"long_name": "time per km (elevated risk penalised)",
-                                "units": "h km-1"})
-    out.attrs.update(ice_class=cls.name, polaris_class=cls.polaris_class,
-                     elevated_penalty=elevated_penalty, v0_kn=v0_kn)
+    out["cost"] = (dims, cost, {"long_name": "time per km (elevated risk penalised)", "units": "h km-1"})
+    out.attrs.update(
+        ice_class=cls.name, polaris_class=cls.polaris_class, elevated_penalty=elevated_penalty, v0_kn=v0_kn
+    )
     return out

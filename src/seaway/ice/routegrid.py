@@ -44,8 +44,9 @@ def _great_circle(a, b, n=64):
     return lat, lon, omega * EARTH_RADIUS_KM
 
 
-def route_grid(start, end, *, chart_bounds=None, dlat=DLAT, margin_km=None,
-               max_pixels=MAX_PIXELS) -> tuple[Grid, str]:
+def route_grid(
+    start, end, *, chart_bounds=None, dlat=DLAT, margin_km=None, max_pixels=MAX_PIXELS
+) -> tuple[Grid, str]:
     """(Grid, a sentence saying what was chosen) for a route from `start` to `end` ((lat, lon)
     in degrees). chart_bounds: (west, south, east, north) of a chart in degrees, or None."""
     lat, lon, km = _great_circle(start, end)
@@ -78,9 +79,11 @@ def route_grid(start, end, *, chart_bounds=None, dlat=DLAT, margin_km=None,
         west, east = -180.0, 180.0
         dlon = 360.0 / max(int(round(360.0 / dlon)), 16)
     if not (north > south and east > west):
-        raise ValueError(f"the route's ends {tuple(start)} and {tuple(end)} lie outside the chart "
-                         f"(lon {chart_bounds[0]:g}..{chart_bounds[2]:g}, lat {chart_bounds[1]:g}.."
-                         f"{chart_bounds[3]:g}); give ends on the chart, or the grid with --grid")
+        raise ValueError(
+            f"the route's ends {tuple(start)} and {tuple(end)} lie outside the chart "
+            f"(lon {chart_bounds[0]:g}..{chart_bounds[2]:g}, lat {chart_bounds[1]:g}.."
+            f"{chart_bounds[3]:g}); give ends on the chart, or the grid with --grid"
+        )
     rows, cols = (north - south) / dlat, (east - west) / dlon
     if rows * cols > max_pixels:
         f = float(np.sqrt(rows * cols / max_pixels))
@@ -93,7 +96,9 @@ def route_grid(start, end, *, chart_bounds=None, dlat=DLAT, margin_km=None,
     nlat = int(round((north - south) / dlat))
     nlon = int(round((east - west) / dlon))
     grid = latlon_grid(south, north, west, east, ((north - south) / nlat, (east - west) / nlon))
-    note = (f"grid: lat {south:.2f}..{north:.2f}, lon {west:.2f}..{east:.2f} at {dlat:.4g} x "
-            f"{dlon:.4g} deg ({dlat * KM_PER_DEG:.1f} km north-south), {nlat} x {nlon} pixels: the "
-            f"great circle between the ends widened by {margin:.0f} km (set it with --grid)")
+    note = (
+        f"grid: lat {south:.2f}..{north:.2f}, lon {west:.2f}..{east:.2f} at {dlat:.4g} x "
+        f"{dlon:.4g} deg ({dlat * KM_PER_DEG:.1f} km north-south), {nlat} x {nlon} pixels: the "
+        f"great circle between the ends widened by {margin:.0f} km (set it with --grid)"
+    )
     return grid, note

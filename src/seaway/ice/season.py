@@ -52,11 +52,8 @@ from ..engine.methods import check_options
 from ..engine.prepared import PreparedChart
 from ..models import EdgeCost, IceSeasonTime
 from . import andreeva
-from .classes import get_class
-from .codes import ICE_FREE
-from .impact import governing_stage
+from .seasonspeed import andreeva_speed_kn, class_speed_kn, table_speed_kn
 from .sigrid import read_sigrid3
-from .speed import ice_speed
 
 if TYPE_CHECKING:
     import datetime
@@ -71,8 +68,16 @@ if TYPE_CHECKING:
     #: Speeds by WMO stage: {stage: knots} or {stage: {max CT tenths: knots}}.
     SpeedTable = Mapping[float, float | Mapping[float, float]]
 
-__all__ = ["read_season", "as_season", "SeasonGrid", "andreeva_speed_kn", "table_speed_kn", "class_speed_kn",
-           "route_season", "arrival_field"]
+__all__ = [
+    "read_season",
+    "as_season",
+    "SeasonGrid",
+    "andreeva_speed_kn",
+    "table_speed_kn",
+    "class_speed_kn",
+    "route_season",
+    "arrival_field",
+]
 
 
 def read_season(charts, grid, **read_kwargs) -> xr.Dataset:
@@ -96,8 +101,10 @@ def read_season(charts, grid, **read_kwargs) -> xr.Dataset:
 def _check_increasing(t, fix):
     if t.size > 1 and not np.all(t[1:] > t[:-1]):
         k = int(np.flatnonzero(~(t[1:] > t[:-1]))[0])
-        raise ValueError(f"chart times must be unique and increasing, but {t[k]} is followed by "
-                         f"{t[k + 1]}: {fix}, and drop duplicate dates")
+        raise ValueError(
+            f"chart times must be unique and increasing, but {t[k]} is followed by "
+            f"{t[k + 1]}: {fix}, and drop duplicate dates"
+        )
 
 
 def as_season(season) -> xr.Dataset:
@@ -114,82 +121,19 @@ def as_season(season) -> xr.Dataset:
     if "thickness" not in ds and "sea_ice_thickness" in by_std:
         ds = ds.assign(thickness=ds[by_std["sea_ice_thickness"]])
     if "time" not in ds.dims:
-        raise ValueError("a season needs a `time` dimension (one chart per time); for one chart, "
-                         "add it with ds.expand_dims(time=[date])")
+        raise ValueError(
+            "a season needs a `time` dimension (one chart per time); for one chart, "
+            "add it with ds.expand_dims(time=[date])"
+        )
     if "CT" not in ds or not ({"SA", "thickness"} & set(ds)):
-        raise ValueError(f"a season needs CT (tenths, or CF sea_ice_area_fraction) and SA (WMO "
-                         f"stage) or thickness (m, or CF sea_ice_thickness); it has {sorted(ds.data_vars)}")
+        raise ValueError(
+            f"a season needs CT (tenths, or CF sea_ice_area_fraction) and SA (WMO "
+            f"stage) or thickness (m, or CF sea_ice_thickness); it has {sorted(ds.data_vars)}"
+        )
     if "land" not in ds:
         ds = ds.assign(land=xr.zeros_like(ds["CT"], dtype=bool))
     _check_increasing(ds["time"].values, "ds.sortby('time')")
     return ds
-
-
-def _closed(frame, ct, ice_class, concentration_limit):
-    """Where no class may go: land, off the chart, unknown concentration, over the class's limit."""
-    shut = np.isnan(ct)
-    for name in ("land", "off_chart"):
-        if name in frame:
-            shut |= np.asarray(frame[name].values, dtype=bool)
-    if concentration_limit:
-        shut |= ct > get_class(ice_class).max_concentration
-    return shut
-
-
-def andreeva_speed_kn(frame, ice_class, v0_kn, *, h_pass_m=None, stage_thickness="upper",
-                      other_factor=1.0, concentration_limit=True) -> np.ndarray:
-    """Andreeva 2021's V = F * V0 (knots) on one chart of a season; 0 where closed."""
-    ct = np.asarray(frame["CT"].values, dtype=float)
-    h_pass = get_class(ice_class).h_pass if h_pass_m is None else float(h_pass_m)
-    if not h_pass > 0:
-        raise ValueError(f"{get_class(ice_class).name} passes no ice (h_pass 0); give h_pass_m")
-    if "thickness" in frame:
-        h = np.asarray(frame["thickness"].values, dtype=float)
-    else:
-        if stage_thickness not in ("upper", "mid"):
-            raise ValueError(f"stage_thickness must be 'upper' or 'mid', got {stage_thickness!r}")
-        h = andreeva.stage_thickness(governing_stage(frame), stage_thickness)
-    h = np.where(ct == 0, 0.0, h)
-    speed = andreeva.f2(h, h_pass) * np.asarray(other_factor, dtype=float) * v0_kn
-    return np.where(_closed(frame, ct, ice_class, concentration_limit), 0.0, speed)
-
-
-def table_speed_kn(frame, ice_class, table, *, concentration_limit=True) -> np.ndarray:
-    """Speeds (knots) from a user table on one chart: {stage: kn} or {stage: {max CT: kn}}."""
-    ct = np.asarray(frame["CT"].values, dtype=float)
-    stage = governing_stage(frame).values
-    speed = np.zeros(ct.shape)
-    known = np.isnan(stage)
-    for code, entry in table.items():
-        hit = stage == float(code)
-        known |= hit
-        if isinstance(entry, dict):
-            left = hit.copy()
-            for limit in sorted(entry):
-                take = left & (ct <= float(limit))
-                speed[take], left = float(entry[limit]), left & ~take
-            speed[left] = 0.0  # concentrations above the table's last row: closed
-        else:
-            speed[hit] = float(entry)
-    if not known.all():
-        missing = sorted({float(c) for c in np.unique(stage[~known])})
-        raise ValueError(f"the speed table has no entry for stages {missing[:10]} met in the "
-                         f"season (e.g. {ICE_FREE} ice free, 99 unknown); add them (0 knots closes them)")
-    if not np.all(np.isfinite(speed) & (speed >= 0)):
-        raise ValueError("speeds in the table must be finite knots >= 0")
-    return np.where(_closed(frame, ct, ice_class, concentration_limit), 0.0, speed)
-
-
-def class_speed_kn(frame, ice_class, v0_kn, *, concentration_limit=True, **options) -> np.ndarray:
-    """The class's own model on one chart (knots; 0 where closed): seaway.ice.speed's Andreeva
-    2021 for Register classes (with the concentration limit), IMO POLARIS for the others."""
-    if get_class(ice_class).system in ("RS", "none"):
-        return andreeva_speed_kn(frame, ice_class, v0_kn, concentration_limit=concentration_limit, **options)
-    if "SA" not in frame:
-        raise ValueError(f"POLARIS ({get_class(ice_class).name}) reads the stages of the ice (SA); "
-                         "the season has none: give a Register class, or speed='andreeva'")
-    v = np.asarray(ice_speed(frame, ice_class, v0_kn).values, float)
-    return np.where(_closed(frame, np.asarray(frame["CT"].values, float), ice_class, False), 0.0, v)
 
 
 class SeasonGrid:
@@ -213,8 +157,10 @@ class SeasonGrid:
         if land is not None:
             land = np.asarray(getattr(land, "values", land), bool)
             if land.shape != self.shape:
-                raise ValueError(f"land has {land.shape} pixels but the season's charts {self.shape}: "
-                                 "give a land mask on the charts' grid")
+                raise ValueError(
+                    f"land has {land.shape} pixels but the season's charts {self.shape}: "
+                    "give a land mask on the charts' grid"
+                )
             dry |= land
         self.dry = dry
         spacing = np.diff(self.times) / np.timedelta64(1, "h")
@@ -235,24 +181,35 @@ class SeasonGrid:
         try:
             dep = t[0] if departure is None else np.datetime64(departure)
         except (TypeError, ValueError):
-            raise ValueError(f"departure must be a date such as '2026-07-01T12' (or a datetime64), "
-                             f"got {departure!r}") from None
+            raise ValueError(
+                f"departure must be a date such as '2026-07-01T12' (or a datetime64), got {departure!r}"
+            ) from None
         end = t[-1] + np.timedelta64(int(round(self.last_valid_h * 3600)), "s")
         if not (t[0] <= dep <= end):
-            raise ValueError(f"departure {dep} is outside the season ({t[0]} to {end}, the last "
-                             "chart's validity): the ice then is unknown; depart within the season "
-                             "or add charts that cover the departure")
+            raise ValueError(
+                f"departure {dep} is outside the season ({t[0]} to {end}, the last "
+                "chart's validity): the ice then is unknown; depart within the season "
+                "or add charts that cover the departure"
+            )
         return dep, int(np.searchsorted(t, dep, side="right")) - 1
 
-    def hours_per_km(self, ice_class: str | classes.IceClass, v0_kn: float, departure: Departure = None,
-                     speed: str | SpeedTable = "andreeva", **speed_options: Any
-                     ) -> tuple[npt.NDArray[np.float32], npt.NDArray[np.float64], np.datetime64]:
+    def hours_per_km(
+        self,
+        ice_class: str | classes.IceClass,
+        v0_kn: float,
+        departure: Departure = None,
+        speed: str | SpeedTable = "andreeva",
+        **speed_options: Any,
+    ) -> tuple[npt.NDArray[np.float32], npt.NDArray[np.float64], np.datetime64]:
         """(hours per km float32 (frames, rows, cols) from the chart valid at departure on, inf
         where closed; validity of each in hours after departure; departure)."""
         if not (np.isfinite(v0_kn) and v0_kn > 0):
             raise ValueError(f"v0_kn must be a positive speed in knots, got {v0_kn!r}")
         dep, k0 = self.departure_frames(departure)
-        if not (callable(getattr(speed, "get", None)) or (isinstance(speed, str) and speed in ("andreeva", "class"))):
+        if not (
+            callable(getattr(speed, "get", None))
+            or (isinstance(speed, str) and speed in ("andreeva", "class"))
+        ):
             raise ValueError(f"speed must be 'andreeva', 'class' or a table {{stage: knots}}, got {speed!r}")
         hours = np.empty((self.times.size - k0,) + self.shape, np.float32)
         for i, k in enumerate(range(k0, self.times.size)):  # frame by frame: no 7-frame float64 copies
@@ -268,8 +225,20 @@ class SeasonGrid:
         return hours, valid_from_h.astype(float), dep
 
 
-def route_season(season, start, end, *, ice_class="Arc7", v0_kn=12.0, departure=None,
-                 speed="andreeva", land=None, neighbourhood=5, method="astar", **speed_options):
+def route_season(
+    season,
+    start,
+    end,
+    *,
+    ice_class="Arc7",
+    v0_kn=12.0,
+    departure=None,
+    speed="andreeva",
+    land=None,
+    neighbourhood=5,
+    method="astar",
+    **speed_options,
+):
     """The earliest-arriving route from `start` to `end` through a season of ice charts.
 
     season: a season Dataset or NetCDF path (see the module docstring and as_season), or a
@@ -285,14 +254,27 @@ def route_season(season, start, end, *, ice_class="Arc7", v0_kn=12.0, departure=
     return grid.prepare(neighbourhood).route(start, end, model=model, method=method)
 
 
-def arrival_field(season, start, *, ice_class="Arc7", v0_kn=12.0, departure=None,
-                  speed="andreeva", land=None, neighbourhood=5, **speed_options):
+def arrival_field(
+    season,
+    start,
+    *,
+    ice_class="Arc7",
+    v0_kn=12.0,
+    departure=None,
+    speed="andreeva",
+    land=None,
+    neighbourhood=5,
+    **speed_options,
+):
     """Earliest arrival at every pixel from `start` (hours after departure; inf where never),
     a DataArray on the season's grid: isochrones of the voyage."""
     grid = season if isinstance(season, SeasonGrid) else SeasonGrid(season, land)
     model = IceSeasonTime(grid, ice_class, v0_kn, departure=departure, speed=speed, **speed_options)
     out = grid.prepare(neighbourhood).cost_field(start, model=model)
     out.name = "arrival_hours"
-    out.attrs.update(long_name="earliest arrival after departure (waiting allowed)",
-                     departure=str(model.departure), ice_class=model.ice_class)
+    out.attrs.update(
+        long_name="earliest arrival after departure (waiting allowed)",
+        departure=str(model.departure),
+        ice_class=model.ice_class,
+    )
     return out

@@ -46,8 +46,10 @@ def _require():
         import rasterio.features  # noqa: F401
         import shapely  # noqa: F401
     except ImportError as exc:
-        raise ImportError(f"seaway.ice.sigrid needs the optional packages pyogrio, shapely, "
-                          f"rasterio, pyproj and antimeridian ({exc.name} is missing): {EXTRA}") from exc
+        raise ImportError(
+            f"seaway.ice.sigrid needs the optional packages pyogrio, shapely, "
+            f"rasterio, pyproj and antimeridian ({exc.name} is missing): {EXTRA}"
+        ) from exc
 
 
 def _check_contents(path, meta, fields, wkb):
@@ -57,21 +59,27 @@ def _check_contents(path, meta, fields, wkb):
     if len(wkb) == 0:
         raise ValueError(f"{path}: the layer has no features (an empty SIGRID-3 chart)")
     if not {"CT", "SA", "POLY_TYPE"} & set(fields):
-        raise ValueError(f"{path}: none of the SIGRID-3 fields CT, SA, POLY_TYPE is present "
-                         f"(fields: {sorted(fields)}); is it a SIGRID-3 ice chart?")
+        raise ValueError(
+            f"{path}: none of the SIGRID-3 fields CT, SA, POLY_TYPE is present "
+            f"(fields: {sorted(fields)}); is it a SIGRID-3 ice chart?"
+        )
     geoms = shapely.from_wkb(wkb)
     kinds = shapely.get_type_id(geoms)
     other = ~np.isin(kinds, [-1, 3, 6, 7])  # missing, Polygon, MultiPolygon, GeometryCollection
     if other.any():
         types = sorted({g.geom_type for g in geoms[other]})
-        raise ValueError(f"{path}: {int(other.sum())} of {len(geoms)} features are not polygons "
-                         f"({', '.join(types)}); SIGRID-3 charts are polygon layers")
+        raise ValueError(
+            f"{path}: {int(other.sum())} of {len(geoms)} features are not polygons "
+            f"({', '.join(types)}); SIGRID-3 charts are polygon layers"
+        )
     if not meta["crs"]:
         box = shapely.total_bounds(geoms)
         if np.all(np.isfinite(box)) and (np.abs(box[[0, 2]]).max() > 360 or np.abs(box[[1, 3]]).max() > 90):
-            raise ValueError(f"{path}: the file states no CRS and its coordinates (x {box[0]:.6g}.."
-                             f"{box[2]:.6g}, y {box[1]:.6g}..{box[3]:.6g}) are not degrees; supply "
-                             "the .prj file (or set the CRS) so it can be reprojected")
+            raise ValueError(
+                f"{path}: the file states no CRS and its coordinates (x {box[0]:.6g}.."
+                f"{box[2]:.6g}, y {box[1]:.6g}..{box[3]:.6g}) are not degrees; supply "
+                "the .prj file (or set the CRS) so it can be reprojected"
+            )
 
 
 def _decode(fields: dict, n: int, rule: str) -> dict:
@@ -133,44 +141,72 @@ def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_tou
         shapes = wrap_copies(geoms, grid.x[0], grid.x[-1])
     else:
         shapes = [(g, i) for i, g in enumerate(geoms) if not g.is_empty]
-    index = rasterio.features.rasterize(shapes, out_shape=grid.shape, fill=-1, dtype="int32",
-                                        transform=Affine(*grid.transform()),
-                                        all_touched=all_touched)
+    index = rasterio.features.rasterize(
+        shapes,
+        out_shape=grid.shape,
+        fill=-1,
+        dtype="int32",
+        transform=Affine(*grid.transform()),
+        all_touched=all_touched,
+    )
     if (index < 0).all():
         box = shapely.total_bounds(geoms)
         raise ValueError(
             f"{path}: none of its {n} polygons falls on the grid (their extent in the grid's CRS "
             f"{grid.crs} is x {box[0]:.6g}..{box[2]:.6g}, y {box[1]:.6g}..{box[3]:.6g}); check the "
-            f"file's CRS ({str(meta['crs'] or 'none: read as EPSG:4326')[:80]}) and the grid")
+            f"file's CRS ({str(meta['crs'] or 'none: read as EPSG:4326')[:80]}) and the grid"
+        )
     layers = _decode(fields, n, concentration)
     off = index < 0
     dims = grid.dims()
     data: dict[str, tuple] = {}
-    attrs = {"CT": ("total concentration", "0.1"), "CA": ("partial concentration of SA", "0.1"),
-             "CB": ("partial concentration of SB", "0.1"), "CC": ("partial concentration of SC", "0.1"),
-             "SA": ("stage of development, thickest (WMO code)", "1"),
-             "SB": ("stage of development, second (WMO code)", "1"),
-             "SC": ("stage of development, third (WMO code)", "1")}
+    attrs = {
+        "CT": ("total concentration", "0.1"),
+        "CA": ("partial concentration of SA", "0.1"),
+        "CB": ("partial concentration of SB", "0.1"),
+        "CC": ("partial concentration of SC", "0.1"),
+        "SA": ("stage of development, thickest (WMO code)", "1"),
+        "SB": ("stage of development, second (WMO code)", "1"),
+        "SC": ("stage of development, third (WMO code)", "1"),
+    }
     for name, (long_name, units) in attrs.items():
         values = np.append(layers[name], np.nan)[index].astype(np.float32)
         data[name] = (dims, values, {"long_name": long_name, "units": units})
     for name, whose in zip(_FORMS, _STAGES):
         values = np.append(layers[name], np.nan)[index].astype(np.float32)
-        data[name] = (dims, values, {"long_name": f"form of ice of {whose} (SIGRID-3 code; 8 fast ice)",
-                                     "units": "1", "flag_values": np.array(sorted(FORM_CODES), np.int8),
-                                     "flag_meanings": " ".join(_flag(n) for _, n in sorted(FORM_CODES.items()))})
-    data["free_water"] = (dims, np.append(layers["free_water"], 0)[index].astype(np.uint8),
-                          {"long_name": "freely navigable water by its CT code (WMO-No. 259)",
-                           "flag_values": np.array([0, 1, 2], np.uint8),
-                           "flag_meanings": "not_coded_so open_water bergy_water"})
+        data[name] = (
+            dims,
+            values,
+            {
+                "long_name": f"form of ice of {whose} (SIGRID-3 code; 8 fast ice)",
+                "units": "1",
+                "flag_values": np.array(sorted(FORM_CODES), np.int8),
+                "flag_meanings": " ".join(_flag(n) for _, n in sorted(FORM_CODES.items())),
+            },
+        )
+    data["free_water"] = (
+        dims,
+        np.append(layers["free_water"], 0)[index].astype(np.uint8),
+        {
+            "long_name": "freely navigable water by its CT code (WMO-No. 259)",
+            "flag_values": np.array([0, 1, 2], np.uint8),
+            "flag_meanings": "not_coded_so open_water bergy_water",
+        },
+    )
     for name in ("land", "ice_shelf"):
         data[name] = (dims, np.append(layers[name], False)[index])
     data["off_chart"] = (dims, off, {"long_name": "no chart polygon at the pixel centre"})
     data["polygon"] = (dims, index, {"long_name": "index of the source polygon (-1 none)"})
     ds = xr.Dataset(data, coords=grid.coords())
-    ds.attrs.update(source=str(path), crs=grid.crs, source_crs=str(meta["crs"])[:200],
-                    concentration_rule=concentration, polygons=n, repaired_polygons=repaired,
-                    Conventions="CF-1.8")
+    ds.attrs.update(
+        source=str(path),
+        crs=grid.crs,
+        source_crs=str(meta["crs"])[:200],
+        concentration_rule=concentration,
+        polygons=n,
+        repaired_polygons=repaired,
+        Conventions="CF-1.8",
+    )
     return ds
 
 
@@ -191,8 +227,9 @@ def read_nsidc_g02202(path, grid: Grid | None = None, *, variable="cdr_seaice_co
         crs = src["projection"].attrs.get("proj4text") or "EPSG:3411"
     native = Grid(crs, xs / 1000.0, ys / 1000.0)
     if grid is not None:
-        tr = pyproj.Transformer.from_crs(pyproj.CRS.from_user_input(grid.crs),
-                                         pyproj.CRS.from_user_input(crs), always_xy=True)
+        tr = pyproj.Transformer.from_crs(
+            pyproj.CRS.from_user_input(grid.crs), pyproj.CRS.from_user_input(crs), always_xy=True
+        )
         gx, gy = grid.centres()
         x, y = tr.transform(gx, gy)
         col = np.rint((x - xs[0]) / (xs[1] - xs[0])).astype(np.int64)
@@ -205,15 +242,24 @@ def read_nsidc_g02202(path, grid: Grid | None = None, *, variable="cdr_seaice_co
     ct = np.where((raw >= 0) & (raw <= 100), raw / 10.0, np.nan).astype(np.float32)
     land = np.isin(raw, [252, 253, 254])
     dims = grid.dims()
-    data = {"CT": (dims, ct, {"long_name": "total concentration", "units": "0.1"}),
-            "land": (dims, land, {"long_name": "land, coast or lake (G02202 flags 252-254)"}),
-            "off_chart": (dims, ~inside, {"long_name": "outside the product's grid"})}
+    data = {
+        "CT": (dims, ct, {"long_name": "total concentration", "units": "0.1"}),
+        "land": (dims, land, {"long_name": "land, coast or lake (G02202 flags 252-254)"}),
+        "off_chart": (dims, ~inside, {"long_name": "outside the product's grid"}),
+    }
     if stage is not None:
         sa = np.where(ct > 0, float(stage), np.nan).astype(np.float32)
         data["SA"] = (dims, sa, {"long_name": "assumed stage of development (WMO code)"})
-        data["CA"] = (dims, np.where(ct > 0, ct, np.nan).astype(np.float32),
-                      {"long_name": "partial concentration of SA", "units": "0.1"})
+        data["CA"] = (
+            dims,
+            np.where(ct > 0, ct, np.nan).astype(np.float32),
+            {"long_name": "partial concentration of SA", "units": "0.1"},
+        )
     ds = xr.Dataset(data, coords=grid.coords())
-    ds.attrs.update(source=str(path), crs=grid.crs, product="NSIDC G02202 v4",
-                    assumed_stage=-1 if stage is None else int(stage))
+    ds.attrs.update(
+        source=str(path),
+        crs=grid.crs,
+        product="NSIDC G02202 v4",
+        assumed_stage=-1 if stage is None else int(stage),
+    )
     return ds

@@ -35,8 +35,9 @@ from .polaris import SPEED_LIMIT_KN, polaris_chart
 THICKNESS_NAMES = ("thickness", "ice_thickness")
 
 
-def ice_speed(ds, ice_class, v0_kn, *, fast_ice=DEFAULT_FAST_ICE, stage_thickness="upper",
-              depth=None, draft=None):
+def ice_speed(
+    ds, ice_class, v0_kn, *, fast_ice=DEFAULT_FAST_ICE, stage_thickness="upper", depth=None, draft=None
+):
     """The speed (knots) of an `ice_class` ship at open-water speed `v0_kn` in each pixel of the
     ice chart `ds` (SIGRID-style CT/SA/... and land, or a chart with stage_of_development and
     sea_ice_concentration), as a DataArray on the chart's grid whose attribute ``model`` names
@@ -54,8 +55,10 @@ def ice_speed(ds, ice_class, v0_kn, *, fast_ice=DEFAULT_FAST_ICE, stage_thicknes
         speed = np.asarray(polaris_chart(chart, cls.name, v0_kn=v0)["speed_kn"].values, float)
         limit = SPEED_LIMIT_KN.get(cls.polaris_class)
         elevated = f"{min(v0, limit):g} kn under elevated risk" if limit else "no elevated-risk level"
-        model = (f"IMO POLARIS (MSC.1/Circ.1519), {cls.polaris_class} row: {v0:g} kn in normal "
-                 f"operation, {elevated}, none under special consideration")
+        model = (
+            f"IMO POLARIS (MSC.1/Circ.1519), {cls.polaris_class} row: {v0:g} kn in normal "
+            f"operation, {elevated}, none under special consideration"
+        )
     else:
         h, whence = _thickness(chart, fast_ice, stage_thickness)
         ct = np.asarray(chart["CT"].values, float)
@@ -73,8 +76,13 @@ def ice_speed(ds, ice_class, v0_kn, *, fast_ice=DEFAULT_FAST_ICE, stage_thicknes
         model = f"Andreeva 2021: V = F x V0, V0 {v0:g} kn, F = f1 x f2, {terms}"
     speed = np.where(blocked | ~np.isfinite(speed), 0.0, speed)
     out = chart["CT"].copy(data=speed).rename("ice_speed")
-    out.attrs = {"long_name": "ship speed in the ice", "units": "knot", "model": model,
-                 "v0_kn": v0, "ice_class": cls.name}
+    out.attrs = {
+        "long_name": "ship speed in the ice",
+        "units": "knot",
+        "model": model,
+        "v0_kn": v0,
+        "ice_class": cls.name,
+    }
     return out
 
 
@@ -84,8 +92,11 @@ def _as_sigrid(ds):
     if "CT" in ds and "SA" in ds:
         return ds
     stage = ds["stage_of_development"]
-    ct = ds["sea_ice_concentration"] if "sea_ice_concentration" in ds else \
-        stage.copy(data=np.where(np.asarray(stage.values) == 55, 0.0, 10.0))
+    ct = (
+        ds["sea_ice_concentration"]
+        if "sea_ice_concentration" in ds
+        else stage.copy(data=np.where(np.asarray(stage.values) == 55, 0.0, 10.0))
+    )
     ct = ct.where(stage != 55, 0.0)
     return ds.assign(CT=ct, CA=ct, SA=stage.where(stage != 55))
 
@@ -101,5 +112,6 @@ def _thickness(chart, fast_ice, rule):
     stage = governing_stage(chart, fast_ice=fast_ice)
     end = "upper end" if rule == "upper" else "middle"
     return andreeva.stage_thickness(stage, rule), f"the {end} of the governing stage's WMO range"
+
 
 __all__ = ["ice_speed", "THICKNESS_NAMES"]

@@ -23,9 +23,13 @@ from .codes import stage_name
 from .forms import DEFAULT_FAST_ICE, FREE_WATER, fast_ice_mask, fast_ice_stage
 from .impact import governing_stage
 
-BANDS = (("ice free <1/10", -np.inf, 1.0), ("very open 1-3/10", 1.0, 4.0),
-         ("open 4-6/10", 4.0, 7.0), ("close 7-8/10", 7.0, 9.0),
-         ("very close 9-10/10", 9.0, np.inf))
+BANDS = (
+    ("ice free <1/10", -np.inf, 1.0),
+    ("very open 1-3/10", 1.0, 4.0),
+    ("open 4-6/10", 4.0, 7.0),
+    ("close 7-8/10", 7.0, 9.0),
+    ("very close 9-10/10", 9.0, np.inf),
+)
 
 
 def band_name(ct: float) -> str:
@@ -61,9 +65,14 @@ def _ice_types(chart, fast_ice):
                 else:
                     out.append(stage_name(code))
             return out
+
         return stage, chart["CT"], name, stage.attrs["assumptions"]
-    return (chart["stage_of_development"], chart["sea_ice_concentration"],
-            lambda px, codes: [stage_name(c) for c in codes], ())
+    return (
+        chart["stage_of_development"],
+        chart["sea_ice_concentration"],
+        lambda px, codes: [stage_name(c) for c in codes],
+        (),
+    )
 
 
 def summarize(route, chart, *, time_cost=None, polaris=None, fast_ice=DEFAULT_FAST_ICE) -> dict:
@@ -100,16 +109,22 @@ def summarize(route, chart, *, time_cost=None, polaris=None, fast_ice=DEFAULT_FA
             entry["distance"] += float(skm[k])
             if t is not None:
                 entry["time"] += t
-    out = {"length": float(legs.sum()),
-           "time": None if leg_time is None else float(leg_time.sum()),
-           "by_stage": by_stage, "by_concentration": by_band, "assumptions": tuple(assumptions)}
+    out = {
+        "length": float(legs.sum()),
+        "time": None if leg_time is None else float(leg_time.sum()),
+        "by_stage": by_stage,
+        "by_concentration": by_band,
+        "assumptions": tuple(assumptions),
+    }
     if polaris is not None:
         r = _layer(polaris["rio"], spx)
         level = _layer(polaris["level"], spx)
         elevated = level == 1
-        out.update(rio_min=float(np.nanmin(r)) if np.isfinite(r).any() else None,
-                   rio_max=float(np.nanmax(r)) if np.isfinite(r).any() else None,
-                   elevated_risk=bool(elevated.any()),
-                   elevated_distance=float(skm[elevated].sum()),
-                   special_consideration=bool((level == 2).any()))
+        out.update(
+            rio_min=float(np.nanmin(r)) if np.isfinite(r).any() else None,
+            rio_max=float(np.nanmax(r)) if np.isfinite(r).any() else None,
+            elevated_risk=bool(elevated.any()),
+            elevated_distance=float(skm[elevated].sum()),
+            special_consideration=bool((level == 2).any()),
+        )
     return out

@@ -9,5 +9,16 @@ from .base import EDGE_COSTS, CostModel, EdgeCost, EnteredPixel, TurnPenalised, 
 from .forecast import Fuel, TravelTime, WaveDanger
 from .season import IceSeasonTime, IceWeatherTime
 
-__all__ = ["EDGE_COSTS", "CostModel", "EdgeCost", "EnteredPixel", "Fuel", "IceSeasonTime", "IceWeatherTime",
-           "TravelTime", "TurnPenalised", "WaveDanger", "as_model"]
+__all__ = [
+    "EDGE_COSTS",
+    "CostModel",
+    "EdgeCost",
+    "EnteredPixel",
+    "Fuel",
+    "IceSeasonTime",
+    "IceWeatherTime",
+    "TravelTime",
+    "TurnPenalised",
+    "WaveDanger",
+    "as_model",
+]

@@ -32,8 +32,7 @@ EDGE_COSTS: dict[str, type[_core.RasterRule]] = {
     "integral": _core.IntegralCost,  # the exact line integral along the step
     "length": _core.LengthCost,  # the step's length: the shortest route through passable pixels
 }
-_PAIR_COSTS = {"max": _core.max_pair_costs, "mean": _core.mean_pair_costs,
-               "length": _core.length_pair_costs}
+_PAIR_COSTS = {"max": _core.max_pair_costs, "mean": _core.mean_pair_costs, "length": _core.length_pair_costs}
 
 
 class Prepared(Protocol):
@@ -103,8 +102,7 @@ class CostModel:
         """The seaway._core model object for `prepared` (a PreparedChart); validates the pair."""
         raise NotImplementedError
 
-    def check_ends(self, prepared: Prepared, start: tuple[int, int],
-                   end: tuple[int, int] | None) -> None:
+    def check_ends(self, prepared: Prepared, start: tuple[int, int], end: tuple[int, int] | None) -> None:
         """Refuse a start or end pixel (row, col; end None for a cost field) this model can
         never use, naming why and the fix; the chart has checked land already."""
 
@@ -124,7 +122,8 @@ class CostModel:
             f"the {self.name!r} model prices only the engine's steps, not arbitrary straight legs "
             f"(its cost is in {self.unit(chart.geographic)}), so its routes cannot be smoothed or "
             f"re-priced along new legs; smooth a route found with edge_cost in {tuple(EDGE_COSTS)}, "
-            "or use the route as found")
+            "or use the route as found"
+        )
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}({self.name!r})"
@@ -150,23 +149,31 @@ class EdgeCost(CostModel):
     def no_route(self, where: str, prepared: Prepared) -> str:
         k = prepared.neighbourhood
         chart = prepared.chart
-        closed = ~np.isfinite(chart.values) if chart.land is None else (
-            ~np.isfinite(chart.values) & (chart.land == 0))
+        closed = (
+            ~np.isfinite(chart.values)
+            if chart.land is None
+            else (~np.isfinite(chart.values) & (chart.land == 0))
+        )
         if chart.land is not None and not closed.any():  # only the land can part them
-            return (f"no route {where}: no chain of passable steps joins them with neighbourhood="
-                    f"{k} (separate water bodies, or a passage narrower than the land rule allows); "
-                    "try a larger neighbourhood, check the land mask, or choose another end point")
-        return (f"no route {where}: no chain of passable steps joins them with neighbourhood={k}: "
-                "impassable pixels keep them apart (land, or a cost of inf or NaN, such as ice the "
-                "vessel may not enter), or a passage is narrower than the land rule allows; "
-                "seaway.engine.reach.explain_no_route (seaway.ice.noroute for ice charts) says "
-                "which, and how far the ship gets")
+            return (
+                f"no route {where}: no chain of passable steps joins them with neighbourhood="
+                f"{k} (separate water bodies, or a passage narrower than the land rule allows); "
+                "try a larger neighbourhood, check the land mask, or choose another end point"
+            )
+        return (
+            f"no route {where}: no chain of passable steps joins them with neighbourhood={k}: "
+            "impassable pixels keep them apart (land, or a cost of inf or NaN, such as ice the "
+            "vessel may not enter), or a passage is narrower than the land rule allows; "
+            "seaway.engine.reach.explain_no_route (seaway.ice.noroute for ice charts) says "
+            "which, and how far the ship gets"
+        )
 
     def segments(self, chart: Chart, neighbourhood: int) -> Segments:
         return Segments(chart, EDGE_COSTS[self.name](chart.values), neighbourhood)
 
-    def pair_costs(self, a: npt.ArrayLike, b: npt.ArrayLike,
-                   length: npt.ArrayLike) -> npt.NDArray[np.float64]:
+    def pair_costs(
+        self, a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike
+    ) -> npt.NDArray[np.float64]:
         """Cost of steps of `length` between pixels of costs a and b, from the engine's rule
         ("integral" between two pixel centres: the mean rule, its value on axis steps)."""
         return _PAIR_COSTS.get(self.name, _core.mean_pair_costs)(a, b, length)
@@ -204,7 +211,8 @@ class TurnPenalised(EdgeCost):
         raise ValueError(
             "a turn-penalty route's cost includes its turn penalties, which smoothing cannot "
             "price along new legs; use the route as found, or smooth a route found without "
-            "turn_penalty")
+            "turn_penalty"
+        )
 
 
 def as_model(model: CostModel | str) -> CostModel:
@@ -213,5 +221,4 @@ def as_model(model: CostModel | str) -> CostModel:
         return model
     if isinstance(model, str):
         return EdgeCost(model)
-    raise TypeError(f"model must be a seaway.models.CostModel or one of {tuple(EDGE_COSTS)}, "
-                    f"got {model!r}")
+    raise TypeError(f"model must be a seaway.models.CostModel or one of {tuple(EDGE_COSTS)}, got {model!r}")

@@ -55,9 +55,11 @@ class _OnForecast(CostModel):
         if not prepared.chart.geographic:
             raise ValueError(f"the {self.name!r} model needs a lat/lon chart")
         if prepared.chart.shape != self.forecast.shape:
-            raise ValueError(f"the forecast has {self.forecast.shape} pixels but the chart "
-                             f"{prepared.chart.shape}: route on the forecast's grid "
-                             "(seaway.weather.ForecastGrid.prepare)")
+            raise ValueError(
+                f"the forecast has {self.forecast.shape} pixels but the chart "
+                f"{prepared.chart.shape}: route on the forecast's grid "
+                "(seaway.weather.ForecastGrid.prepare)"
+            )
 
 
 class TravelTime(_OnForecast):
@@ -67,8 +69,9 @@ class TravelTime(_OnForecast):
     name = "time"
     time_dependent = chainable = True
 
-    def __init__(self, forecast: WeatherGrid, vessel: Vessel | None = None,
-                 zones: Zone | Iterable[Zone] = ()) -> None:
+    def __init__(
+        self, forecast: WeatherGrid, vessel: Vessel | None = None, zones: Zone | Iterable[Zone] = ()
+    ) -> None:
         vessel = Vessel() if vessel is None else vessel
         vessel.check(waves="wave_height" in forecast.arrays)
         if "wave_height" in forecast.arrays:
@@ -77,8 +80,7 @@ class TravelTime(_OnForecast):
         self.best_speed_kn = vessel.speed_kn + forecast.best_extra_kn(vessel)
         self._engine: _core.TravelTimeModel | _core.ZonedTravelTimeModel
         self._engine = _core.TravelTimeModel(forecast.engine(), vessel.to_core(), self.best_speed_kn)
-        self.zones: tuple[Zone, ...] = ((cast(Zone, zones),) if hasattr(zones, "geometry")
-                                        else tuple(zones))
+        self.zones: tuple[Zone, ...] = (cast(Zone, zones),) if hasattr(zones, "geometry") else tuple(zones)
         if self.zones:  # exclusions, open or closed in time windows (seaway.constraints)
             self._engine = timed_zone_engine(forecast, self._engine, self.zones)
 
@@ -102,17 +104,25 @@ class TravelTime(_OnForecast):
         if wait_h is None and not self.zones:
             wait_h = np.zeros(len(route.costs()))
         fc = self.forecast
-        voyage = Voyage.along(route.cost, route.costs(), wait_h, fc.departure,
-                              pixels=route.pixels, coords=route.coords,
-                              forecast=fc.describe())
+        voyage = Voyage.along(
+            route.cost,
+            route.costs(),
+            wait_h,
+            fc.departure,
+            pixels=route.pixels,
+            coords=route.coords,
+            forecast=fc.describe(),
+        )
         voyage = dataclasses.replace(voyage, assumptions=tuple(fc.assumed(voyage.arrival)))
         route.stats = dataclasses.replace(route.stats, voyage=voyage)
         route.speed_kn = self.vessel.speed_kn
         return route
 
     def no_route(self, where: str, prepared: Prepared) -> str:
-        return (f"no route {where} within the vessel's wind and wave limits (and danger zones) "
-                "of this forecast; try a later departure, other limits or another end point")
+        return (
+            f"no route {where} within the vessel's wind and wave limits (and danger zones) "
+            "of this forecast; try a later departure, other limits or another end point"
+        )
 
 
 class Fuel(_OnForecast):
@@ -121,18 +131,30 @@ class Fuel(_OnForecast):
 
     name = "fuel"
 
-    def __init__(self, forecast: WeatherGrid, vessel: Vessel, fuel: FuelRates,
-                 time_value_t_per_h: float = 0.0, at_hours: float = 0.0) -> None:
+    def __init__(
+        self,
+        forecast: WeatherGrid,
+        vessel: Vessel,
+        fuel: FuelRates,
+        time_value_t_per_h: float = 0.0,
+        at_hours: float = 0.0,
+    ) -> None:
         vessel.check()
         number(time_value_t_per_h, "time_value_t_per_h", minimum=0, what="a number >= 0")
         number(at_hours, "at_hours")
         self.forecast, self.vessel, self.fuel = forecast, vessel, fuel
         self.time_value_t_per_h, self.at_hours = float(time_value_t_per_h), float(at_hours)
-        frame = forecast.frame_at(at_hours, ("current_east", "current_north", "wave_height",
-                                             "wave_from", "wind_speed"))
-        self._engine = _core.FuelModel(frame.engine(), vessel.to_core(), list(fuel.speeds_kn),
-                                       list(fuel.rates_t_per_h), self.time_value_t_per_h,
-                                       frame.best_extra_kn(vessel))
+        frame = forecast.frame_at(
+            at_hours, ("current_east", "current_north", "wave_height", "wave_from", "wind_speed")
+        )
+        self._engine = _core.FuelModel(
+            frame.engine(),
+            vessel.to_core(),
+            list(fuel.speeds_kn),
+            list(fuel.rates_t_per_h),
+            self.time_value_t_per_h,
+            frame.best_extra_kn(vessel),
+        )
 
     def unit(self, geographic: bool) -> str:
         return "t (fuel + time value x h)"
@@ -147,16 +169,31 @@ class Fuel(_OnForecast):
         assert per_step.setting is not None and per_step.fuel_t is not None
         assert per_step.hours is not None
         setting = per_step.setting.astype(np.int64)
-        use = FuelUse(fuel_t=float(np.sum(per_step.fuel_t)), hours=float(np.sum(per_step.hours)),
-                      speeds_kn=np.asarray(self.fuel.speeds_kn, dtype=np.float64)[setting],
-                      time_value_t_per_h=self.time_value_t_per_h)
+        use = FuelUse(
+            fuel_t=float(np.sum(per_step.fuel_t)),
+            hours=float(np.sum(per_step.hours)),
+            speeds_kn=np.asarray(self.fuel.speeds_kn, dtype=np.float64)[setting],
+            time_value_t_per_h=self.time_value_t_per_h,
+        )
         fc, hours = self.forecast, np.asarray(per_step.hours, dtype=np.float64)
-        departure = None if fc.departure is None else fc.departure + np.timedelta64(
-            int(round(self.at_hours * 3.6e12)), "ns")
-        voyage = Voyage.along(use.hours, hours, np.zeros(hours.size), departure, pixels=route.pixels,
-                              coords=route.coords, forecast=fc.describe())
-        said = (f"the fuel route reads the weather of one forecast frame, the one valid nearest "
-                f"{self.at_hours:g} h after the forecast's first time, for the whole voyage",)
+        departure = (
+            None
+            if fc.departure is None
+            else fc.departure + np.timedelta64(int(round(self.at_hours * 3.6e12)), "ns")
+        )
+        voyage = Voyage.along(
+            use.hours,
+            hours,
+            np.zeros(hours.size),
+            departure,
+            pixels=route.pixels,
+            coords=route.coords,
+            forecast=fc.describe(),
+        )
+        said = (
+            f"the fuel route reads the weather of one forecast frame, the one valid nearest "
+            f"{self.at_hours:g} h after the forecast's first time, for the whole voyage",
+        )
         voyage = dataclasses.replace(voyage, step_h=hours, assumptions=said)
         route.stats = dataclasses.replace(route.stats, fuel=use, voyage=voyage)
         return route
@@ -171,16 +208,19 @@ class WaveDanger(_OnForecast):
 
     name = "wave danger"
 
-    def __init__(self, forecast: WeatherGrid, ship_length_m: float, speed_kn: float,
-                 at_hours: float = 0.0) -> None:
+    def __init__(
+        self, forecast: WeatherGrid, ship_length_m: float, speed_kn: float, at_hours: float = 0.0
+    ) -> None:
         number(ship_length_m, "ship_length_m", above=0, example=150.0)
         number(speed_kn, "speed_kn", above=0, example=12.0)
         number(at_hours, "at_hours")
         roles = ("wave_height", "wave_from", "wave_period")
         missing = sorted(set(roles) - set(forecast.arrays))
         if missing:
-            raise ValueError(f"wave danger needs {missing}: fields with standard names "
-                             + ", ".join(STANDARD_NAMES[m][0] for m in missing))
+            raise ValueError(
+                f"wave danger needs {missing}: fields with standard names "
+                + ", ".join(STANDARD_NAMES[m][0] for m in missing)
+            )
         self.forecast, self.speed_kn = forecast, float(speed_kn)
         frame = forecast.frame_at(at_hours, roles)
         self._engine = _core.WaveDangerModel(frame.engine(), float(ship_length_m), self.speed_kn)

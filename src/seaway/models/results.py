@@ -74,12 +74,21 @@ class Voyage:
         return None if waiting is None else self.hours - waiting
 
     @classmethod
-    def along(cls, hours: float, step_h: npt.NDArray[np.float64],
-              wait_h: npt.NDArray[np.float64] | None, departure: np.datetime64 | None, *,
-              pixels: npt.NDArray[np.int64], coords: npt.NDArray[np.float64],
-              tick: Literal["s", "ms"] = "s", charts_used: tuple[np.datetime64, ...] = (),
-              ice_class: str | None = None, forecast: str | None = None,
-              assumptions: tuple[str, ...] = ()) -> Voyage:
+    def along(
+        cls,
+        hours: float,
+        step_h: npt.NDArray[np.float64],
+        wait_h: npt.NDArray[np.float64] | None,
+        departure: np.datetime64 | None,
+        *,
+        pixels: npt.NDArray[np.int64],
+        coords: npt.NDArray[np.float64],
+        tick: Literal["s", "ms"] = "s",
+        charts_used: tuple[np.datetime64, ...] = (),
+        ice_class: str | None = None,
+        forecast: str | None = None,
+        assumptions: tuple[str, ...] = (),
+    ) -> Voyage:
         """The voyage of a route of `hours` whose steps take `step_h` hours each (waits
         included), waiting `wait_h` hours before each step; `pixels` and `coords` are the
         route's vertices; times are rounded to `tick`."""
@@ -96,11 +105,25 @@ class Voyage:
             cum = np.concatenate([[0.0], np.cumsum(np.asarray(step_h, dtype=np.float64))])
             px, xy = np.asarray(pixels), np.asarray(coords, dtype=np.float64)
             stops = tuple(
-                Wait((int(px[i, 0]), int(px[i, 1])), (float(xy[i, 0]), float(xy[i, 1])),
-                     at(float(cum[i])), float(waited[i]))
-                for i in np.flatnonzero(waited > WAIT_EPS_H))
-        return cls(float(hours), departure, at(hours), waited, stops, tuple(charts_used), ice_class,
-                   forecast, tuple(assumptions))
+                Wait(
+                    (int(px[i, 0]), int(px[i, 1])),
+                    (float(xy[i, 0]), float(xy[i, 1])),
+                    at(float(cum[i])),
+                    float(waited[i]),
+                )
+                for i in np.flatnonzero(waited > WAIT_EPS_H)
+            )
+        return cls(
+            float(hours),
+            departure,
+            at(hours),
+            waited,
+            stops,
+            tuple(charts_used),
+            ice_class,
+            forecast,
+            tuple(assumptions),
+        )
 
 
 @dataclass(frozen=True, eq=False)
@@ -144,8 +167,10 @@ class StepValues:
 
     def then(self, other: StepValues) -> StepValues:
         """These steps followed by `other`'s (the legs of a route through via points)."""
+
         def join(a: _Steps, b: _Steps) -> _Steps:
             return a if b is None else b if a is None else np.concatenate([a, b])
+
         return StepValues(**{f: join(getattr(self, f), getattr(other, f)) for f in _FIELDS})
 
 

@@ -41,52 +41,68 @@ class IceSeasonTime(CostModel):
     #: Warn when the voyage outlasts the last chart's usual validity (it is recorded either way).
     _warn_late = True
 
-    def __init__(self, season: SeasonGrid | SeasonLike, ice_class: str | classes.IceClass = "Arc7",
-                 v0_kn: float = 12.0, *, departure: Departure = None,
-                 speed: str | SpeedTable = "andreeva", **speed_options: Any) -> None:
-        from ..ice.season import (
-            SeasonGrid,  # the season's own grid type (a convenience)
-        )
+    def __init__(
+        self,
+        season: SeasonGrid | SeasonLike,
+        ice_class: str | classes.IceClass = "Arc7",
+        v0_kn: float = 12.0,
+        *,
+        departure: Departure = None,
+        speed: str | SpeedTable = "andreeva",
+        **speed_options: Any,
+    ) -> None:
+        from ..ice.season import SeasonGrid  # the season's own grid type (a convenience)
 
         self.v0_kn = number(v0_kn, "v0_kn", above=0, example=12.0)
         self.season = season if isinstance(season, SeasonGrid) else SeasonGrid(season)
         self.ice_class = get_class(ice_class).name
         self.hours_per_km, self.valid_from_h, self.departure = self.season.hours_per_km(
-            ice_class, v0_kn, departure, speed, **speed_options)
+            ice_class, v0_kn, departure, speed, **speed_options
+        )
         # where some chart lets the class go; numpy types any(axis=0) as "bool or array"
         self._open = cast("npt.NDArray[np.bool_]", np.isfinite(self.hours_per_km).any(axis=0))
         if not self._open.any():
-            raise ValueError(f"class {self.ice_class} may go nowhere in any chart of the season from "
-                             f"{self.departure} on; try a stronger class or other speeds")
+            raise ValueError(
+                f"class {self.ice_class} may go nowhere in any chart of the season from "
+                f"{self.departure} on; try a stronger class or other speeds"
+            )
         fastest = float(np.min(self.hours_per_km, where=self._open[None], initial=np.inf))
         self._engine: _core.IceSeasonModel | _core.IceWeatherModel = _core.IceSeasonModel(
-            self.hours_per_km, list(self.valid_from_h), fastest)
+            self.hours_per_km, list(self.valid_from_h), fastest
+        )
 
     def unit(self, geographic: bool) -> str:
         return "h"
 
     def engine(self, prepared: Prepared) -> _core.IceSeasonModel | _core.IceWeatherModel:
         if prepared.chart.shape != self.season.shape:
-            raise ValueError(f"the season's charts have {self.season.shape} pixels but the chart "
-                             f"{prepared.chart.shape}: route on the season's grid "
-                             "(seaway.ice.season.SeasonGrid.prepare)")
+            raise ValueError(
+                f"the season's charts have {self.season.shape} pixels but the chart "
+                f"{prepared.chart.shape}: route on the season's grid "
+                "(seaway.ice.season.SeasonGrid.prepare)"
+            )
         return self._engine
 
-    def check_ends(self, prepared: Prepared, start: tuple[int, int],
-                   end: tuple[int, int] | None) -> None:
+    def check_ends(self, prepared: Prepared, start: tuple[int, int], end: tuple[int, int] | None) -> None:
         for name, rc in (("start", start), ("end", end)):
             if rc is None or self._open[rc]:
                 continue
             open_ = np.argwhere(self._open & ~self.season.dry)
-            near = (f"the nearest pixel it may use is "
-                    f"{describe(prepared.chart, tuple(open_[np.argmin(((open_ - rc) ** 2).sum(1))]))}"
-                    if open_.size else "it may use no pixel of the chart")
+            near = (
+                f"the nearest pixel it may use is "
+                f"{describe(prepared.chart, tuple(open_[np.argmin(((open_ - rc) ** 2).sum(1))]))}"
+                if open_.size
+                else "it may use no pixel of the chart"
+            )
             last = self.season.ds.isel(time=-1)
-            ice = ", ".join(f"{k} {float(last[k].values[rc]):g}" for k in ("CT", "SA", "thickness")
-                            if k in last)
-            raise ValueError(f"{name} {describe(prepared.chart, rc)} is in ice class {self.ice_class} "
-                             f"may not enter in any chart from {self.departure} on (last chart: {ice}); "
-                             f"{near}")
+            ice = ", ".join(
+                f"{k} {float(last[k].values[rc]):g}" for k in ("CT", "SA", "thickness") if k in last
+            )
+            raise ValueError(
+                f"{name} {describe(prepared.chart, rc)} is in ice class {self.ice_class} "
+                f"may not enter in any chart from {self.departure} on (last chart: {ice}); "
+                f"{near}"
+            )
 
     def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
         """The route's Voyage: every wait, the charts its steps crossed (the one valid when each
@@ -97,14 +113,24 @@ class IceSeasonTime(CostModel):
         hours, cum = route.cost, np.concatenate([[0.0], np.cumsum(route.step_costs)])
         depart = per_step.depart_h
         used = np.unique(np.searchsorted(self.valid_from_h, depart, side="right") - 1)
-        times = self.season.times[self.season.times.size - self.valid_from_h.size:]
-        voyage = Voyage.along(hours, route.step_costs, depart - cum[:-1], self.departure,
-                              pixels=route.pixels, coords=route.coords, tick="ms",
-                              charts_used=tuple(times[k] for k in used), ice_class=self.ice_class)
+        times = self.season.times[self.season.times.size - self.valid_from_h.size :]
+        voyage = Voyage.along(
+            hours,
+            route.step_costs,
+            depart - cum[:-1],
+            self.departure,
+            pixels=route.pixels,
+            coords=route.coords,
+            tick="ms",
+            charts_used=tuple(times[k] for k in used),
+            ice_class=self.ice_class,
+        )
         # No route.speed_kn: legs at one speed would contradict the per-step times and waits.
         if hours > self.valid_from_h[-1] + self.season.last_valid_h:
-            said = (f"the voyage arrives at {voyage.arrival}, beyond the last chart "
-                    f"({times[-1]}) and its usual validity; the last chart was assumed to hold")
+            said = (
+                f"the voyage arrives at {voyage.arrival}, beyond the last chart "
+                f"({times[-1]}) and its usual validity; the last chart was assumed to hold"
+            )
             voyage = dataclasses.replace(voyage, assumptions=voyage.assumptions + (said,))
             if self._warn_late:
                 warnings.warn(said, stacklevel=3)
@@ -112,9 +138,11 @@ class IceSeasonTime(CostModel):
         return route
 
     def no_route(self, where: str, prepared: Prepared) -> str:
-        return (f"no route for class {self.ice_class} {where} in any chart of the season from "
-                f"{self.departure} on, even waiting for the ice to clear; try a stronger class, "
-                "a larger neighbourhood or another end")
+        return (
+            f"no route for class {self.ice_class} {where} in any chart of the season from "
+            f"{self.departure} on, even waiting for the ice to clear; try a stronger class, "
+            "a larger neighbourhood or another end"
+        )
 
 
 class IceWeatherTime(IceSeasonTime):
@@ -132,36 +160,51 @@ class IceWeatherTime(IceSeasonTime):
     name = "ice and weather time"
     _warn_late = False  # the assumption is in Route.assumptions, which the CLI prints
 
-    def __init__(self, season: SeasonGrid | SeasonLike, forecast: WeatherGrid,
-                 ice_class: str | classes.IceClass = "Arc7", vessel: Vessel | None = None, *,
-                 speed: str | SpeedTable = "andreeva", **speed_options: Any) -> None:
+    def __init__(
+        self,
+        season: SeasonGrid | SeasonLike,
+        forecast: WeatherGrid,
+        ice_class: str | classes.IceClass = "Arc7",
+        vessel: Vessel | None = None,
+        *,
+        speed: str | SpeedTable = "andreeva",
+        **speed_options: Any,
+    ) -> None:
         vessel = Vessel() if vessel is None else vessel
         vessel.check(waves="wave_height" in forecast.arrays)
-        super().__init__(season, ice_class, vessel.speed_kn, departure=forecast.departure,
-                         speed=speed, **speed_options)
+        super().__init__(
+            season, ice_class, vessel.speed_kn, departure=forecast.departure, speed=speed, **speed_options
+        )
         if forecast.shape != self.season.shape:
-            raise ValueError(f"the forecast has {forecast.shape} pixels but the season's charts "
-                             f"{self.season.shape}: put it on their grid first "
-                             "(seaway.weather.files.on_grid)")
+            raise ValueError(
+                f"the forecast has {forecast.shape} pixels but the season's charts "
+                f"{self.season.shape}: put it on their grid first "
+                "(seaway.weather.files.on_grid)"
+            )
         self.forecast, self.vessel = forecast, vessel
-        fastest_kn = 1.0 / (KM_PER_NM * float(np.min(self.hours_per_km, where=self._open[None],
-                                                     initial=np.inf)))
+        fastest_kn = 1.0 / (
+            KM_PER_NM * float(np.min(self.hours_per_km, where=self._open[None], initial=np.inf))
+        )
         best = fastest_kn + forecast.best_extra_kn(vessel, slowest_kn=0.0)
         assert isinstance(self._engine, _core.IceSeasonModel)  # set so by IceSeasonTime
-        self._engine = _core.IceWeatherModel(self._engine, forecast.engine(), vessel.to_core(),
-                                             1.0 / (KM_PER_NM * best))
+        self._engine = _core.IceWeatherModel(
+            self._engine, forecast.engine(), vessel.to_core(), 1.0 / (KM_PER_NM * best)
+        )
 
     def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
         """IceSeasonTime's Voyage with the forecast and what it assumes."""
         route = super().finish(route, per_step)
         v = route.stats.voyage
         said = tuple(self.forecast.assumed(v.arrival)) + v.assumptions
-        route.stats = dataclasses.replace(route.stats, voyage=dataclasses.replace(
-            v, forecast=self.forecast.describe(), assumptions=said))
+        route.stats = dataclasses.replace(
+            route.stats, voyage=dataclasses.replace(v, forecast=self.forecast.describe(), assumptions=said)
+        )
         return route
 
     def no_route(self, where: str, prepared: Prepared) -> str:
-        return (f"no route for class {self.ice_class} {where} through the ice charts and the "
-                f"forecast from {self.departure} on (the class's ice limits, the vessel's wind and "
-                "wave limits), even waiting for the ice to clear; try a stronger class, another "
-                "departure or another end")
+        return (
+            f"no route for class {self.ice_class} {where} through the ice charts and the "
+            f"forecast from {self.departure} on (the class's ice limits, the vessel's wind and "
+            "wave limits), even waiting for the ice to clear; try a stronger class, another "
+            "departure or another end"
+        )

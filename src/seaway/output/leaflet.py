@@ -17,12 +17,14 @@ def leaflet_files():
         root = resources.files("js_lib_leaflet") / "static" / "js_lib_leaflet"
         js, css = (root / "leaflet.js").read_text("utf-8"), (root / "leaflet.css").read_text("utf-8")
     except (ModuleNotFoundError, FileNotFoundError):
-        raise ImportError('offline HTML maps need Leaflet\'s files: pip install "seaway[plot]" '
-                          "(django-js-lib-leaflet)") from None
+        raise ImportError(
+            'offline HTML maps need Leaflet\'s files: pip install "seaway[plot]" (django-js-lib-leaflet)'
+        ) from None
 
     def inline(match):
         data = (root / match.group(1)).read_bytes()
         return f"url(data:image/png;base64,{base64.b64encode(data).decode('ascii')})"
+
     return js, re.sub(r"url\((images/[\w.-]+\.png)\)", inline, css)
 
 
@@ -38,6 +40,7 @@ def inline_leaflet(folium):
             head.add_child(Element(f"<style>{css}</style>"), name="leaflet_css")
             head.add_child(Element(f"<script>{js}</script>"), name="leaflet")
             super().render(**kwargs)
+
     return InlineLeaflet()
 
 
@@ -52,12 +55,14 @@ def popup_element(text: str, max_width: int = 320):
             "{% macro script(this, kwargs) %}"
             "{{ this._parent.get_name() }}.bindPopup({{ this.text|tojson }}, "
             "{maxWidth: {{ this.max_width }}});"
-            "{% endmacro %}")
+            "{% endmacro %}"
+        )
 
         def __init__(self):
             super().__init__()
             self._name = "Popup"
             self.text, self.max_width = text, int(max_width)
+
     return Popup()
 
 
@@ -70,10 +75,15 @@ def legend_control(name, rows, position="bottomright"):
     items = "".join(
         f'<div><span style="display:inline-block;width:14px;height:10px;'
         f'background:rgb{tuple(rgb)};border:1px solid #444;margin-right:4px"></span>'
-        f"{html.escape(label)}</div>" if rgb is not None else f"<div>{label}</div>"
-        for label, rgb in rows)
-    box = (f'<div class="seaway-legend" style="background:white;padding:6px 8px;border:1px solid '
-           f'#888;font:12px sans-serif"><b>{html.escape(name)}</b>{items}</div>')
+        f"{html.escape(label)}</div>"
+        if rgb is not None
+        else f"<div>{label}</div>"
+        for label, rgb in rows
+    )
+    box = (
+        f'<div class="seaway-legend" style="background:white;padding:6px 8px;border:1px solid '
+        f'#888;font:12px sans-serif"><b>{html.escape(name)}</b>{items}</div>'
+    )
 
     class Legend(MacroElement):
         _template = Template(
@@ -83,10 +93,12 @@ def legend_control(name, rows, position="bottomright"):
             " var div = L.DomUtil.create('div'); div.innerHTML = {{ this.box|tojson }};"
             " return div; };"
             "{{ this.get_name() }}.addTo({{ this._parent.get_name() }});"
-            "{% endmacro %}")
+            "{% endmacro %}"
+        )
 
         def __init__(self):
             super().__init__()
             self._name = "Legend"
             self.box, self.position = box, position
+
     return Legend()

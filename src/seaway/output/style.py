@@ -71,8 +71,12 @@ def ice_layer(route, ice, code):
     (stage_of_development / SA, else sea_ice_concentration / CT); (None, None) if none."""
     if ice is None:
         env = route.environment
-        for name, kind in (("stage_of_development", "stage"), ("SA", "stage"),
-                           ("sea_ice_concentration", "concentration"), ("CT", "concentration")):
+        for name, kind in (
+            ("stage_of_development", "stage"),
+            ("SA", "stage"),
+            ("sea_ice_concentration", "concentration"),
+            ("CT", "concentration"),
+        ):
             if name in env and (code is None or code == kind):
                 return np.asarray(env[name], float), kind
         return None, None
@@ -80,8 +84,10 @@ def ice_layer(route, ice, code):
         ice = ice.transpose(*route.chart.template.dims)
     ice = np.asarray(getattr(ice, "values", ice), float)
     if ice.shape != route.chart.shape:
-        raise ValueError(f"ice has shape {ice.shape} but the chart has {route.chart.shape}; give "
-                         "the ice raster on the chart's grid")
+        raise ValueError(
+            f"ice has shape {ice.shape} but the chart has {route.chart.shape}; give "
+            "the ice raster on the chart's grid"
+        )
     return ice, code or guess_code(ice)
 
 
@@ -103,6 +109,12 @@ def fit_title(text: str, width: int, lines: int = 3) -> str:
     last parts, then wrapped at spaces; what still does not fit ends in '...' (never cut at the
     figure's edge)."""
     words = [_shorten_path(w, width // 2) for w in text.split(" ")]
-    wrapped = textwrap.wrap(" ".join(words), width, break_long_words=True, break_on_hyphens=False,
-                            max_lines=lines, placeholder=" ...")
+    wrapped = textwrap.wrap(
+        " ".join(words),
+        width,
+        break_long_words=True,
+        break_on_hyphens=False,
+        max_lines=lines,
+        placeholder=" ...",
+    )
     return "\n".join(wrapped)

@@ -18,19 +18,10 @@ import numpy as np
 from ..base import sphere as geo
 from ..base.files import write_atomically
 from ..ice.colours import classes, guess_code
-from ..result.environment import Category, least_depth
-from ..result.schedule import schedule, short
+from ..result.environment import least_depth
 from .leaflet import inline_leaflet, legend_control, popup_element
-from .style import (
-    LAND_COLOUR,
-    ROUTE_COLOUR,
-    SHOAL_COLOUR,
-    edges,
-    fast_ice,
-    ice_layer,
-    route_xy,
-    shoals,
-)
+from .popup import waypoint_popup
+from .style import LAND_COLOUR, ROUTE_COLOUR, SHOAL_COLOUR, edges, fast_ice, ice_layer, route_xy, shoals
 
 MERCATOR_LIMIT = 85.051128779806589  # Web Mercator's latitude limit
 MAX_IMAGE = 2000  # pixels along a side of the embedded chart image (larger charts subsampled)
@@ -47,8 +38,10 @@ def _folium():
 def _mercator_rows(rgba, lat_edges):
     """Resample image rows (north first, regular in latitude between `lat_edges`) to rows regular
     in Web Mercator y, nearest row (class colours are not blended)."""
+
     def merc(lat):
         return np.degrees(np.arcsinh(np.tan(np.radians(lat))))
+
     north = min(float(lat_edges[0]), MERCATOR_LIMIT)
     south = max(float(lat_edges[-1]), -MERCATOR_LIMIT)
     rows = rgba.shape[0]
@@ -72,9 +65,12 @@ def _chart_image(route, ice, code, shoal_m=None):
         ok = index >= 0
         rgba[ok, :3], rgba[ok, 3] = colours[index[ok]], 255
         legend = [table[i] for i in np.unique(index[ok & ~land])]
-        name = f"ice: WMO colour code by {'stage of development' if kind == 'stage' else 'total concentration'}"
+        name = (
+            f"ice: WMO colour code by {'stage of development' if kind == 'stage' else 'total concentration'}"
+        )
     else:
         from matplotlib import colormaps
+
         v = np.asarray(chart.values, float)
         ok = np.isfinite(v) & (v >= 0)
         lo, hi = (float(v[ok].min()), float(v[ok].max())) if ok.any() else (0.0, 1.0)
@@ -98,6 +94,7 @@ def _chart_image(route, ice, code, shoal_m=None):
 def _land_around(bounds):
     """RGBA image of the land (global-land-mask) over (south, north, west, east), north-up."""
     from global_land_mask import globe
+
     south, north, west, east = bounds
     lat = np.linspace(north, south, 400)
     lon = np.linspace(west, east, 800)
@@ -108,69 +105,7 @@ def _land_around(bounds):
 
 
 def _rgb(colour: str) -> tuple:
-    return tuple(int(colour[i:i + 2], 16) for i in (1, 3, 5))
-
-
-def _dms(value, pos, neg, width):
-    hemi = pos if value >= 0 else neg
-    deg, minutes = divmod(abs(value) * 60.0, 60.0)
-    return f"{int(deg):0{width}d}&deg;{minutes:04.1f}'{hemi}"
-
-
-def _ice_text(name, value):
-    if isinstance(value, Category):
-        return f"{name}: {'up to' if value.rule == 'governing' else 'mostly'} {value}"
-    mean, high = value
-    if not np.isfinite(high):
-        return f"{name}: none"
-    return f"{name}: mean {mean:.3g}, max {high:.3g}"
-
-
-def _popup(route, number, point, leg, speed_kn):
-    """The HTML of a waypoint's popup: its position and the leg that starts there."""
-    if route.geographic:
-        where = f"{_dms(point[0], 'N', 'S', 2)} {_dms(point[1] % 360 if point[1] > 180 else point[1], 'E', 'W', 3)}"
-    else:
-        where = f"y {point[0]:.6g}, x {point[1]:.6g}"
-    lines = [f"<b>waypoint {number}</b>", where]
-    last = number == len(route.waypoint_index)
-    if route.requested is not None and (number == 1 or last):  # an end: the one asked for
-        asked = route.requested[1 if last else 0]
-        lines[0] = f"<b>waypoint {number}: {'end' if last else 'start'}</b>"
-        lines.append(f"requested {_dms(asked[0], 'N', 'S', 2)} {_dms((asked[1] + 180) % 360 - 180, 'E', 'W', 3)}"
-                     if route.geographic else f"requested {asked[0]:g}, {asked[1]:g}")
-        lines += [html.escape(n) for n in route.notes if n.startswith("end " if last else "start ")]
-    timed = schedule(route)
-    if timed is not None and timed.departure is not None:  # the waypoint's ETA and ETD (UTC)
-        i = int(route.waypoint_index[number - 1])
-        if number > 1:
-            lines.append(f"ETA {short(timed.eta(i))} UTC")
-        if leg is not None:
-            lines.append(f"ETD {short(timed.etd(i))} UTC")
-    if leg is None:
-        lines.append(f"end: {route.length:.1f} {'km' if route.geographic else 'units'}, "
-                     f"cost {route.cost:.6g} {html.escape(route.unit)}")
-        if timed is not None and timed.forecast:
-            lines.append(f"forecast {html.escape(timed.forecast)}")
-        if route.ice_speed is not None:
-            hours = sum(leg.time_h for leg in route.legs())
-            lines.append(html.escape(f"time {hours:.1f} h" if np.isfinite(hours) else "no time")
-                         + "; speed in ice: " + html.escape(route.ice_speed.model))
-    else:
-        dist = (f"{leg.distance_nm:.2f} nm ({leg.distance:.2f} km)" if leg.distance_nm is not None
-                else f"{leg.distance:.4g} units")
-        lines += [f"leg {leg.number}: course {leg.course:05.1f}&deg;, {dist}"]
-        if leg.time_h is not None and route.ice_speed is not None:  # the speed in the ice
-            lines.append(f"time {leg.time_h:.2f} h at {leg.speed_kn:.3g} kn (mean, in ice)"
-                         if np.isfinite(leg.time_h) else "no time: no speed in part of its ice")
-        elif leg.time_h is not None and timed is not None:  # on a clock: the real time
-            made = f", {leg.speed_kn:.1f} kn made good" if leg.speed_kn is not None else ""
-            lines.append(f"time {leg.time_h:.2f} h{made}")
-        elif leg.time_h is not None:
-            lines.append(f"time {leg.time_h:.2f} h at {speed_kn:g} kn")
-        lines.append(f"cost {leg.cost:.6g} {html.escape(route.unit)}")
-        lines += [html.escape(_ice_text(n, mv)) for n, mv in leg.environment.items()]
-    return "<br>".join(lines)
+    return tuple(int(colour[i : i + 2], 16) for i in (1, 3, 5))
 
 
 def explore(route, *, ice=None, code=None, speed_kn=None, zoom_start=None, shoal_m=None):
@@ -184,51 +119,78 @@ def explore(route, *, ice=None, code=None, speed_kn=None, zoom_start=None, shoal
     environment). speed_kn: for the legs' times (default the route's)."""
     folium = _folium()
     if not route.geographic or route.latlon is not None:
-        raise ValueError("an interactive map needs a route on a lat/lon chart (not a planar or "
-                         "corridor chart); use seaway.plot.plot_route for a PNG")
+        raise ValueError(
+            "an interactive map needs a route on a lat/lon chart (not a planar or "
+            "corridor chart); use seaway.plot.plot_route for a PNG"
+        )
     if ice is not None:
         name = "stage_of_development" if (code or _guess(ice)) == "stage" else "sea_ice_concentration"
         route = route.with_environment({name: ice})
     rgba, lat_e, lon_e, layer_name, legend = _chart_image(route, None, code, shoal_m)
     x, y = route_xy(route, route.chart)
     centre = [float(np.mean(y)), float(np.mean(x))]
-    m = folium.Map(location=centre, zoom_start=zoom_start or 4, tiles=None,
-                   control_scale=True)
+    m = folium.Map(location=centre, zoom_start=zoom_start or 4, tiles=None, control_scale=True)
     m.default_js, m.default_css = [], []  # no CDN: _inline_leaflet puts Leaflet in the page
     m.add_child(inline_leaflet(folium))
     south, north = float(lat_e.min()), float(lat_e.max())
     pad = 0.15 * max(north - south, 1.0)
-    around = (max(south - pad, -MERCATOR_LIMIT), min(north + pad, MERCATOR_LIMIT),
-              float(lon_e.min()) - 2 * pad, float(lon_e.max()) + 2 * pad)
+    around = (
+        max(south - pad, -MERCATOR_LIMIT),
+        min(north + pad, MERCATOR_LIMIT),
+        float(lon_e.min()) - 2 * pad,
+        float(lon_e.max()) + 2 * pad,
+    )
     land, l_lat, l_lon = _land_around(around)
-    for image, lats, lons, label, opacity in ((land, l_lat, l_lon, "land (global-land-mask)", 1.0),
-                                             (rgba, lat_e, lon_e, layer_name, 0.85)):
+    for image, lats, lons, label, opacity in (
+        (land, l_lat, l_lon, "land (global-land-mask)", 1.0),
+        (rgba, lat_e, lon_e, layer_name, 0.85),
+    ):
         image, (s, n) = _mercator_rows(image, lats)
         folium.raster_layers.ImageOverlay(
-            image, bounds=[[s, float(lons[0])], [n, float(lons[-1])]], opacity=opacity,
-            name=label, pixelated=True).add_to(m)
+            image,
+            bounds=[[s, float(lons[0])], [n, float(lons[-1])]],
+            opacity=opacity,
+            name=label,
+            pixelated=True,
+        ).add_to(m)
     speed = route.speed_kn if speed_kn is None else speed_kn
     legs = route.legs(speed)
     line = folium.FeatureGroup(name="route").add_to(m)
     positions = np.column_stack([y, x])
-    folium.PolyLine(positions.tolist(), color=ROUTE_COLOUR, weight=4,
-                    tooltip=f"{html.escape(route.name)}: {route.length:.1f} km "
-                            f"({route.length / geo.KM_PER_NM:.1f} nm), cost {route.cost:.6g}"
-                    ).add_to(line)
+    folium.PolyLine(
+        positions.tolist(),
+        color=ROUTE_COLOUR,
+        weight=4,
+        tooltip=f"{html.escape(route.name)}: {route.length:.1f} km "
+        f"({route.length / geo.KM_PER_NM:.1f} nm), cost {route.cost:.6g}",
+    ).add_to(line)
     last = len(route.waypoint_index) - 1
     for n, i in enumerate(route.waypoint_index):
         leg = legs[n] if n < len(legs) else None
         if n == last and n > 0:  # the end: a square, the start a circle
-            marker = folium.Marker(positions[i].tolist(), tooltip="end", icon=folium.DivIcon(
-                html=f'<div style="width:12px;height:12px;background:{ROUTE_COLOUR};'
-                     'border:2px solid black"></div>', icon_size=(16, 16), icon_anchor=(8, 8)))
+            marker = folium.Marker(
+                positions[i].tolist(),
+                tooltip="end",
+                icon=folium.DivIcon(
+                    html=f'<div style="width:12px;height:12px;background:{ROUTE_COLOUR};'
+                    'border:2px solid black"></div>',
+                    icon_size=(16, 16),
+                    icon_anchor=(8, 8),
+                ),
+            )
         else:
-            marker = folium.CircleMarker(positions[i].tolist(), radius=8 if n == 0 else 4, weight=1,
-                                         color="black", fill=True, fill_opacity=1.0,
-                                         tooltip="start" if n == 0 else None,
-                                         fill_color=ROUTE_COLOUR if n == 0 else "white")
+            marker = folium.CircleMarker(
+                positions[i].tolist(),
+                radius=8 if n == 0 else 4,
+                weight=1,
+                color="black",
+                fill=True,
+                fill_opacity=1.0,
+                tooltip="start" if n == 0 else None,
+                fill_color=ROUTE_COLOUR if n == 0 else "white",
+            )
         marker.add_to(line)
-        marker.add_child(popup_element(_popup(route, n + 1, route.coords[i], leg, speed)))
+        marker.add_child(popup_element(waypoint_popup(route, n + 1, route.coords[i], leg, speed)))
     rows = legend + [("land", _rgb(LAND_COLOUR))] + _marks(folium, route, line)
     folium.LayerControl(collapsed=False).add_to(m)
     m.add_child(legend_control(layer_name, rows))
@@ -239,16 +201,28 @@ def explore(route, *, ice=None, code=None, speed_kn=None, zoom_start=None, shoal
 def _marks(folium, route, line) -> list:
     """The least-depth point (with a depth environment) on the map, and the legend rows of the
     route's marks."""
-    dot = ('<span style="display:inline-block;width:10px;height:10px;border-radius:50%;'
-           'border:1px solid black;margin-right:4px;background:{}"></span>')
-    rows = [(dot.format(ROUTE_COLOUR) + "start", None),
-            (dot.format(ROUTE_COLOUR).replace("border-radius:50%;", "") + "end", None)]
+    dot = (
+        '<span style="display:inline-block;width:10px;height:10px;border-radius:50%;'
+        'border:1px solid black;margin-right:4px;background:{}"></span>'
+    )
+    rows = [
+        (dot.format(ROUTE_COLOUR) + "start", None),
+        (dot.format(ROUTE_COLOUR).replace("border-radius:50%;", "") + "end", None),
+    ]
     if "depth" in route.environment:
         z, at = least_depth(route, route.environment["depth"])
         if at is not None:
             text = f"least depth {z:.1f} m"
-            folium.CircleMarker(list(at), radius=6, weight=2, color="black", fill=True,
-                                fill_opacity=1.0, fill_color=SHOAL_COLOUR, tooltip=text).add_to(line)
+            folium.CircleMarker(
+                list(at),
+                radius=6,
+                weight=2,
+                color="black",
+                fill=True,
+                fill_opacity=1.0,
+                fill_color=SHOAL_COLOUR,
+                tooltip=text,
+            ).add_to(line)
             rows.append((dot.format(SHOAL_COLOUR) + html.escape(text), None))
     return rows
 
@@ -260,8 +234,9 @@ def _guess(ice):
 def html_text(route, **options) -> str:
     """The page of explore(route, **options) as one self-contained HTML string."""
     page = explore(route, **options).get_root().render()
-    remote = re.findall(r"<(?:script|link)\b[^>]*\b(?:src|href)\s*=\s*[\"']?(?:https?:)?//[^>]*>",
-                        page, flags=re.I)
+    remote = re.findall(
+        r"<(?:script|link)\b[^>]*\b(?:src|href)\s*=\s*[\"']?(?:https?:)?//[^>]*>", page, flags=re.I
+    )
     if remote:  # a folium element brought its own CDN link: the page would not work offline
         raise RuntimeError(f"the HTML map would load {remote[0]!r} from the network")
     return page

@@ -2,7 +2,8 @@
 navigator reads from it: waypoints, legs, the environment along them and the leg table; its
 typed stats (RouteStats)."""
 
-from .route import Leg, Route
+from .leg import Leg
+from .route import Route
 from .stats import RouteStats, SearchStats
 
 __all__ = ["Leg", "Route", "RouteStats", "SearchStats"]

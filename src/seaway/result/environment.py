@@ -94,8 +94,13 @@ def summarise(name: str, vals: np.ndarray):
             rule = "governing"
         else:
             code, rule = counts.most_common(1)[0][0], "most frequent"
-        return Category(float(code), category_name(name, code), rule, counts[code] / vals.size,
-                        coded=name in STAGES | FORMS)
+        return Category(
+            float(code),
+            category_name(name, code),
+            rule,
+            counts[code] / vals.size,
+            coded=name in STAGES | FORMS,
+        )
     if not vals.size:
         return Numeric(np.nan, np.nan, np.nan, name in LEAST)
     return Numeric(float(vals.mean()), float(vals.min()), float(vals.max()), name in LEAST)
@@ -175,5 +180,5 @@ def least_depth(route, depth):
     if not np.isfinite(vals).any():
         return np.nan, None
     i = int(np.nanargmin(vals))
-    where = route.chart.pixel_coords(p[i:i + 1] % [z.shape[0], z.shape[1]])[0]
+    where = route.chart.pixel_coords(p[i : i + 1] % [z.shape[0], z.shape[1]])[0]
     return float(vals[i]), (float(where[0]), float(where[1]))

@@ -10,38 +10,15 @@ import numpy as np
 
 from .._core import haversine_km
 from ..base import sphere as geo
-from ..base.validate import number
 from ..chart.legs import index_coords, leg_path, turning_points
 from ..chart.raster import Chart
 from ..models.base import CostModel, EdgeCost
-from .environment import along, extreme_name  # noqa: F401 - extreme_name: part of this API
-from .schedule import schedule
+from .environment import extreme_name  # noqa: F401 - part of this API
+from .leg import Leg, route_legs
 from .stats import RouteStats
 from .summary import route_summary
 from .table import route_table
-from .timing import SpeedField, step_times
-
-
-@dataclass
-class Leg:
-    """One leg between consecutive waypoints. Course: initial great-circle course, degrees true
-    (planar charts: grid bearing from +y towards +x). distance: km (geographic) or chart units."""
-
-    number: int
-    start: tuple
-    end: tuple
-    course: float
-    distance: float
-    distance_nm: float | None
-    speed_kn: float | None
-    time_h: float | None
-    cost: float
-    #: name -> the chart variable along the leg (seaway.result.environment): Numeric (mean, max)
-    #: pairs ((mean, min) for LEAST) or, for stages and forms of ice, a Category.
-    environment: dict
-    #: Leaves the first waypoint, reaches the last (on a clock: seaway.result.schedule) or None.
-    depart: np.datetime64 | None = None
-    arrive: np.datetime64 | None = None
+from .timing import SpeedField
 
 
 @dataclass
@@ -176,56 +153,22 @@ class Route:
     def legs(self, speed_kn: float | None = None) -> list[Leg]:
         """The legs between consecutive waypoints, with course, distance, time, cost and the mean
         and maximum of each environment variable along the leg. speed_kn defaults to .speed_kn."""
-        speed = self.speed_kn if speed_kn is None else number(speed_kn, "speed_kn", above=0)
-        ice = self.ice_speed if self.geographic else None
-        if ice is not None:  # times from the speed in the ice (seaway.result.timing)
-            if speed is not None and speed != ice.v0_kn:
-                raise ValueError(f"the route's speeds in ice are for {ice.v0_kn:g} kn in open water, "
-                                 f"not {speed:g} kn; make them again with with_ice_speed")
-            speed, hours_of = ice.v0_kn, step_times(self)[0]
-        timed = schedule(self)  # a route on a clock: its real times, not those at one speed
-        wi, c = self.waypoint_index, self.coords
-        steps, costs = self.leg_lengths, self.costs()
-        out = []
-        for n, (i, j) in enumerate(zip(wi[:-1], wi[1:]), start=1):
-            a, b = c[i], c[j]
-            dist = float(steps[i:j].sum())
-            if self.geographic:
-                course = float(geo.course_deg(a[0], a[1], b[0], b[1]))
-                nm = dist / geo.KM_PER_NM
-            else:
-                course = float(np.degrees(np.arctan2(b[1] - a[1], b[0] - a[0])) % 360.0)
-                nm = None
-            hours = nm / speed if (speed and nm is not None) else None
-            leg_speed = speed
-            if ice is not None and nm is not None:  # the leg's mean speed; 0 where it stops
-                hours = float(hours_of[i:j].sum())
-                leg_speed = nm / hours if 0 < hours < np.inf else (0.0 if hours else speed)
-            if timed is not None:  # the leg's real hours and the speed it makes good under way
-                hours, leg_speed = timed.leg(i, j, nm)
-            out.append(Leg(n, tuple(map(float, a)), tuple(map(float, b)), course, dist, nm, leg_speed,
-                           hours, float(costs[i:j].sum()), self._along(i, j),
-                           *((timed.etd(i), timed.eta(j)) if timed is not None else ())))
-        return out
+        return route_legs(self, speed_kn)
 
     def sample_pixels(self, i: int = 0, j: int | None = None) -> np.ndarray:
         """(n, 2) (row, col) of the pixels crossed between vertices i and j (default the whole
         route), sampled every half pixel along each step; columns may pass the chart's last
         on charts that wrap (take them modulo the width)."""
-        v = self.vertices[i:(len(self.vertices) if j is None else j + 1)]
+        v = self.vertices[i : (len(self.vertices) if j is None else j + 1)]
         half = (self.neighbourhood - 1) // 2
         pts = [v[:1]]
         for p, q in zip(v[:-1], v[1:]):  # the leg's own path: a great circle on lat/lon charts
-            step = bool(np.all(p == np.round(p)) and np.all(q == np.round(q))
-                        and np.abs(q - p).max() <= half)
+            step = bool(np.all(p == np.round(p)) and np.all(q == np.round(q)) and np.abs(q - p).max() <= half)
             path = leg_path(self.chart, p, q, step)
             for a, b in zip(path[:-1], path[1:]):
                 m = max(int(np.ceil(2 * np.abs(b - a).max())), 1)
                 pts.append(a + np.linspace(0, 1, m + 1)[1:, None] * (b - a))
         return np.rint(np.concatenate(pts)).astype(np.int64)
-
-    def _along(self, i: int, j: int) -> dict:
-        return along(self, i, j)
 
     def with_ice_speed(self, knots, model=None) -> Route:
         """A copy whose times come from `knots`, the speed on the chart's grid (a DataArray from
@@ -239,7 +182,7 @@ class Route:
         """A copy that reports `data` along each leg: an xarray.Dataset or a dict of DataArrays or
         arrays on the chart's grid (variables of another shape are skipped)."""
         env = dict(self.environment)
-        for name in (names or list(data.keys())):
+        for name in names or list(data.keys()):
             arr = data[name]
             template = self.chart.template
             if hasattr(arr, "dims") and template is not None:
@@ -262,17 +205,20 @@ class Route:
     def smoothed(self, **options) -> Route:
         """Any-angle smoothing (see seaway.smooth)."""
         from ..smoothing import smooth
+
         return smooth(self, **options)
 
     def explore(self, **options):
         """An interactive folium.Map of the route over its chart, working offline (see
         seaway.output.webmap.explore for the options)."""
         from ..output.webmap import explore
+
         return explore(self, **options)
 
     def to_html(self, path, **options) -> None:
         """Write the interactive map (explore()) to one self-contained HTML file, atomically."""
         from ..output.webmap import to_html
+
         to_html(self, path, **options)
 
     def to_geojson(self) -> dict:
@@ -286,12 +232,20 @@ class Route:
             positions = np.column_stack([lon, c[:, 0]])
         else:
             positions = c[:, ::-1]
-        props = {"cost": self.cost, "length": self.length,
-                 "length_units": "km" if self.geographic else "grid units",
-                 "method": self.method, "neighbourhood": self.neighbourhood,
-                 "edge_cost": self.edge_cost, "cost_unit": self.unit}
+        props = {
+            "cost": self.cost,
+            "length": self.length,
+            "length_units": "km" if self.geographic else "grid units",
+            "method": self.method,
+            "neighbourhood": self.neighbourhood,
+            "edge_cost": self.edge_cost,
+            "cost_unit": self.unit,
+        }
         coords = positions.tolist()
         if len(coords) == 1:
             coords = coords * 2  # a LineString needs two positions; start == end
-        return {"type": "Feature", "geometry": {"type": "LineString", "coordinates": coords},
-                "properties": props}
+        return {
+            "type": "Feature",
+            "geometry": {"type": "LineString", "coordinates": coords},
+            "properties": props,
+        }

@@ -15,8 +15,18 @@ import numpy.typing as npt
 
 from ..models.results import FuelUse, Voyage, Wait
 
-__all__ = ["Constraints", "CorridorStencil", "Danger", "DangerLeg", "FuelUse", "RouteStats", "SearchStats",
-           "Smoothing", "Voyage", "Wait"]
+__all__ = [
+    "Constraints",
+    "CorridorStencil",
+    "Danger",
+    "DangerLeg",
+    "FuelUse",
+    "RouteStats",
+    "SearchStats",
+    "Smoothing",
+    "Voyage",
+    "Wait",
+]
 
 
 @dataclass(frozen=True)
@@ -37,13 +47,21 @@ class SearchStats:
     @classmethod
     def from_core(cls, s: Any) -> SearchStats:
         """From the C++ search's figures (_core.SearchStats)."""
-        return cls(settled=int(s.settled), heap_peak=int(s.heap_peak), state_bytes=int(s.state_bytes),
-                   min_cost=float(s.min_cost))
+        return cls(
+            settled=int(s.settled),
+            heap_peak=int(s.heap_peak),
+            state_bytes=int(s.state_bytes),
+            min_cost=float(s.min_cost),
+        )
 
     def plus(self, other: SearchStats) -> SearchStats:
         """Two legs' figures: settled adds up, the peaks take the larger."""
-        return SearchStats(self.settled + other.settled, max(self.heap_peak, other.heap_peak),
-                           max(self.state_bytes, other.state_bytes), min(self.min_cost, other.min_cost))
+        return SearchStats(
+            self.settled + other.settled,
+            max(self.heap_peak, other.heap_peak),
+            max(self.state_bytes, other.state_bytes),
+            min(self.min_cost, other.min_cost),
+        )
 
 
 @dataclass(frozen=True)

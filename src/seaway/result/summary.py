@@ -17,20 +17,30 @@ def route_summary(route, speed_kn=None) -> dict:
     depth."""
     legs = route.legs(speed_kn)
     speed = route.speed_kn if speed_kn is None else speed_kn
-    out = {"name": route.name, "start": tuple(map(float, route.coords[0])),
-           "end": tuple(map(float, route.coords[-1])), "cost": route.cost,
-           "length": route.length, "length_units": "km" if route.geographic else "grid units",
-           "legs": len(legs), "course_changes": route.course_changes,
-           "edge_cost": route.edge_cost, "cost_unit": route.unit,
-           "neighbourhood": route.neighbourhood}
+    out = {
+        "name": route.name,
+        "start": tuple(map(float, route.coords[0])),
+        "end": tuple(map(float, route.coords[-1])),
+        "cost": route.cost,
+        "length": route.length,
+        "length_units": "km" if route.geographic else "grid units",
+        "legs": len(legs),
+        "course_changes": route.course_changes,
+        "edge_cost": route.edge_cost,
+        "cost_unit": route.unit,
+        "neighbourhood": route.neighbourhood,
+    }
     if route.requested is not None:
         out["requested_start"], out["requested_end"] = (tuple(map(float, p)) for p in route.requested)
     if route.geographic:
         length_nm = route.length / geo.KM_PER_NM
         out["length_nm"] = length_nm
         if route.ice_speed is not None:  # times from the speed in the ice
-            out.update(speed_kn=route.ice_speed.v0_kn, time_h=float(sum(leg.time_h for leg in legs)),
-                       speed_model=route.ice_speed.model)
+            out.update(
+                speed_kn=route.ice_speed.v0_kn,
+                time_h=float(sum(leg.time_h for leg in legs)),
+                speed_model=route.ice_speed.model,
+            )
             stopped = float(step_times(route)[1].sum())
             if stopped > 0:
                 out["stopped_km"] = stopped

@@ -36,11 +36,16 @@ def route_table(route) -> str:
     geo = route.geographic
     s = route.summary()
     units = "km" if geo else "units"
-    head = (f"{route.name}: {fmt_point(s['start'], geo)} -> {fmt_point(s['end'], geo)}; "
-            f"{len(legs)} legs, {route.course_changes} course changes")
+    head = (
+        f"{route.name}: {fmt_point(s['start'], geo)} -> {fmt_point(s['end'], geo)}; "
+        f"{len(legs)} legs, {route.course_changes} course changes"
+    )
     dist = f"{s['length']:.1f} {units}" + (f" ({s['length_nm']:.1f} nm)" if geo else "")
-    lines = [head, f"distance {dist}; cost {route.cost:.6g} {route.unit} (edge cost {route.edge_cost!r}, "
-                   f"{route.neighbourhood}x{route.neighbourhood} stencil)"]
+    lines = [
+        head,
+        f"distance {dist}; cost {route.cost:.6g} {route.unit} (edge cost {route.edge_cost!r}, "
+        f"{route.neighbourhood}x{route.neighbourhood} stencil)",
+    ]
     timed = route.stats.voyage is not None
     if timed:  # a route on a clock: its real time, departure and arrival
         lines.append(voyage_line(s))
@@ -48,13 +53,16 @@ def route_table(route) -> str:
         t = fmt_hours(s["time_h"]) if np.isfinite(s["time_h"]) else "none"
         lines.append(f"time: {t} ({s['speed_kn']:g} kn in open water; in ice {s['speed_model']})")
         if s.get("stopped_km"):
-            lines.append(f"no time: the model gives no speed on {s['stopped_km']:.1f} km of the route "
-                         "(ice as thick as the class passes, or closed to it): an icebreaker's escort")
+            lines.append(
+                f"no time: the model gives no speed on {s['stopped_km']:.1f} km of the route "
+                "(ice as thick as the class passes, or closed to it): an icebreaker's escort"
+            )
     elif "time_h" in s:
         lines[-1] += f"; {fmt_hours(s['time_h'])} at {s['speed_kn']:g} kn"
     if "requested_start" in s:
-        lines.insert(1, f"requested {fmt_point(s['requested_start'], geo)} -> "
-                        f"{fmt_point(s['requested_end'], geo)}")
+        lines.insert(
+            1, f"requested {fmt_point(s['requested_start'], geo)} -> {fmt_point(s['requested_end'], geo)}"
+        )
     lines += [f"assumed: {a}" for a in route.assumptions]
     if np.isfinite(s.get("least_depth_m", np.nan)):
         lines.append(f"least depth {s['least_depth_m']:.1f} m at {fmt_point(s['least_depth_at'], geo)}")
@@ -63,18 +71,40 @@ def route_table(route) -> str:
     # figure and is left out), the speed made good under way and the arrival at each waypoint.
     dated = timed and route.stats.voyage.departure is not None
     cost_col = "" if timed and route.unit == "h" else "cost"
-    cols = ["leg", "from", "to", "course", "nm" if geo else "", units, "kn", "hours",
-            "ETA (UTC)" if dated else "", cost_col]
-    cols += [(f"{n} ({'governing' if n in STAGES else 'most frequent'})" if n in CATEGORICAL
-              else f"{n} mean/{extreme_name(n)}") for n in env]
+    cols = [
+        "leg",
+        "from",
+        "to",
+        "course",
+        "nm" if geo else "",
+        units,
+        "kn",
+        "hours",
+        "ETA (UTC)" if dated else "",
+        cost_col,
+    ]
+    cols += [
+        (
+            f"{n} ({'governing' if n in STAGES else 'most frequent'})"
+            if n in CATEGORICAL
+            else f"{n} mean/{extreme_name(n)}"
+        )
+        for n in env
+    ]
     rows = []
     for leg in legs:
-        row = [str(leg.number), fmt_point(leg.start, geo), fmt_point(leg.end, geo),
-               f"{leg.course:05.1f}", f"{leg.distance_nm:.1f}" if geo else "",
-               f"{leg.distance:.1f}" if geo else f"{leg.distance:.4g}",
-               (f"{leg.speed_kn:.1f}" if timed else f"{leg.speed_kn:.3g}") if leg.speed_kn is not None else "-",
-               f"{leg.time_h:.1f}" if leg.time_h is not None else "-",
-               short(leg.arrive) if dated else "", f"{leg.cost:.5g}" if cost_col else ""]
+        row = [
+            str(leg.number),
+            fmt_point(leg.start, geo),
+            fmt_point(leg.end, geo),
+            f"{leg.course:05.1f}",
+            f"{leg.distance_nm:.1f}" if geo else "",
+            f"{leg.distance:.1f}" if geo else f"{leg.distance:.4g}",
+            (f"{leg.speed_kn:.1f}" if timed else f"{leg.speed_kn:.3g}") if leg.speed_kn is not None else "-",
+            f"{leg.time_h:.1f}" if leg.time_h is not None else "-",
+            short(leg.arrive) if dated else "",
+            f"{leg.cost:.5g}" if cost_col else "",
+        ]
         for n in env:
             value = leg.environment[n]
             if isinstance(value, Category):
@@ -87,9 +117,12 @@ def route_table(route) -> str:
     rows = [[r[k] for k in keep] for r in rows]
     width = [max(len(c), *(len(r[k]) for r in rows)) if rows else len(c) for k, c in enumerate(cols)]
     left = {"from", "to"}
+
     def line(cells):
-        return "  ".join(c.ljust(w) if cols[k] in left else c.rjust(w)
-                         for k, (c, w) in enumerate(zip(cells, width))).rstrip()
+        return "  ".join(
+            c.ljust(w) if cols[k] in left else c.rjust(w) for k, (c, w) in enumerate(zip(cells, width))
+        ).rstrip()
+
     lines += [line(cols)] + [line(r) for r in rows]
     return "\n".join(lines)
 
@@ -103,6 +136,8 @@ def voyage_line(s: dict) -> str:
         text += f" ({fmt_hours(s['hours_waiting'])} waiting)"
     text += f"; forecast {s['forecast']}" if "forecast" in s else ""
     if "hours_in_danger" in s:
-        text += (f"\nthrough danger zones: {s['hours_in_danger']:.1f} h, the least possible "
-                 "(no route avoids them; Sotnikova 2009)")
+        text += (
+            f"\nthrough danger zones: {s['hours_in_danger']:.1f} h, the least possible "
+            "(no route avoids them; Sotnikova 2009)"
+        )
     return text

@@ -49,7 +49,9 @@ def step_times(route):
     with np.errstate(divide="ignore"):
         hours = np.where(v > 0, km / (np.where(v > 0, v, 1.0) * KM_PER_NM), np.inf)
     n = max(len(route.vertices) - 1, 0)
-    out = (np.bincount(step, weights=hours, minlength=n)[:n],
-           np.bincount(step, weights=np.where(v > 0, 0.0, km), minlength=n)[:n])
+    out = (
+        np.bincount(step, weights=hours, minlength=n)[:n],
+        np.bincount(step, weights=np.where(v > 0, 0.0, km), minlength=n)[:n],
+    )
     route.__dict__["_step_times"] = out
     return out

@@ -13,6 +13,7 @@ from ..base.validate import number
 #: The speed-loss formulas of the engine (cpp/seaway/weather.hpp).
 SPEED_LOSSES: tuple[str, ...] = tuple(_core.SpeedLoss.__members__)
 
+
 @dataclass(frozen=True)
 class Vessel:
     """A ship for weather routing. Speeds in knots, displacement in tonnes, limits in SI."""
@@ -36,8 +37,10 @@ class Vessel:
         if self.outside_validity == "warn":
             warnings.warn(msg, stacklevel=4)
         else:
-            raise ValueError(msg + "; pass outside_validity='warn' to go on (in a vessel file: "
-                             "outside_validity = \"warn\"), or another speed_loss")
+            raise ValueError(
+                msg + "; pass outside_validity='warn' to go on (in a vessel file: "
+                'outside_validity = "warn"), or another speed_loss'
+            )
 
     def check_waves(self, max_hs_m: float) -> None:
         """STAWAVE-1 holds for Hs <= 2.25 sqrt(L / 100) (ITTC 7.5-04-01-01.1)."""
@@ -45,8 +48,10 @@ class Vessel:
             return
         limit = 2.25 * np.sqrt(self.length_m / 100)
         if max_hs_m > limit:
-            self._outside(f"STAWAVE-1 holds for significant heights up to 2.25 sqrt(L/100) = "
-                          f"{limit:.2f} m; the forecast has {max_hs_m:.2f} m")
+            self._outside(
+                f"STAWAVE-1 holds for significant heights up to 2.25 sqrt(L/100) = "
+                f"{limit:.2f} m; the forecast has {max_hs_m:.2f} m"
+            )
 
     def check(self, waves: bool = True) -> None:
         """Validate the numbers; `waves`: whether the forecast has waves (else the speed-loss
@@ -62,15 +67,18 @@ class Vessel:
         if self.speed_loss == "stawave1":
             sizes = (self.beam_m, self.length_m, self.calm_resistance_kn)
             if not all(v is not None and np.isfinite(v) and v > 0 for v in sizes):
-                raise ValueError("speed_loss='stawave1' needs positive beam_m, length_m and "
-                                 "calm_resistance_kn (kN at speed_kn)")
+                raise ValueError(
+                    "speed_loss='stawave1' needs positive beam_m, length_m and "
+                    "calm_resistance_kn (kN at speed_kn)"
+                )
         if self.speed_loss == "khokhlov" and waves:
             inside = 5000 <= self.displacement_t <= 25000 and 9 <= self.speed_kn <= 20
             if not inside:
-                self._outside(f"Khokhlov's speed-loss formula holds for 5000-25000 t and 9-20 kn; "
-                              f"this vessel is {self.displacement_t:g} t at {self.speed_kn:g} kn "
-                              "(speed_loss='stawave1' covers other ships)")
-
+                self._outside(
+                    f"Khokhlov's speed-loss formula holds for 5000-25000 t and 9-20 kn; "
+                    f"this vessel is {self.displacement_t:g} t at {self.speed_kn:g} kn "
+                    "(speed_loss='stawave1' covers other ships)"
+                )
 
     def to_core(self, max_wind_ms: float | None = None, danger: bool = True) -> _core.Vessel:
         """The engine's typed vessel, with the wind and wave limits lowered to danger_wind_ms
@@ -79,8 +87,11 @@ class Vessel:
         if danger and self.danger_wave_m is not None:
             max_wave_m = min(max_wave_m, self.danger_wave_m)
         if max_wind_ms is None:
-            max_wind_ms = (self.max_wind_ms if self.danger_wind_ms is None or not danger
-                           else min(self.max_wind_ms, self.danger_wind_ms))
+            max_wind_ms = (
+                self.max_wind_ms
+                if self.danger_wind_ms is None or not danger
+                else min(self.max_wind_ms, self.danger_wind_ms)
+            )
         v = _core.Vessel()
         v.speed_kn, v.displacement_t = self.speed_kn, self.displacement_t
         v.speed_loss = getattr(_core.SpeedLoss, self.speed_loss)

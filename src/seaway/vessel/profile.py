@@ -66,11 +66,17 @@ FIELDS = {
     "max_wave_m": ("positive", "the significant wave height it never sails in, m", "5.0"),
     "danger_wind_ms": ("positive", "wind of the danger zones it avoids while forecast, m/s", "11.0"),
     "danger_wave_m": ("positive", "waves of the danger zones it avoids while forecast, m", "4.0"),
-    "fuel": ("fuel", "the fuel curve: a table speeds_kn / rates_t_per_h, or reference_speed_kn "
-                     "and reference_rate_t_per_h (rate ~ speed^3)", "{speeds_kn = [10.0, 12.0], "
-                     "rates_t_per_h = [0.6, 1.0]}"),
-    "sources": ("sources", "where each value comes from ('assumption: ...' when assumed)",
-                '{draft_m = "the owner\'s data sheet"}'),
+    "fuel": (
+        "fuel",
+        "the fuel curve: a table speeds_kn / rates_t_per_h, or reference_speed_kn "
+        "and reference_rate_t_per_h (rate ~ speed^3)",
+        "{speeds_kn = [10.0, 12.0], rates_t_per_h = [0.6, 1.0]}",
+    ),
+    "sources": (
+        "sources",
+        "where each value comes from ('assumption: ...' when assumed)",
+        '{draft_m = "the owner\'s data sheet"}',
+    ),
 }
 REQUIRED = ("name", "service_speed_kn")
 #: The vessel files shipped with the package (load(name) reads them).
@@ -128,9 +134,11 @@ def _check(path: str, data: dict[str, Any]) -> dict[str, Any]:
     for key, value in data.items():
         if key not in FIELDS:
             near = difflib.get_close_matches(key, FIELDS, n=1)
-            raise VesselFileError(f"vessel file {path}: unknown field {key!r}"
-                                  + (f" (did you mean {near[0]}?)" if near else "")
-                                  + f"; the fields are {', '.join(FIELDS)}")
+            raise VesselFileError(
+                f"vessel file {path}: unknown field {key!r}"
+                + (f" (did you mean {near[0]}?)" if near else "")
+                + f"; the fields are {', '.join(FIELDS)}"
+            )
         kind = FIELDS[key][0]
         if kind == "text":
             if not isinstance(value, str) or not value.strip():
@@ -172,8 +180,10 @@ def _fuel(path: str, value: Any, data: dict[str, Any]) -> tuple[tuple[float, ...
         v, q = value.get("speeds_kn"), value.get("rates_t_per_h")
         if not (isinstance(v, list) and isinstance(q, list) and len(v) == len(q) and v):
             _fail(path, "fuel", "needs speeds_kn and rates_t_per_h, two lists of one length")
-        return (tuple(_number(path, "fuel", x) for x in v),
-                tuple(_number(path, "fuel", x, strict=False) for x in q))
+        return (
+            tuple(_number(path, "fuel", x) for x in v),
+            tuple(_number(path, "fuel", x, strict=False) for x in q),
+        )
     if {"reference_speed_kn", "reference_rate_t_per_h"} <= set(value):
         ref_v = _number(path, "fuel", value["reference_speed_kn"])
         ref_q = _number(path, "fuel", value["reference_rate_t_per_h"])
@@ -182,8 +192,12 @@ def _fuel(path: str, value: Any, data: dict[str, Any]) -> tuple[tuple[float, ...
         if speeds[-1] < float(hi):
             speeds.append(float(hi))
         return tuple(speeds), tuple(ref_q * (s / ref_v) ** 3 for s in speeds)
-    _fail(path, "fuel", f"has neither speeds_kn/rates_t_per_h nor reference_speed_kn/"
-                        f"reference_rate_t_per_h (it has {sorted(value)})")
+    _fail(
+        path,
+        "fuel",
+        f"has neither speeds_kn/rates_t_per_h nor reference_speed_kn/"
+        f"reference_rate_t_per_h (it has {sorted(value)})",
+    )
 
 
 def _read(path: str) -> dict[str, Any]:
@@ -199,8 +213,9 @@ def _read(path: str) -> dict[str, Any]:
             data = tomllib.loads(raw.decode("utf-8"))
     except (ValueError, UnicodeDecodeError) as exc:  # TOMLDecodeError and JSONDecodeError
         fmt = "JSON" if path.lower().endswith(".json") else "TOML"
-        raise VesselFileError(f"vessel file {path}: not valid {fmt} ({exc}); see "
-                              "seaway.vessel.profile for the format") from None
+        raise VesselFileError(
+            f"vessel file {path}: not valid {fmt} ({exc}); see seaway.vessel.profile for the format"
+        ) from None
     if not isinstance(data, dict):
         raise VesselFileError(f"vessel file {path}: must hold a table of fields, not {type(data).__name__}")
     return data
@@ -219,15 +234,41 @@ def load(path: str | os.PathLike[str]) -> Profile:
     if not os.path.exists(path) and path in EXAMPLES:
         path, shown = example_path(path), f"{path} (shipped with seaway)"
     elif not os.path.exists(path):
-        raise VesselFileError(f"vessel file {path}: no such file (the examples shipped with "
-                              f"seaway: {', '.join(EXAMPLES)})")
+        raise VesselFileError(
+            f"vessel file {path}: no such file (the examples shipped with seaway: {', '.join(EXAMPLES)})"
+        )
     d = _check(path, _read(path))
-    limits = {k: d[k] for k in ("max_wind_ms", "max_wave_m", "danger_wind_ms", "danger_wave_m",
-                                "beam_m", "length_m", "calm_resistance_kn", "displacement_t",
-                                "speed_loss", "outside_validity") if k in d}
+    limits = {
+        k: d[k]
+        for k in (
+            "max_wind_ms",
+            "max_wave_m",
+            "danger_wind_ms",
+            "danger_wave_m",
+            "beam_m",
+            "length_m",
+            "calm_resistance_kn",
+            "displacement_t",
+            "speed_loss",
+            "outside_validity",
+        )
+        if k in d
+    }
     vessel = Vessel(speed_kn=d["service_speed_kn"], **limits)
-    if vessel.speed_loss == "stawave1" and not all(k in d for k in ("beam_m", "length_m", "calm_resistance_kn")):
+    if vessel.speed_loss == "stawave1" and not all(
+        k in d for k in ("beam_m", "length_m", "calm_resistance_kn")
+    ):
         _fail(path, "speed_loss", "= 'stawave1' needs beam_m, length_m and calm_resistance_kn")
     speeds, rates = d.get("fuel", ((), ()))
-    return Profile(d["name"], vessel, d.get("ice_class"), d.get("draft_m"), d.get("ukc_m"),
-                   d.get("speed_range_kn"), speeds, rates, dict(d.get("sources", {})), shown)
+    return Profile(
+        d["name"],
+        vessel,
+        d.get("ice_class"),
+        d.get("draft_m"),
+        d.get("ukc_m"),
+        d.get("speed_range_kn"),
+        speeds,
+        rates,
+        dict(d.get("sources", {})),
+        shown,
+    )

@@ -12,7 +12,26 @@ from .grid import ForecastGrid
 from .routes import position_at, replan, rhumb_line_km, route_ice_weather, route_safest, route_time
 from .sample import kara_autumn
 
-__all__ = ["ForecastGrid", "route_time", "route_ice_weather", "route_safest", "rhumb_line_km",
-           "position_at", "replan", "KNOTS_PER_MS", "STANDARD_NAMES", "find_fields", "open_forecast",
-           "grib_times", "to_latlon", "FuelCurve", "route_fuel", "route_min_fuel", "tradeoff",
-           "decode_time", "on_grid", "open_forecasts", "kara_autumn"]
+__all__ = [
+    "ForecastGrid",
+    "route_time",
+    "route_ice_weather",
+    "route_safest",
+    "rhumb_line_km",
+    "position_at",
+    "replan",
+    "KNOTS_PER_MS",
+    "STANDARD_NAMES",
+    "find_fields",
+    "open_forecast",
+    "grib_times",
+    "to_latlon",
+    "FuelCurve",
+    "route_fuel",
+    "route_min_fuel",
+    "tradeoff",
+    "decode_time",
+    "on_grid",
+    "open_forecasts",
+    "kara_autumn",
+]

@@ -26,12 +26,14 @@ from .forecast import ROLES, check_roles, grib_times, open_forecast, role_of
 
 #: GRIB code numbers that CDO writes as varNNN, with their meaning in ECMWF's tables (a hint in
 #: the error only: a code number alone does not say which table it is from).
-CDO_CODES = {"var229": ("wave_height", "table 140: significant height of wind waves and swell"),
-             "var230": ("wave_from", "table 140: mean wave direction"),
-             "var232": ("wave_period", "table 140: mean wave period"),
-             "var165": ("wind_east", "table 128: 10 m eastward wind"),
-             "var166": ("wind_north", "table 128: 10 m northward wind"),
-             "var207": ("wind_speed", "table 128: 10 m wind speed")}
+CDO_CODES = {
+    "var229": ("wave_height", "table 140: significant height of wind waves and swell"),
+    "var230": ("wave_from", "table 140: mean wave direction"),
+    "var232": ("wave_period", "table 140: mean wave period"),
+    "var165": ("wind_east", "table 128: 10 m eastward wind"),
+    "var166": ("wind_north", "table 128: 10 m northward wind"),
+    "var207": ("wind_speed", "table 128: 10 m wind speed"),
+}
 _CDO_ABSOLUTE = re.compile(r"^\s*day\s+as\s+%Y%m%d(\.%f)?\s*$")
 
 
@@ -42,9 +44,11 @@ def unknown_fields_hint(ds) -> str:
         return ""
     flags = " ".join(f"--forecast-variable {CDO_CODES[n][0]}={n}" for n in codes)
     meaning = "; ".join(f"{n} = {CDO_CODES[n][1]}" for n in codes)
-    return (f"; its variables look like GRIB code numbers written by CDO ({meaning} in ECMWF's "
-            f"tables, but a code number alone does not say which table): if they are, map them "
-            f"with {flags} (variables={{role: name}} in the API)")
+    return (
+        f"; its variables look like GRIB code numbers written by CDO ({meaning} in ECMWF's "
+        f"tables, but a code number alone does not say which table): if they are, map them "
+        f"with {flags} (variables={{role: name}} in the API)"
+    )
 
 
 def _time_name(ds) -> str | None:
@@ -81,11 +85,15 @@ def _kept(attrs):
 def _decode(t, source) -> np.ndarray:
     units = str(t.attrs.get("units", t.encoding.get("units", "")))
     calendar = str(t.attrs.get("calendar", "standard")).lower()
-    fix = (f"give it CF units such as 'hours since 2026-09-15 00:00:00' (e.g. cdo -r setreftime or "
-           f"ncatted -a units,{t.name},o,c,'hours since ...')")
+    fix = (
+        f"give it CF units such as 'hours since 2026-09-15 00:00:00' (e.g. cdo -r setreftime or "
+        f"ncatted -a units,{t.name},o,c,'hours since ...')"
+    )
     if calendar not in ("standard", "gregorian", "proleptic_gregorian"):
-        raise ValueError(f"{source}: its time variable {t.name!r} is in the {calendar!r} calendar; "
-                         "seaway needs real dates (standard or proleptic_gregorian calendar)")
+        raise ValueError(
+            f"{source}: its time variable {t.name!r} is in the {calendar!r} calendar; "
+            "seaway needs real dates (standard or proleptic_gregorian calendar)"
+        )
     values = np.asarray(t.values)
     if _CDO_ABSOLUTE.match(units):  # CDO's absolute axis: YYYYMMDD plus the fraction of the day
         v = values.astype(np.float64)
@@ -93,23 +101,27 @@ def _decode(t, source) -> np.ndarray:
             raise ValueError(f"{source}: its time variable {t.name!r} has missing values")
         day = np.floor(v).astype(np.int64)
         try:
-            dates = np.array([np.datetime64(f"{d // 10000:04d}-{d // 100 % 100:02d}-{d % 100:02d}")
-                              for d in day.ravel()], "datetime64[s]").reshape(day.shape)
+            dates = np.array(
+                [np.datetime64(f"{d // 10000:04d}-{d // 100 % 100:02d}-{d % 100:02d}") for d in day.ravel()],
+                "datetime64[s]",
+            ).reshape(day.shape)
         except ValueError:
-            raise ValueError(f"{source}: its time variable {t.name!r} ({units!r}) holds "
-                             f"{v.ravel()[0]!r}, not a date YYYYMMDD.fraction; {fix}") from None
+            raise ValueError(
+                f"{source}: its time variable {t.name!r} ({units!r}) holds "
+                f"{v.ravel()[0]!r}, not a date YYYYMMDD.fraction; {fix}"
+            ) from None
         seconds = np.round((v - day) * 86400.0).astype(np.int64)
         return (dates + seconds.astype("timedelta64[s]")).astype("datetime64[ns]")
     if " since " in units:
         try:
             out = xr.coding.times.decode_cf_datetime(values, units, calendar)
         except Exception as exc:  # xarray raises several types for unparsable units
-            raise ValueError(f"{source}: cannot decode its time variable {t.name!r} ({units!r}: "
-                             f"{exc}); {fix}") from None
+            raise ValueError(
+                f"{source}: cannot decode its time variable {t.name!r} ({units!r}: {exc}); {fix}"
+            ) from None
         if np.issubdtype(np.asarray(out).dtype, np.datetime64):
             return np.asarray(out, "datetime64[ns]")
-    raise ValueError(f"{source}: cannot decode its time variable {t.name!r} (units {units!r}): "
-                     f"{fix}")
+    raise ValueError(f"{source}: cannot decode its time variable {t.name!r} (units {units!r}): {fix}")
 
 
 def open_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, list[str]]:
@@ -117,8 +129,10 @@ def open_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, li
     the fields renamed to their roles, the files merged on time (module docstring). `variables`
     maps roles to variable names in any of the files. Notes say which variable plays each role
     and how the files were merged."""
-    paths = [str(p) for p in ([paths] if isinstance(paths, (str, bytes)) or hasattr(paths, "__fspath__")
-                              else paths)]
+    paths = [
+        str(p)
+        for p in ([paths] if isinstance(paths, (str, bytes)) or hasattr(paths, "__fspath__") else paths)
+    ]
     if not paths:
         raise ValueError("give at least one forecast file")
     wanted = check_roles(variables)
@@ -134,10 +148,12 @@ def open_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, li
             if hit and hit[0] not in fields and hit[0] not in found and hit[0] not in wanted:
                 fields[hit[0]] = (str(name), hit[1])
         if not fields:
-            raise ValueError(f"{path}: no forecast field seaway knows (variables "
-                             f"{sorted(map(str, ds.data_vars))}); mark them with CF standard names "
-                             "or map them to roles with --forecast-variable ROLE=NAME (roles: "
-                             f"{', '.join(ROLES)}){unknown_fields_hint(ds)}")
+            raise ValueError(
+                f"{path}: no forecast field seaway knows (variables "
+                f"{sorted(map(str, ds.data_vars))}); mark them with CF standard names "
+                "or map them to roles with --forecast-variable ROLE=NAME (roles: "
+                f"{', '.join(ROLES)}){unknown_fields_hint(ds)}"
+            )
         for role, (name, how) in fields.items():
             found[role] = name
             notes.append(f"forecast {role} = {path}:{name} ({how})")
@@ -148,8 +164,10 @@ def open_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, li
     missing = {r: n for r, n in wanted.items() if r not in found}
     if missing:
         role, name = next(iter(missing.items()))
-        raise ValueError(f"no forecast file has a variable {name!r} for {role}; the files have "
-                         + "; ".join(f"{p}: {sorted(map(str, d.data_vars))}" for p, d in parts))
+        raise ValueError(
+            f"no forecast file has a variable {name!r} for {role}; the files have "
+            + "; ".join(f"{p}: {sorted(map(str, d.data_vars))}" for p, d in parts)
+        )
     return _merge(parts, notes), notes
 
 
@@ -159,8 +177,9 @@ def _open_grib(path: str) -> xr.Dataset:
     try:
         import cfgrib
     except ImportError:
-        raise ImportError(f'{path}: reading GRIB needs cfgrib: pip install "seaway[grib]" (cfgrib '
-                          "and eccodes)") from None
+        raise ImportError(
+            f'{path}: reading GRIB needs cfgrib: pip install "seaway[grib]" (cfgrib and eccodes)'
+        ) from None
     try:
         with warnings.catch_warnings():  # cfgrib's own merge warns of xarray's coming defaults
             warnings.simplefilter("ignore", FutureWarning)
@@ -193,20 +212,26 @@ def _merge(parts, notes) -> xr.Dataset:
         spans = [_span(d) for _, d in timed]
         start, stop = max(s[0] for s in spans), min(s[1] for s in spans)
         if start > stop:
-            raise ValueError("the forecast files share no time: " + "; ".join(
-                f"{p}: {s[0]} to {s[1]}" for (p, _), s in zip(timed, spans)))
+            raise ValueError(
+                "the forecast files share no time: "
+                + "; ".join(f"{p}: {s[0]} to {s[1]}" for (p, _), s in zip(timed, spans))
+            )
         step = min(s[2] for s in spans)
         axis = np.arange(start, stop + step // 2, step)
         if any(d.sizes["time"] != axis.size or not np.array_equal(d["time"].values, axis) for _, d in timed):
-            notes.append(f"forecast files merged on their common span {start} to {stop}, every "
-                         f"{step / np.timedelta64(1, 'h'):g} h (linear in time)")
+            notes.append(
+                f"forecast files merged on their common span {start} to {stop}, every "
+                f"{step / np.timedelta64(1, 'h'):g} h (linear in time)"
+            )
     out = []
     for path, d in parts:
         if "time" in d.dims and d.sizes["time"] == 1:
             d = d.isel(time=0, drop=True)
         if axis is not None and "time" in d.dims:
             d = d.interp(time=axis)
-        grid = [c for c in ("lat", "lon", "latitude", "longitude", "y", "x") if c in first.dims and c in d.dims]
+        grid = [
+            c for c in ("lat", "lon", "latitude", "longitude", "y", "x") if c in first.dims and c in d.dims
+        ]
         if any(not np.array_equal(d[c].values, first[c].values) for c in grid):
             d = d.interp({c: first[c] for c in grid})
             notes.append(f"{path}: resampled onto the grid of {parts[0][0]} (linear)")
@@ -221,13 +246,16 @@ def on_grid(ds: xr.Dataset, lat, lon, dims=("lat", "lon"), source="the forecast"
     say."""
     role = {coord_role(str(n), c.attrs): str(n) for n, c in ds.coords.items() if c.ndim == 1}
     if "lat" not in role or "lon" not in role:
-        raise ValueError(f"{source} is not on a lat/lon grid (its coordinates: {sorted(map(str, ds.coords))}); "
-                         "move it onto one first (seaway.weather.to_latlon)")
+        raise ValueError(
+            f"{source} is not on a lat/lon grid (its coordinates: {sorted(map(str, ds.coords))}); "
+            "move it onto one first (seaway.weather.to_latlon)"
+        )
     lat, lon = np.asarray(lat, float), np.asarray(lon, float)
     src_lon = np.asarray(ds[role["lon"]].values, float)
     want_lon = lon % 360.0 if src_lon.max() > 180.0 else (lon + 180.0) % 360.0 - 180.0
-    out = ds.interp({role["lat"]: xr.DataArray(lat, dims=dims[0]),
-                     role["lon"]: xr.DataArray(want_lon, dims=dims[1])})
+    out = ds.interp(
+        {role["lat"]: xr.DataArray(lat, dims=dims[0]), role["lon"]: xr.DataArray(want_lon, dims=dims[1])}
+    )
     out = out.drop_vars([role["lat"], role["lon"]], errors="ignore")
     out = out.assign_coords({dims[0]: lat, dims[1]: lon})
     src_lat = np.asarray(ds[role["lat"]].values, float)
@@ -236,6 +264,7 @@ def on_grid(ds: xr.Dataset, lat, lon, dims=("lat", "lon"), source="the forecast"
     outside = 1.0 - inside_lat.mean() * inside_lon.mean()
     notes = []
     if outside > 0:
-        notes.append(f"{100 * outside:.0f} % of the grid lies outside {source}: no weather (calm) "
-                     "is assumed there")
+        notes.append(
+            f"{100 * outside:.0f} % of the grid lies outside {source}: no weather (calm) is assumed there"
+        )
     return out, notes

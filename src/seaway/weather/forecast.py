@@ -28,11 +28,22 @@ GRIB_NAMES = {
 
 
 #: Names users write for a role (for the hint of an unknown role).
-_ALIASES = {"wave_direction": "wave_from", "wave_dir": "wave_from", "mean_wave_direction": "wave_from",
-            "wave_to": "wave_from", "hs": "wave_height", "swh": "wave_height",
-            "significant_wave_height": "wave_height", "u10": "wind_east", "v10": "wind_north",
-            "wind_u": "wind_east", "wind_v": "wind_north", "current_u": "current_east",
-            "current_v": "current_north", "mean_wave_period": "wave_period"}
+_ALIASES = {
+    "wave_direction": "wave_from",
+    "wave_dir": "wave_from",
+    "mean_wave_direction": "wave_from",
+    "wave_to": "wave_from",
+    "hs": "wave_height",
+    "swh": "wave_height",
+    "significant_wave_height": "wave_height",
+    "u10": "wind_east",
+    "v10": "wind_north",
+    "wind_u": "wind_east",
+    "wind_v": "wind_north",
+    "current_u": "current_east",
+    "current_v": "current_north",
+    "mean_wave_period": "wave_period",
+}
 
 
 def check_roles(variables: dict | None) -> dict:
@@ -41,10 +52,11 @@ def check_roles(variables: dict | None) -> dict:
     out = dict(variables or {})
     for role in out:
         if role not in ROLES:
-            near = _ALIASES.get(str(role).lower()) or next(iter(difflib.get_close_matches(str(role), ROLES, n=1)), None)
+            near = _ALIASES.get(str(role).lower()) or next(
+                iter(difflib.get_close_matches(str(role), ROLES, n=1)), None
+            )
             hint = f" (did you mean {near}?)" if near else ""
-            raise ValueError(f"unknown forecast role {role!r}{hint}; the roles are "
-                             f"{', '.join(ROLES)}")
+            raise ValueError(f"unknown forecast role {role!r}{hint}; the roles are {', '.join(ROLES)}")
     return out
 
 
@@ -69,16 +81,19 @@ def find_fields(ds, variables: dict | None = None) -> dict:
     out = {}
     for role, name in variables.items():
         if name not in ds:
-            raise ValueError(f"the forecast has no variable {name!r} for {role}; it has "
-                             f"{sorted(map(str, ds.data_vars))}")
+            raise ValueError(
+                f"the forecast has no variable {name!r} for {role}; it has {sorted(map(str, ds.data_vars))}"
+            )
         out[role] = ds[name]
     for var in ds.data_vars.values():
         hit = role_of(var)
         if hit and hit[0] not in out and hit[0] not in variables:
             out[hit[0]] = var
     if ("current_east" in out) != ("current_north" in out):
-        raise ValueError("the forecast has only one current component; give both "
-                         "eastward_sea_water_velocity and northward_sea_water_velocity")
+        raise ValueError(
+            "the forecast has only one current component; give both "
+            "eastward_sea_water_velocity and northward_sea_water_velocity"
+        )
     return out
 
 
@@ -89,8 +104,9 @@ def open_forecast(path, **kwargs) -> xr.Dataset:
         try:
             import cfgrib  # noqa: F401
         except ImportError:
-            raise ImportError(f'{path}: reading GRIB needs cfgrib: pip install "seaway[grib]" '
-                              f"(cfgrib and eccodes)") from None
+            raise ImportError(
+                f'{path}: reading GRIB needs cfgrib: pip install "seaway[grib]" (cfgrib and eccodes)'
+            ) from None
         return grib_times(xr.open_dataset(path, engine="cfgrib", **kwargs), path)
     return open_netcdf(path, "a forecast is CF NetCDF (or GRIB through cfgrib)", **kwargs)
 
@@ -102,9 +118,11 @@ def grib_times(ds: xr.Dataset, path="the GRIB forecast") -> xr.Dataset:
     if "step" not in ds.dims:
         return ds
     if "time" in ds.dims:
-        raise ValueError(f"{path} holds {ds.sizes['time']} analyses of {ds.sizes['step']} steps; "
-                         f"route on one: seaway.weather.grib_times(xr.open_dataset("
-                         f"path, engine='cfgrib').isel(time=0))")
+        raise ValueError(
+            f"{path} holds {ds.sizes['time']} analyses of {ds.sizes['step']} steps; "
+            f"route on one: seaway.weather.grib_times(xr.open_dataset("
+            f"path, engine='cfgrib').isel(time=0))"
+        )
     ds = ds.drop_vars("time", errors="ignore").swap_dims(step="valid_time")
     return ds.drop_vars("step", errors="ignore").rename(valid_time="time")
 
@@ -127,8 +145,9 @@ def to_latlon(ds: xr.Dataset, lat, lon, *, crs=None) -> xr.Dataset:
         raise ImportError('to_latlon needs pyproj: pip install "seaway[ice]"') from None
     x_ax, y_ax = _axis(ds, "projection_x_coordinate"), _axis(ds, "projection_y_coordinate")
     if crs is None:
-        mapping = next((ds[v.attrs["grid_mapping"]] for v in ds.data_vars.values()
-                        if "grid_mapping" in v.attrs), None)
+        mapping = next(
+            (ds[v.attrs["grid_mapping"]] for v in ds.data_vars.values() if "grid_mapping" in v.attrs), None
+        )
         if mapping is None:
             raise ValueError("the forecast names no grid mapping; pass crs=")
         crs = mapping.attrs.get("crs_wkt") or mapping.attrs.get("proj4_string")
@@ -138,14 +157,19 @@ def to_latlon(ds: xr.Dataset, lat, lon, *, crs=None) -> xr.Dataset:
     x, y = to_grid.transform(lo, la)
     xn, yn = to_grid.transform(lo, la + 1e-4)  # a step north, to find north on the grid
     north = np.arctan2(xn - x, yn - y)  # angle of north from the grid's +y, clockwise
-    pts = {x_ax.name: xr.DataArray(x / scale, dims=("lat", "lon")),
-           y_ax.name: xr.DataArray(y / scale, dims=("lat", "lon"))}
+    pts = {
+        x_ax.name: xr.DataArray(x / scale, dims=("lat", "lon")),
+        y_ax.name: xr.DataArray(y / scale, dims=("lat", "lon")),
+    }
     keep = [v for v in ds.data_vars if set(ds[v].dims) >= {x_ax.name, y_ax.name}]
     out = ds[keep].interp(pts, method="linear")
-    out = out.drop_vars([c for c in out.coords if c not in ("time", "lat", "lon") and
-                         c not in out.dims], errors="ignore")
-    out = out.assign_coords(lat=("lat", np.asarray(lat, float), {"standard_name": "latitude", "units": "degrees_north"}),
-                            lon=("lon", np.asarray(lon, float), {"standard_name": "longitude", "units": "degrees_east"}))
+    out = out.drop_vars(
+        [c for c in out.coords if c not in ("time", "lat", "lon") and c not in out.dims], errors="ignore"
+    )
+    out = out.assign_coords(
+        lat=("lat", np.asarray(lat, float), {"standard_name": "latitude", "units": "degrees_north"}),
+        lon=("lon", np.asarray(lon, float), {"standard_name": "longitude", "units": "degrees_east"}),
+    )
     by_name = {out[v].attrs.get("standard_name"): v for v in out.data_vars}
     for (gx, gy), (east, north_name) in GRID_VECTORS.items():
         if gx in by_name and gy in by_name:

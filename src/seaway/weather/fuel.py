@@ -46,8 +46,20 @@ class FuelCurve:
         return cls(tuple(v), tuple(ref_rate_t_per_h * (v / ref_speed_kn) ** 3))
 
 
-def route_fuel(forecast, start, end, *, vessel: Vessel, fuel: FuelCurve, time_value_t_per_h=0.0,
-               at_hours=0.0, land=None, neighbourhood=5, method="astar", variables=None) -> Route:
+def route_fuel(
+    forecast,
+    start,
+    end,
+    *,
+    vessel: Vessel,
+    fuel: FuelCurve,
+    time_value_t_per_h=0.0,
+    at_hours=0.0,
+    land=None,
+    neighbourhood=5,
+    method="astar",
+    variables=None,
+) -> Route:
     """The route and settings minimising fuel + time_value x hours. Route.cost is that sum;
     stats.fuel (seaway.models.results.FuelUse) holds fuel_t, hours and speeds_kn (the setting
     of each step)."""
@@ -57,15 +69,18 @@ def route_fuel(forecast, start, end, *, vessel: Vessel, fuel: FuelCurve, time_va
     return fc.prepare(land, neighbourhood).route(start, end, model=model, method=method)
 
 
-def tradeoff(forecast, start, end, *, vessel: Vessel, fuel: FuelCurve, time_values=None,
-             **kwargs) -> list[Route]:
+def tradeoff(
+    forecast, start, end, *, vessel: Vessel, fuel: FuelCurve, time_values=None, **kwargs
+) -> list[Route]:
     """Non-dominated (hours, fuel) routes over a sweep of time values (t per hour), quickest
     first. The default sweep spans 0 to 10 x the highest fuel rate."""
     if time_values is None:
         top = max(fuel.rates_t_per_h)
         time_values = np.concatenate([[0.0], np.geomspace(top / 100, 10 * top, 24)])
-    routes = [route_fuel(forecast, start, end, vessel=vessel, fuel=fuel, time_value_t_per_h=t,
-                         **kwargs) for t in time_values]
+    routes = [
+        route_fuel(forecast, start, end, vessel=vessel, fuel=fuel, time_value_t_per_h=t, **kwargs)
+        for t in time_values
+    ]
     routes.sort(key=lambda r: (r.stats.fuel.hours, r.stats.fuel.fuel_t))
     front = []
     for r in routes:
@@ -74,10 +89,12 @@ def tradeoff(forecast, start, end, *, vessel: Vessel, fuel: FuelCurve, time_valu
     return front
 
 
-def route_min_fuel(forecast, start, end, *, deadline_h, vessel: Vessel, fuel: FuelCurve,
-                   tolerance=1e-3, **kwargs) -> Route:
+def route_min_fuel(
+    forecast, start, end, *, deadline_h, vessel: Vessel, fuel: FuelCurve, tolerance=1e-3, **kwargs
+) -> Route:
     """The least-fuel route that arrives within `deadline_h` hours: the smallest time value
     whose route meets the deadline, found by bisection."""
+
     def run(t):
         return route_fuel(forecast, start, end, vessel=vessel, fuel=fuel, time_value_t_per_h=t, **kwargs)
 

@@ -23,20 +23,27 @@ def _departure(departure, t, persist) -> tuple[np.datetime64, list[str]]:
     try:
         dep = t[0] if departure is None else np.datetime64(departure, "ns")
     except (TypeError, ValueError):
-        raise ValueError(f"departure must be a time such as '2026-09-15T06:00' (ISO 8601) or a "
-                         f"datetime64, got {departure!r}") from None
+        raise ValueError(
+            f"departure must be a time such as '2026-09-15T06:00' (ISO 8601) or a "
+            f"datetime64, got {departure!r}"
+        ) from None
     if t[0] <= dep <= t[-1]:
         return dep, []
     side = "before the forecast's first time" if dep < t[0] else "after the forecast's last time"
     gap = abs(dep - (t[0] if dep < t[0] else t[-1])) / np.timedelta64(1, "h")
     span = f"{_iso(t[0])} to {_iso(t[-1])}"
     if not persist:
-        raise ValueError(f"departure {_iso(dep)} is {gap:g} h {side} (the forecast covers {span}): "
-                         "the weather then is unknown; depart within the forecast, give a forecast "
-                         "that covers the departure, or pass --persist (persist=True) to hold its "
-                         "nearest frame")
-    held = "its first frame is held until the forecast begins" if dep < t[0] else \
-        "its last frame is held for the whole voyage"
+        raise ValueError(
+            f"departure {_iso(dep)} is {gap:g} h {side} (the forecast covers {span}): "
+            "the weather then is unknown; depart within the forecast, give a forecast "
+            "that covers the departure, or pass --persist (persist=True) to hold its "
+            "nearest frame"
+        )
+    held = (
+        "its first frame is held until the forecast begins"
+        if dep < t[0]
+        else "its last frame is held for the whole voyage"
+    )
     return dep, [f"persistence: the departure {_iso(dep)} is {gap:g} h {side} ({span}); {held}"]
 
 
@@ -55,8 +62,10 @@ def _time_axis(ds, departure):
     hours = (t - t[0]) / np.timedelta64(1, "h")
     step = float(hours[1] - hours[0])
     if step <= 0 or np.max(np.abs(np.diff(hours) - step)) > 1e-6:
-        raise ValueError("forecast times must be regularly spaced and increasing; "
-                         "resample it, e.g. ds.resample(time='6h').interpolate()")
+        raise ValueError(
+            "forecast times must be regularly spaced and increasing; "
+            "resample it, e.g. ds.resample(time='6h').interpolate()"
+        )
     return t.size, float((t[0] - departure) / np.timedelta64(1, "h")), step
 
 
@@ -85,9 +94,11 @@ class ForecastGrid:
         forecast = decode_time(forecast)
         fields = find_fields(forecast, variables)
         if not fields:
-            raise ValueError("the forecast has no field seaway knows; mark them with CF standard "
-                             f"names ({', '.join(n[0] for n in STANDARD_NAMES.values())}) or pass "
-                             "variables={role: name}" + unknown_fields_hint(forecast))
+            raise ValueError(
+                "the forecast has no field seaway knows; mark them with CF standard "
+                f"names ({', '.join(n[0] for n in STANDARD_NAMES.values())}) or pass "
+                "variables={role: name}" + unknown_fields_hint(forecast)
+            )
         some = next(iter(fields.values()))
         dims = tuple(d for d in some.dims if d != "time")
         #: What routing through this forecast assumes (persistence), for the routes' outputs.
@@ -136,11 +147,17 @@ class ForecastGrid:
         """What a voyage arriving at `arrival` assumes of this forecast: its persistence notes,
         and its last frame held past its last time."""
         out = list(self.assumptions)
-        if self.times is not None and arrival is not None and arrival > self.times[-1] and \
-                not any("last frame" in a for a in out):
+        if (
+            self.times is not None
+            and arrival is not None
+            and arrival > self.times[-1]
+            and not any("last frame" in a for a in out)
+        ):
             hours = (arrival - self.times[-1]) / np.timedelta64(1, "h")
-            out.append(f"persistence: the voyage arrives {hours:.1f} h after the forecast's last "
-                       f"time ({_iso(self.times[-1])}); its last frame is held until then")
+            out.append(
+                f"persistence: the voyage arrives {hours:.1f} h after the forecast's last "
+                f"time ({_iso(self.times[-1])}); its last frame is held until then"
+            )
         return out
 
     def engine(self) -> _core.Forecast:
@@ -153,16 +170,16 @@ class ForecastGrid:
         k = int(np.clip(round((hours - self.first_h) / self.step_h), 0, self.frames - 1))
         out = object.__new__(ForecastGrid)
         out.__dict__.update(self.__dict__, frames=1, first_h=0.0, step_h=1.0)
-        out.arrays = {r: np.ascontiguousarray(self.arrays[r][k:k + 1]) for r in roles
-                      if r in self.arrays}
+        out.arrays = {r: np.ascontiguousarray(self.arrays[r][k : k + 1]) for r in roles if r in self.arrays}
         return out
 
     def later(self, hours: float) -> ForecastGrid:
         """The same forecast for a ship leaving `hours` after this departure (frame times and
         departure shifted; `shift_h` adds up, for zone windows given in hours)."""
         out = object.__new__(ForecastGrid)
-        out.__dict__.update(self.__dict__, first_h=self.first_h - hours,
-                            shift_h=getattr(self, "shift_h", 0.0) + hours)
+        out.__dict__.update(
+            self.__dict__, first_h=self.first_h - hours, shift_h=getattr(self, "shift_h", 0.0) + hours
+        )
         if self.departure is not None:
             out.departure = self.departure + np.timedelta64(int(round(hours * 3.6e12)), "ns")
         return out

@@ -37,9 +37,24 @@ from .files import on_grid
 from .grid import ForecastGrid
 
 
-def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=None, land=None,
-               neighbourhood=5, method="astar", variables=None, zones=(), keep_away=(), via=(),
-               if_no_safe_route="least_danger", persist=False, source=None) -> Route:
+def route_time(
+    forecast,
+    start,
+    end,
+    *,
+    vessel: Vessel = Vessel(),
+    departure=None,
+    land=None,
+    neighbourhood=5,
+    method="astar",
+    variables=None,
+    zones=(),
+    keep_away=(),
+    via=(),
+    if_no_safe_route="least_danger",
+    persist=False,
+    source=None,
+) -> Route:
     """The quickest route from `start` to `end` (lat, lon) through a forecast.
 
     forecast: xarray.Dataset on a regular lat/lon grid, optionally with a `time` dimension
@@ -81,9 +96,24 @@ def route_time(forecast, start, end, *, vessel: Vessel = Vessel(), departure=Non
         return r
 
 
-def route_ice_weather(season, forecast, start, end, *, ice_class="Arc7", vessel: Vessel = Vessel(),
-                      departure=None, persist=False, variables=None, land=None, neighbourhood=5,
-                      method="astar", speed="andreeva", source=None, **speed_options) -> Route:
+def route_ice_weather(
+    season,
+    forecast,
+    start,
+    end,
+    *,
+    ice_class="Arc7",
+    vessel: Vessel = Vessel(),
+    departure=None,
+    persist=False,
+    variables=None,
+    land=None,
+    neighbourhood=5,
+    method="astar",
+    speed="andreeva",
+    source=None,
+    **speed_options,
+) -> Route:
     """The quickest route through ice and weather at once (seaway.models.IceWeatherTime): each
     step crosses the ice chart valid when it starts at the class's speed (Andreeva 2021's
     V = F x V0 with V0 = vessel.speed_kn, or a speed table: see seaway.ice.season), changed by
@@ -102,8 +132,10 @@ def route_ice_weather(season, forecast, start, end, *, ice_class="Arc7", vessel:
     t = grid.template
     lat, lon = (t[d].values for d in t.dims)
     if not grid.prepare(neighbourhood).chart.geographic:
-        raise ValueError("routing through ice and weather needs the ice charts on a lat/lon grid; "
-                         "move them onto one first (seaway.weather.to_latlon)")
+        raise ValueError(
+            "routing through ice and weather needs the ice charts on a lat/lon grid; "
+            "move them onto one first (seaway.weather.to_latlon)"
+        )
     forecast, notes = on_grid(forecast, lat, lon, t.dims)
     fc = ForecastGrid(forecast, variables, departure, persist=persist, source=source)
     fc.assumptions += notes
@@ -111,8 +143,19 @@ def route_ice_weather(season, forecast, start, end, *, ice_class="Arc7", vessel:
     return grid.prepare(neighbourhood).route(start, end, model=model, method=method)
 
 
-def route_safest(forecast, start, end, *, ship_length_m, speed_kn, at_hours=0.0, land=None,
-                 neighbourhood=5, method="astar", variables=None) -> Route:
+def route_safest(
+    forecast,
+    start,
+    end,
+    *,
+    ship_length_m,
+    speed_kn,
+    at_hours=0.0,
+    land=None,
+    neighbourhood=5,
+    method="astar",
+    variables=None,
+) -> Route:
     """The route of least wave danger (Grinyak et al. 2018): minimises sum (u_i + u_j) / 2 * r with the
     danger u in [1, 10] from MSC.1/Circ.1228's criteria for the step's heading (see
     seaway._core.wave_danger and cpp/seaway/waves.hpp), on the forecast frame valid nearest

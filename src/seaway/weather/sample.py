@@ -23,16 +23,22 @@ def kara_autumn(days=3, start="2026-10-01", shape=(190, 230)):
     la, lo = np.meshgrid(lat, lon, indexing="ij")
     west = np.clip(1.0 - ((la - 68.0) / 14.0 + (lo - 50.0) / 60.0), 0.0, 1.0)[None]
     hs = 1.0 + 4.5 * t * west
-    coastal = np.exp(-((la - 72.0) / 2.0) ** 2)[None]
-    fields = {"hs": (hs, "sea_surface_wave_significant_height", "m"),
-              "wdir": (270.0 + 45.0 * t + 0 * hs, "sea_surface_wave_from_direction", "degree"),
-              "tm": (4.0 + 1.5 * hs, "sea_surface_wave_mean_period", "s"),
-              "u10": (6.0 + 14.0 * t * west, "eastward_wind", "m s-1"),
-              "v10": (0 * hs - 2.0, "northward_wind", "m s-1"),
-              "uo": (0.3 * coastal + 0 * hs, "eastward_sea_water_velocity", "m s-1"),
-              "vo": (0 * hs, "northward_sea_water_velocity", "m s-1")}
-    forecast = xr.Dataset({k: (("time", "lat", "lon"), v.astype(np.float32), {"standard_name": n, "units": u})
-                           for k, (v, n, u) in fields.items()},
-                          coords={"time": times, "lat": lat, "lon": lon},
-                          attrs={"title": "synthetic Kara Sea autumn gale (seaway.weather.kara_autumn)"})
+    coastal = np.exp(-(((la - 72.0) / 2.0) ** 2))[None]
+    fields = {
+        "hs": (hs, "sea_surface_wave_significant_height", "m"),
+        "wdir": (270.0 + 45.0 * t + 0 * hs, "sea_surface_wave_from_direction", "degree"),
+        "tm": (4.0 + 1.5 * hs, "sea_surface_wave_mean_period", "s"),
+        "u10": (6.0 + 14.0 * t * west, "eastward_wind", "m s-1"),
+        "v10": (0 * hs - 2.0, "northward_wind", "m s-1"),
+        "uo": (0.3 * coastal + 0 * hs, "eastward_sea_water_velocity", "m s-1"),
+        "vo": (0 * hs, "northward_sea_water_velocity", "m s-1"),
+    }
+    forecast = xr.Dataset(
+        {
+            k: (("time", "lat", "lon"), v.astype(np.float32), {"standard_name": n, "units": u})
+            for k, (v, n, u) in fields.items()
+        },
+        coords={"time": times, "lat": lat, "lon": lon},
+        attrs={"title": "synthetic Kara Sea autumn gale (seaway.weather.kara_autumn)"},
+    )
     return ice, forecast

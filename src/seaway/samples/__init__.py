@@ -12,15 +12,28 @@ from functools import lru_cache
 
 import numpy as np
 
-from .base.fields import distance_km, gaussian, resample, smooth_noise
-from .base.units import EARTH_RADIUS_KM, KM_PER_DEG  # noqa: F401 - EARTH_RADIUS_KM: part of this API
-from .base.validate import number
-from .ice import classes as ice_classes
-from .ice.codes import STAGE_CODES
+from ..base.fields import distance_km, gaussian, resample, smooth_noise
+from ..base.units import EARTH_RADIUS_KM, KM_PER_DEG  # noqa: F401 - EARTH_RADIUS_KM: part of this API
+from ..ice import classes as ice_classes
+from ..ice.codes import STAGE_CODES
 
 # Grinyak et al. 2022's impact tables and ice_impact() live in seaway.ice.impact (with tables for every
 # class); re-exported here so seaway.samples.ice_impact keeps working.
-from .ice.impact import ICE_IMPACT, ice_impact  # noqa: F401
+from ..ice.impact import ICE_IMPACT, ice_impact  # noqa: F401
+from .synthetic import SYNTHETIC_END, SYNTHETIC_START, synthetic_endpoints, synthetic_sea
+
+# The benchmark raster (synthetic_*, SYNTHETIC_*) is defined in seaway.samples.synthetic.
+__all__ = [
+    "kara_sea",
+    "kara_season",
+    "synthetic_endpoints",
+    "synthetic_sea",
+    "KARA_EXTENT",
+    "STAGES",
+    "ICE_CLASS_ALIASES",
+    "SYNTHETIC_START",
+    "SYNTHETIC_END",
+]
 
 #: Extent of kara_sea() in degrees: pixel edges, not centres.
 KARA_EXTENT = {"lat_north": 82.0, "lat_south": 68.0, "lon_west": 50.0, "lon_east": 110.0}
@@ -64,7 +77,9 @@ def _coarse_land_distance(shape=(380, 460), sub=4, max_km=200.0):
 def _stage_from_thickness(h, fy_lumped):
     stage = np.select(
         [h <= 0, h < 0.05, h < 0.10, h < 0.15, h < 0.30, h < 0.70, h < 1.20],
-        [55, 81, 82, 84, 85, 87, 91], default=93).astype(np.float32)
+        [55, 81, 82, 84, 85, 87, 91],
+        default=93,
+    ).astype(np.float32)
     lump = fy_lumped & (h >= 0.30) & (h < 2.0)  # an analyst's undivided first-year ice
     stage[lump] = 86
     return stage
@@ -126,35 +141,74 @@ def _kara_sea(shape):
 def _dataset(xr, lat, lon, land, conc, stage, h):
     codes = sorted(STAGES)
     coords = {
-        "lat": ("lat", lat, {"standard_name": "latitude", "units": "degrees_north",
-                             "long_name": "latitude of pixel centre", "axis": "Y"}),
-        "lon": ("lon", lon, {"standard_name": "longitude", "units": "degrees_east",
-                             "long_name": "longitude of pixel centre", "axis": "X"}),
+        "lat": (
+            "lat",
+            lat,
+            {
+                "standard_name": "latitude",
+                "units": "degrees_north",
+                "long_name": "latitude of pixel centre",
+                "axis": "Y",
+            },
+        ),
+        "lon": (
+            "lon",
+            lon,
+            {
+                "standard_name": "longitude",
+                "units": "degrees_east",
+                "long_name": "longitude of pixel centre",
+                "axis": "X",
+            },
+        ),
     }
     dims = ("lat", "lon")
     data = {
-        "land": (dims, land, {"standard_name": "land_binary_mask", "units": "1",
-                              "long_name": "land (GLOBE 1 km land mask at the pixel centre)"}),
-        "sea_ice_concentration": (dims, conc, {
-            "standard_name": "sea_ice_area_fraction", "units": "0.1",
-            "long_name": "total ice concentration CT in tenths (0 ice free ... 10 = 10/10; "
-                         "NaN on land)"}),
-        "stage_of_development": (dims, stage, {
-            "long_name": "stage of development of the ice (WMO SIGRID-3 code, SA; NaN on land)",
-            "units": "1",
-            "flag_values": np.array(codes, dtype=np.float32),
-            "flag_meanings": " ".join(STAGES[c][0].replace(" ", "_").replace(",", "")
-                                      for c in codes),
-            "references": "JCOMM Technical Report 23 (SIGRID-3, v3.0)"}),
-        "ice_thickness": (dims, h, {"standard_name": "sea_ice_thickness", "units": "m",
-                                    "long_name": "sea ice thickness (NaN on land)"}),
+        "land": (
+            dims,
+            land,
+            {
+                "standard_name": "land_binary_mask",
+                "units": "1",
+                "long_name": "land (GLOBE 1 km land mask at the pixel centre)",
+            },
+        ),
+        "sea_ice_concentration": (
+            dims,
+            conc,
+            {
+                "standard_name": "sea_ice_area_fraction",
+                "units": "0.1",
+                "long_name": "total ice concentration CT in tenths (0 ice free ... 10 = 10/10; NaN on land)",
+            },
+        ),
+        "stage_of_development": (
+            dims,
+            stage,
+            {
+                "long_name": "stage of development of the ice (WMO SIGRID-3 code, SA; NaN on land)",
+                "units": "1",
+                "flag_values": np.array(codes, dtype=np.float32),
+                "flag_meanings": " ".join(STAGES[c][0].replace(" ", "_").replace(",", "") for c in codes),
+                "references": "JCOMM Technical Report 23 (SIGRID-3, v3.0)",
+            },
+        ),
+        "ice_thickness": (
+            dims,
+            h,
+            {
+                "standard_name": "sea_ice_thickness",
+                "units": "m",
+                "long_name": "sea ice thickness (NaN on land)",
+            },
+        ),
     }
     attrs = {
         "title": "Kara Sea in late winter: synthetic ice chart on the real coastline",
         "source": "synthetic ice (deterministic smooth random fields, seaway.samples.kara_sea) on "
-                  "the real GLOBE coastline from the global-land-mask package",
+        "the real GLOBE coastline from the global-land-mask package",
         "comment": "A demonstration chart, not an observation; do not navigate by it. Rows run "
-                   "north to south (lat descending).",
+        "north to south (lat descending).",
         "Conventions": "CF-1.8",
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)
@@ -177,60 +231,6 @@ def kara_sea(shape=(1900, 2300)):
         raise ValueError(f"shape must be (rows, cols), got {shape!r}")
     _grid(shape)
     return _kara_sea(tuple(int(n) for n in shape)).copy(deep=True)
-
-
-def synthetic_endpoints(shape=(1900, 2300)):
-    """(row, col) start near the south-west corner and end near the north-east corner of
-    synthetic_sea(shape); both are water and joined by water (rows run north to south)."""
-    rows, cols = (int(n) for n in shape)
-    return (rows - 1 - rows // 20, cols // 20), (rows // 20, cols - 1 - cols // 20)
-
-
-SYNTHETIC_START, SYNTHETIC_END = synthetic_endpoints()
-
-
-def synthetic_sea(shape=(1900, 2300), land_fraction=0.3, seed=0):
-    """A deterministic planar cost raster for benchmarks: land (np.inf) in a few large blobs and
-    islands covering `land_fraction` of the pixels, smooth ice-like costs 1-30 over the water
-    (open water 1-2). A winding channel keeps synthetic_endpoints(shape) connected by water."""
-    rows, cols = (int(n) for n in shape)
-    if rows < 20 or cols < 20:
-        raise ValueError(f"shape must be at least (20, 20), got {shape!r}")
-    number(land_fraction, "land_fraction", minimum=0, maximum=0.9, what="a number in [0, 0.9)")
-    if land_fraction == 0.9:
-        raise ValueError("land_fraction must be a number in [0, 0.9), got 0.9")
-    rng = np.random.default_rng(seed)
-    coarse = (max(rows // 8, 20), max(cols // 8, 20))
-    cy, cx = np.mgrid[0:coarse[0], 0:coarse[1]] / np.array(coarse).reshape(2, 1, 1)
-    blobs = np.zeros(coarse)
-    for y, x, r in zip(rng.uniform(0.1, 0.9, 6), rng.uniform(0.1, 0.9, 6), rng.uniform(0.06, 0.12, 6)):
-        blobs += np.exp(-((cy - y) ** 2 + (cx - x) ** 2) / (2 * r**2))
-    relief = resample(blobs + 0.7 * smooth_noise(rng, coarse, 2.0), rows, cols)
-    ice = resample(smooth_noise(rng, coarse, 4.0), rows, cols).astype(np.float64)
-
-    (r0, c0), (r1, c1) = synthetic_endpoints(shape)
-    knots = np.array([[r0, c0], [0.65 * rows, 0.45 * cols], [0.35 * rows, 0.55 * cols], [r1, c1]])
-    channel = _near_polyline(rows, cols, knots, max(3.0, 0.005 * min(rows, cols)))
-    free = relief[~channel]
-    k = int(round(land_fraction * rows * cols))
-    land = np.zeros((rows, cols), bool)
-    if k > 0:
-        threshold = np.partition(free, free.size - k)[free.size - k]
-        land = (relief >= threshold) & ~channel
-    cost = 1.0 + 29.0 * ice**2
-    cost[land] = np.inf
-    return cost
-
-
-def _near_polyline(rows, cols, knots, width):
-    """Pixels within `width` of the polyline through `knots` ((row, col) points)."""
-    r, c = np.mgrid[0:rows, 0:cols]
-    best = np.full((rows, cols), np.inf)
-    for a, b in zip(knots[:-1], knots[1:]):
-        ab = b - a
-        t = np.clip(((r - a[0]) * ab[0] + (c - a[1]) * ab[1]) / (ab @ ab), 0, 1)
-        np.minimum(best, np.hypot(r - a[0] - t * ab[0], c - a[1] - t * ab[1]), out=best)
-    return best <= width
 
 
 def kara_season(days=7, start="2026-07-01", melt_m_per_day=0.1, melted_m=0.5, shape=(380, 460)):
@@ -260,10 +260,16 @@ def kara_season(days=7, start="2026-07-01", melt_m_per_day=0.1, melted_m=0.5, sh
         ct.append(c), sa.append(s), h.append(hd)
     dims = ("time", "lat", "lon")
     time = np.datetime64(start, "D") + np.arange(days).astype("timedelta64[D]")
-    return xr.Dataset({"CT": (dims, np.array(ct), {"units": "0.1", "long_name": "total concentration"}),
-                       "SA": (dims, np.array(sa), {"long_name": "stage of development (WMO code)"}),
-                       "thickness": (dims, np.array(h), {"units": "m", "standard_name": "sea_ice_thickness"}),
-                       "land": (("lat", "lon"), ds.land.values)},
-                      coords={"time": time.astype("datetime64[ns]"), "lat": ds.lat, "lon": ds.lon},
-                      attrs={"title": f"Kara Sea breaking up: {days} synthetic daily charts from {start}",
-                             "comment": "synthetic (seaway.samples.kara_season); do not navigate by it"})
+    return xr.Dataset(
+        {
+            "CT": (dims, np.array(ct), {"units": "0.1", "long_name": "total concentration"}),
+            "SA": (dims, np.array(sa), {"long_name": "stage of development (WMO code)"}),
+            "thickness": (dims, np.array(h), {"units": "m", "standard_name": "sea_ice_thickness"}),
+            "land": (("lat", "lon"), ds.land.values),
+        },
+        coords={"time": time.astype("datetime64[ns]"), "lat": ds.lat, "lon": ds.lon},
+        attrs={
+            "title": f"Kara Sea breaking up: {days} synthetic daily charts from {start}",
+            "comment": "synthetic (seaway.samples.kara_season); do not navigate by it",
+        },
+    )
