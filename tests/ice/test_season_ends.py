@@ -101,3 +101,38 @@ def test_only_land_parting_the_ends_names_the_land_mask():
     with pytest.raises(NoRouteError, match="separate water bodies even with all ice open") as info:
         route_season(ds, WEST, EAST, ice_class="Arc4", v0_kn=14)
     assert info.value.cause == "land" and "check the land mask" in str(info.value)
+
+
+@pytest.mark.needs_data("ocean_model", "metno_ROMS_Arctic20_1to5Feb_2016.nc")
+def test_real_ocean_model_season_ends_and_a_way_closed_by_ice(shared_data):
+    """MET Norway's ROMS Arctic-20km daily ice (1-5 Feb 2016; aice, hice; a planar 20-km grid:
+    points are (row, col), distances in its km)."""
+    import xarray as xr
+
+    from seaway.ice.season import as_season
+
+    with xr.open_dataset(shared_data / "ocean_model" / "metno_ROMS_Arctic20_1to5Feb_2016.nc") as src:
+        ds = src[["aice", "hice", "mask"]].load()
+    grid = SeasonGrid(as_season(ds.assign(land=ds["mask"] == 0).drop_vars(["latitude", "longitude"])))
+    start = (20, 0)  # open water in the south-west
+    model = IceSeasonTime(grid, "Arc4", 12)
+    # The coastal land pixel (37, 90): the nearest pixel some chart opens, (37, 88) 40 km away,
+    # lies in a pocket the ship cannot reach from the start; the nearest joined one is (33, 88).
+    field = np.asarray(grid.prepare().cost_field(start, model=model))
+    assert grid.dry[37, 90] and not grid.dry[37, 88] and not np.isfinite(field[37, 88])
+    far = 20 * np.hypot(4, 2)
+    with pytest.raises(SnapError, match=rf"end 37,90 is on an impassable pixel \(land\); the nearest point "
+                       rf"the ship may use is 33.0000,88.0000, {far:.1f} chart units away: farther than max_km=20"):
+        snap_season_ends(model, start, (37, 90))
+    snapped = snap_season_ends(model, start, (37, 90), max_km=100)
+    assert snapped.end == (33, 88) and snapped.moves[0].distance == pytest.approx(far)
+    # (36, 66), open to Arc4 on some chart, lies behind ice over Arc4-Arc6's 6/10 in every chart.
+    with pytest.raises(NoRouteError) as info:
+        route_season(grid, start, (36, 66), ice_class="Arc4", v0_kn=12)
+    err = info.value
+    assert err.cause == "ice" and "land mask" not in str(err) and err.weakest_class == "Arc7"
+    assert "that of 2016-02-05T12:00" in str(err)  # the most open chart: the last
+    assert err.closing_ice[0][0].startswith("ice 0.2 m thick at 6.") and "(Arc7 and stronger" in err.closing_ice[0][0]
+    assert np.isfinite(route_season(grid, start, (36, 66), ice_class="Arc7", v0_kn=12).cost)
+    with pytest.raises(NoRouteError):
+        route_season(grid, start, (36, 66), ice_class="Arc6", v0_kn=12)

@@ -73,7 +73,7 @@ def _who(model) -> str:
 def _describer(ds):
     """(row, col) -> the ice of that pixel of one chart: its governing stage (or thickness) and
     total concentration."""
-    ct = np.asarray(ds["CT"].values, float)
+    ct = np.round(np.asarray(ds["CT"].values, float), 1)  # a model's 6.48207/10 reads 6.5/10
     stage = np.asarray(governing_stage(ds).values, float) if "SA" in ds else None
     thick = np.asarray(ds["thickness"].values, float) if "thickness" in ds else None
 
@@ -83,7 +83,7 @@ def _describer(ds):
             code = stage[r, c]
             text = f"{stage_name(code)} (SA {int(code)})" if np.isfinite(code) else "ice of unknown stage"
         elif thick is not None:
-            text = f"ice {thick[r, c]:.2f} m thick"
+            text = f"ice {thick[r, c]:.1f} m thick"  # to 0.1 m: kinds, not every pixel
         if not concentration:
             return text
         return text + (f" at {ct[r, c]:g}/10" if np.isfinite(ct[r, c]) else ", concentration unknown")
@@ -201,7 +201,7 @@ def _closing(ds, levels, way, cols) -> list:
     px, km, _ = weighted_samples(way)
     r, c = px[:, 0], px[:, 1] % cols
     found: dict = {}
-    ct, ice = np.asarray(ds["CT"].values, float), _describer(ds)
+    ct, ice = np.round(np.asarray(ds["CT"].values, float), 1), _describer(ds)
     for j in np.flatnonzero(levels[r, c] > 0):
         level = int(levels[r[j], c[j]])
         who = "no class may enter" if level >= NO_CLASS else f"{LADDER[level - 1]} and stronger may enter"
