@@ -261,8 +261,13 @@ def test_bad_seasons_are_refused_with_the_fix():
         route_season(planar_season(thick, hours=[0, 24]), (0, 0), (4, 5), ice_class="Arc4")
     closed = stage.copy()
     closed[:, :, 3] = 93
-    with pytest.raises(seaway.NoRouteError, match="even waiting"):
+    # A column of thick first-year ice at 9/10 (over Arc7's 8/10): explained by the ice
+    # (seaway.ice.seasonwhy), not the engine's bare "no route ... even waiting".
+    with pytest.raises(seaway.NoRouteError, match=r"ice closes the way in the season's most open chart "
+                       r"for Arc7, .*: thick first-year ice \(SA 93\) at 9/10 \(Arc9 and stronger may "
+                       r"enter\): 14 km; the weakest class that gets through the season is Arc9") as info:
         route_season(planar_season(closed, hours=[0, 24]), (0, 0), (4, 5))
+    assert info.value.cause == "ice" and info.value.weakest_class == "Arc9"
     with pytest.warns(UserWarning, match="beyond the last chart"):
         slow = planar_season(np.full((2, 5, 60), 87), hours=[0, 1])
         route_season(slow, (0, 0), (4, 59), ice_class="Arc4", concentration_limit=False)

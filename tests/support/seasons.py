@@ -27,3 +27,28 @@ def retreating_edge(days=7, edge0=72.0, per_day=0.6):
                        "SA": (("time", "lat", "lon"), np.array(sa)),
                        "land": (("time", "lat", "lon"), np.broadcast_to(land, (days,) + land.shape))},
                       coords={"time": time, "lat": lat, "lon": lon})
+
+
+CHANNEL_LAT = np.round(np.arange(71.2, 69.99, -0.02), 6)  # 61 rows, 2.22 km apart
+CHANNEL_LON = np.round(np.arange(60.0, 66.001, 0.05), 6)  # 121 columns, 1.86 km apart at 70.5 N
+
+
+def channel_season(ice, days=3, wall=None):
+    """Daily charts (from DAY0) of a channel of open water at 70.40-70.60 N (pixel centres)
+    between land to the north and south, 60-66 E. ice: [(day, (lat0, lat1, lon0, lon1), CT,
+    SA), ...]: ice on that day's chart over the pixels whose centres lie in the box. wall: a
+    longitude where land closes the channel (two separate water bodies)."""
+    la, lo = np.meshgrid(CHANNEL_LAT, CHANNEL_LON, indexing="ij")
+    land = (la > 70.6001) | (la < 70.3999)
+    if wall is not None:
+        land |= np.isclose(lo, wall)
+    ct = np.zeros((days,) + la.shape)
+    sa = np.full((days,) + la.shape, np.nan)
+    for day, (a, b, c, d), conc, stage in ice:
+        box = (la >= a - 1e-6) & (la <= b + 1e-6) & (lo >= c - 1e-6) & (lo <= d + 1e-6)
+        ct[day][box], sa[day][box] = conc, stage
+    ct[:, land] = np.nan
+    time = DAY0 + np.arange(days) * np.timedelta64(1, "D")
+    return xr.Dataset({"CT": (("time", "lat", "lon"), ct), "SA": (("time", "lat", "lon"), sa),
+                       "land": (("time", "lat", "lon"), np.broadcast_to(land, ct.shape))},
+                      coords={"time": time, "lat": CHANNEL_LAT, "lon": CHANNEL_LON})

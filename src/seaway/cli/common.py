@@ -10,6 +10,7 @@ import time
 import numpy as np
 
 from ..base.interrupt import SettledProgress, reporting
+from ..engine.snap import DEFAULT_SNAP_KM
 
 #: The exact methods a command may be asked for.
 CLI_METHODS = ("auto", "bidirectional", "astar", "dijkstra")
@@ -50,6 +51,26 @@ def add_ends(parser: argparse.ArgumentParser) -> None:
         required=True,
         metavar="LAT,LON",
         help="end in decimal degrees (ROW,COL on charts with projected y/x)",
+    )
+
+
+def add_snap_options(parser: argparse.ArgumentParser, where: str) -> None:
+    """--snap and --snap-km: move an end the ship may not use (`where`: what such an end is)."""
+    parser.add_argument(
+        "--snap",
+        action="store_true",
+        help=f"move a start or end {where} to the nearest point the ship may use in water "
+        "that joins both ends, at most --snap-km away; the ends asked for and used are "
+        "in every output (default: stop with an error naming why, that point and its "
+        "distance)",
+    )
+    parser.add_argument(
+        "--snap-km",
+        type=positive_km,
+        default=DEFAULT_SNAP_KM,
+        metavar="KM",
+        help=f"the farthest --snap moves an end (default {DEFAULT_SNAP_KM:g} km; farther: "
+        "stop, naming the distance; 0: never move)",
     )
 
 

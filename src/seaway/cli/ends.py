@@ -77,6 +77,7 @@ def check_ends(
     chart_cost=None,
     to_user=None,
     asked=None,
+    why=None,
 ):
     """The ends (start, end) the route uses (seaway.engine.snap.snap_ends), and the sentences
     saying how they moved. An impassable end raises ValueError naming why and the nearest
@@ -85,11 +86,12 @@ def check_ends(
     shallow); chart_cost: the cost before those were applied (tells whether the ice itself
     forbids it); to_user(point) -> (lat, lon): how a chart point (a projected chart's pixel)
     reads for the user (default: as it is); asked: the ends as the user gave them (default
-    `ends`), for the messages."""
+    `ends`), for the messages; why(row, col) -> str: what makes a pixel impassable (default
+    from the chart's layers, as describe() says it)."""
     chart = as_chart(cost, land=land)
     base = None if chart_cost is None else np.asarray(getattr(chart_cost, "values", chart_cost), float)
 
-    def why(r, c):
+    def described(r, c):
         blocks = base is None or not np.isfinite(base[r, c]) or (chart.land is not None and chart.land[r, c])
         return describe(layers, (r, c), vessel, reasons((r, c)) if reasons else (), blocks)
 
@@ -98,7 +100,13 @@ def check_ends(
     unit = "km" if chart.geographic or to_user else "chart units"
     try:
         snapped = snap_ends(
-            cost, ends[0], ends[1], land=land, neighbourhood=neighbourhood, max_km=np.inf, why=why
+            cost,
+            ends[0],
+            ends[1],
+            land=land,
+            neighbourhood=neighbourhood,
+            max_km=np.inf,
+            why=why or described,
         )
     except SnapError as exc:  # no usable pixel joins the other end
         raise ValueError(

@@ -4,10 +4,9 @@ speed, the outputs, and the weather-routing options (seaway.cli.forecastargs).""
 
 from __future__ import annotations
 
-from ..engine.snap import DEFAULT_SNAP_KM
 from ..models import EDGE_COSTS
 from .chartfile import fast_ice
-from .common import CLI_METHODS, EPILOG, add_ends, grid, neighbourhood, point, positive_km
+from .common import CLI_METHODS, EPILOG, add_ends, add_snap_options, grid, neighbourhood, point
 from .constraints import add_constraint_options
 from .forecastargs import EXAMPLE as FORECAST_EXAMPLE
 from .forecastargs import add_forecast_options
@@ -130,23 +129,7 @@ def add_route_command(commands) -> None:
         action="store_true",
         help="keep the raw pixel route (default: any-angle smoothing, never costlier)",
     )
-    rp.add_argument(
-        "--snap",
-        action="store_true",
-        help="move a start or end on land, in ice the class may not enter or in too "
-        "shallow water to the nearest point the ship may use in water that joins "
-        "both ends, at most --snap-km away; the ends asked for and used are in "
-        "every output (default: stop with an error naming why, that point and "
-        "its distance)",
-    )
-    rp.add_argument(
-        "--snap-km",
-        type=positive_km,
-        default=DEFAULT_SNAP_KM,
-        metavar="KM",
-        help=f"the farthest --snap moves an end (default {DEFAULT_SNAP_KM:g} km; "
-        "farther: stop, naming the distance)",
-    )
+    add_snap_options(rp, "on land, in ice the class may not enter or in too shallow water")
     add_constraint_options(rp, point)
     rp.add_argument(
         "--speed",

@@ -4,16 +4,20 @@
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import os
 
 import numpy as np
 
+from ..errors import NoRouteError
 from ..ice.grids import latlon_grid
 from ..ice.routegrid import route_grid
 from ..ice.season import SeasonGrid, read_season
+from ..ice.seasonwhy import closed_reason, explain_season_no_route, usable
 from ..models import IceSeasonTime
 from ..output import export
-from .common import EPILOG, Progress, add_ends, grid, neighbourhood, tell
+from .common import EPILOG, Progress, add_ends, add_snap_options, grid, neighbourhood, tell
+from .ends import check_ends
 from .vectorchart import in_degrees
 
 
@@ -115,19 +119,40 @@ def run_season(args) -> int:
     t = season.times
     say(f"{t.size} charts from {t[0]} to {t[-1]} on {season.shape[0]} x {season.shape[1]} pixels")
     speed = "andreeva" if args.speed_table is None else args.speed_table
-    model = IceSeasonTime(
-        season,
-        args.vessel,
-        args.speed,
-        departure=args.depart,
-        speed=speed,
-        concentration_limit=not args.no_concentration_limit,
+    limit = {"concentration_limit": not args.no_concentration_limit}
+    model = IceSeasonTime(season, args.vessel, args.speed, departure=args.depart, speed=speed, **limit)
+    # Only an end no chart opens moves (an end closed at departure may open later: the ship waits).
+    (start, end), moved = check_ends(
+        season.template.copy(data=np.where(usable(model), 1.0, np.inf)),
+        season.dry,
+        None,
+        (args.start, args.end),
+        snap=args.snap,
+        snap_km=args.snap_km,
+        say=lambda note: tell(note, "season"),
+        neighbourhood=args.neighbourhood,
+        why=closed_reason(model),
     )
     say(
         f"routing {model.ice_class} at {args.speed:g} kn from {model.departure} "
         f"({args.neighbourhood}x{args.neighbourhood} stencil, waiting allowed)"
     )
-    r = season.prepare(args.neighbourhood).route(args.start, args.end, model=model, method=args.method)
+    prepared = season.prepare(args.neighbourhood)
+    try:
+        r = prepared.route(start, end, model=model, method=args.method)
+    except NoRouteError:
+        say("no route: reading the season's ice for why")
+        raise explain_season_no_route(
+            season,
+            model,
+            start,
+            end,
+            neighbourhood=args.neighbourhood,
+            speed=speed,
+            asked=(args.start, args.end),
+            **limit,
+        ) from None
+    r = dataclasses.replace(r, notes=r.notes + tuple(moved), requested=(args.start, args.end))
     r.name = args.name
     st = r.stats.voyage
     print(r)
@@ -150,7 +175,11 @@ def add_season_command(commands) -> None:
         description="Find the earliest-arriving route through a time series of ice charts: each "
         "step crosses the chart valid when the ship is there, at the class's speed "
         "(Andreeva 2021's V = F x V0, or --speed-table); the ship may wait for the ice "
-        "to clear (the route lists its waits).",
+        "to clear (the route lists its waits). An end is moved (--snap) only when no chart "
+        "of the season lets the class use it (land, or ice closed in every chart): one closed "
+        "at departure but open later stays, and the ship waits. No route: the message names "
+        "the ice that closes the way in the season's most open chart and the weakest class "
+        "that gets through the season.",
         epilog=EPILOG,
     )
     sp.add_argument(
@@ -185,6 +214,7 @@ def add_season_command(commands) -> None:
         help="lat/lon grid (degrees) to rasterise SIGRID-3 charts onto (default: as seaway "
         "route chooses it, the box around the great circle between the ends)",
     )
+    add_snap_options(sp, "on land or in ice the class may not enter in any chart of the season")
     sp.add_argument(
         "--neighbourhood",
         type=neighbourhood,

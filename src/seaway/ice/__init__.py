@@ -3,7 +3,7 @@ tables), IMO POLARIS (MSC.1/Circ.1519) and Andreeva 2021 (Andreeva: speed V = F*
 
 Modules: classes, codes, impact, polaris, andreeva (formulas), colours; pareto (Andreeva's
 time-safety routes), summary, season (routes through a time series of charts; numpy/xarray
-only) and sigrid
+only; seasonwhy: its ends and why no route gets through it) and sigrid
 (readers of SIGRID-3 shapefiles/GeoPackages and NSIDC NetCDF; needs ``pip install
 "seaway[ice]"``, imported only when you import seaway.ice.sigrid).
 
@@ -36,7 +36,7 @@ from .impact import ICE_IMPACT, chart_impact, ice_impact
 
 #: The modules that route (they import the engine, which imports the formulas above): loaded on
 #: first use, so that the cost models can read the ice classes without a cycle.
-_ROUTING = ("pareto", "season", "summary", "noroute")
+_ROUTING = ("pareto", "season", "seasonwhy", "summary", "noroute")
 
 
 def __getattr__(name):
@@ -53,6 +53,7 @@ __all__ = [
     "polaris",
     "pareto",
     "season",
+    "seasonwhy",
     "summary",
     "noroute",
     "CLASSES",

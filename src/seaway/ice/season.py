@@ -50,6 +50,7 @@ from ..base.files import open_netcdf
 from ..chart.raster import as_chart
 from ..engine.methods import check_options
 from ..engine.prepared import PreparedChart
+from ..errors import NoRouteError
 from ..models import EdgeCost, IceSeasonTime
 from . import andreeva
 from .seasonspeed import andreeva_speed_kn, class_speed_kn, table_speed_kn
@@ -237,6 +238,7 @@ def route_season(
     land=None,
     neighbourhood=5,
     method="astar",
+    snap_km=None,
     **speed_options,
 ):
     """The earliest-arriving route from `start` to `end` through a season of ice charts.
@@ -246,12 +248,28 @@ def route_season(
     departure: a date within the season (default its first chart's time).
     speed: "andreeva" (Andreeva 2021) or a speed table; speed_options go to andreeva_speed_kn
         (h_pass_m, stage_thickness, other_factor, concentration_limit) or table_speed_kn.
+    snap_km: None (default): an end no chart opens raises ValueError; a distance: such an end
+        moves at most that far (seaway.ice.seasonwhy.snap_season_ends; the route records it).
     Waiting is allowed (the module docstring says why). Returns a Route whose cost is the
     passage time in hours, waiting included; see seaway.models.IceSeasonTime for its stats.
-    The same as SeasonGrid(season).prepare().route(start, end, model=IceSeasonTime(...))."""
+    No route raises the NoRouteError of seaway.ice.seasonwhy.explain_season_no_route."""
+    from . import seasonwhy  # a layer above: it reads the season's speeds for every class
+
     grid = season if isinstance(season, SeasonGrid) else SeasonGrid(season, land)
     model = IceSeasonTime(grid, ice_class, v0_kn, departure=departure, speed=speed, **speed_options)
-    return grid.prepare(neighbourhood).route(start, end, model=model, method=method)
+    ends = (
+        None
+        if snap_km is None
+        else seasonwhy.snap_season_ends(model, start, end, neighbourhood=neighbourhood, max_km=snap_km)
+    )
+    a, b = (start, end) if ends is None else ends.ends
+    try:
+        r = grid.prepare(neighbourhood).route(a, b, model=model, method=method)
+    except NoRouteError:
+        raise seasonwhy.explain_season_no_route(
+            grid, model, a, b, neighbourhood=neighbourhood, speed=speed, asked=(start, end), **speed_options
+        ) from None
+    return r if ends is None else ends.record(r)
 
 
 def arrival_field(
