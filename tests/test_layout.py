@@ -38,16 +38,22 @@ def _module(path):
     return ".".join(parts[:-1] if parts[-1] == "__init__" else parts), path.name == "__init__.py"
 
 
-def _target(node, module, is_package):
-    """The seaway module a function-level import names (None: not a seaway module)."""
+def _targets(node, module, is_package):
+    """The seaway modules a function-level import names ("from . import x": the module x)."""
     if isinstance(node, ast.Import):
-        names = [a.name for a in node.names if a.name.split(".")[0] == "seaway"]
-        return names[0] if names else None
+        return [a.name for a in node.names if a.name.split(".")[0] == "seaway"]
     if node.level == 0:
-        return node.module if (node.module or "").split(".")[0] == "seaway" else None
-    base = module.split(".")
-    base = base[: len(base) - node.level + (1 if is_package else 0)]
-    return ".".join(base + ([node.module] if node.module else []))
+        base = node.module or ""
+        if base.split(".")[0] != "seaway":
+            return []
+    else:
+        parts = module.split(".")
+        parts = parts[: len(parts) - node.level + (1 if is_package else 0)]
+        base = ".".join(parts + ([node.module] if node.module else []))
+    subs = [f"{base}.{a.name}" for a in node.names]
+    path = SRC.parent.joinpath(*base.split("."))
+    named = [m for m, a in zip(subs, node.names) if (path / f"{a.name}.py").exists() or (path / a.name).is_dir()]
+    return named or [base]
 
 
 def _function_level_imports():
@@ -60,9 +66,9 @@ def _function_level_imports():
                 continue
             for node in ast.walk(fn):
                 if isinstance(node, (ast.Import, ast.ImportFrom)):
-                    target = _target(node, module, is_package)
-                    if target and target != "seaway" and not target.startswith("seaway._core"):
-                        found.add((module, target))
+                    for target in _targets(node, module, is_package):
+                        if target != "seaway" and not target.startswith("seaway._core"):
+                            found.add((module, target))
     return found
 
 
