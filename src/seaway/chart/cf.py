@@ -59,7 +59,7 @@ GRID_VECTORS = {
 }
 
 
-def grid_role(standard_name) -> tuple[str, str] | None:
+def grid_role(standard_name: Any) -> tuple[str, str] | None:
     """(role, the grid-relative pair's first name) of a grid-relative vector component by its
     standard name: ('current_east', 'sea_water_x_velocity') for sea_water_x_velocity, the
     north role for the y component; None for any other name."""
@@ -78,6 +78,7 @@ GRID_PAIRS = {
     "wind_east": ("x_wind", "y_wind"),
     "wind_north": ("x_wind", "y_wind"),
 }
+
 
 def coord_role(name: Hashable, attrs: Mapping[Any, Any]) -> str | None:
     """'lat', 'lon', 'y' or 'x' for a coordinate, by its name or CF attributes."""

@@ -17,7 +17,15 @@ EXAMPLE = (
     "--out voyage.rtz"
 )
 #: Options that mean something only with --forecast.
-_ONLY_WITH = ("forecast_variable", "forecast_crs", "depart", "persist", "arrive_by", "displacement", "vessel_file")
+_ONLY_WITH = (
+    "forecast_variable",
+    "forecast_crs",
+    "depart",
+    "persist",
+    "arrive_by",
+    "displacement",
+    "vessel_file",
+)
 
 
 def role_pair(text: str) -> tuple[str, str]:

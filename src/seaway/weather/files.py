@@ -228,4 +228,3 @@ def _merge(parts, notes) -> xr.Dataset:
             notes.append(f"{path}: resampled onto the grid of {parts[0][0]} (linear)")
         out.append(d.drop_vars([c for c in d.coords if c not in d.dims and c != "time"], errors="ignore"))
     return xr.merge(out, compat="override", join="exact")
-

@@ -178,10 +178,7 @@ def to_latlon(ds: xr.Dataset, lat, lon, *, crs=None) -> xr.Dataset:
     extra)."""
     _, x_ax, y_ax, _ = grid_crs(ds, crs)
     x, y, north = grid_xy(ds, lat, lon, crs)
-    pts = {
-        x_ax.name: xr.DataArray(x, dims=("lat", "lon")),
-        y_ax.name: xr.DataArray(y, dims=("lat", "lon")),
-    }
+    pts = {x_ax.name: xr.DataArray(x, dims=("lat", "lon")), y_ax.name: xr.DataArray(y, dims=("lat", "lon"))}
     keep = [v for v in ds.data_vars if set(ds[v].dims) >= {x_ax.name, y_ax.name}]
     out = ds[keep].interp(pts, method="linear")
     out = out.drop_vars(

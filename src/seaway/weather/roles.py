@@ -91,9 +91,13 @@ def as_roles(ds, fields: dict, path: str, notes: list):
         std_new = STANDARD_NAMES[role][0]
         if relative[role] and projected:
             std_new = GRID_PAIRS[role][0 if role.endswith("east") else 1]
-            why = std if g is not None else (
-                f"{'standard name ' + std if std else 'no standard name'}, neither east/north nor "
-                "grid x/y: taken as grid-relative, as models write vectors on projected grids"
+            why = (
+                std
+                if g is not None
+                else (
+                    f"{'standard name ' + std if std else 'no standard name'}, neither east/north nor "
+                    "grid x/y: taken as grid-relative, as models write vectors on projected grids"
+                )
             )
             notes.append(f"{path}:{name} is grid-relative ({why}): rotated to east/north for {role}")
         elif relative[role]:
