@@ -1,7 +1,8 @@
 """`seaway route --forecast FILE ...`: weather routing on the command line (seaway.weather).
 
 Without CHART the route runs on the forecast's own lat/lon grid, land where every field is NaN
-or the package's coastline (global-land-mask) has land; with an ice CHART (SIGRID-3, an ice
+or the package's coastline (global-land-mask) has land (a projected forecast is first resampled
+onto a lat/lon grid, seaway.cli.forecastgrid); with an ice CHART (SIGRID-3, an ice
 NetCDF, a concentration field, or a NetCDF season of charts with a time axis) the ice and the
 weather act in one voyage (seaway.weather.route_ice_weather). Objectives: the least time
 (Olovyannikov 2025; with danger zones the least time in danger when no safe route exists,

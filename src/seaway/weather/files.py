@@ -3,7 +3,8 @@ NetCDF that CDO converted from GRIB (variables named var229, an absolute time ax
 %Y%m%d.%f"), GRIB through cfgrib (the [grib] extra); merged into one Dataset whose fields the
 weather models find by role.
 
-* Roles (ROLES): found by CF standard name (STANDARD_NAMES), then by GRIB short name
+* Roles (ROLES): found by CF standard name (STANDARD_NAMES; grid-relative x/y components,
+  GRID_VECTORS, are kept for rotation: seaway.weather.roles), then by GRIB short name
   (GRIB_NAMES: swh, mwd, mwp, u10, v10, uo, vo, ...), or given as {role: variable}; an unknown
   role is refused naming the valid ones, and a file whose variables are only GRIB code numbers
   (CDO's varNNN) is refused naming the flags that map them.
@@ -22,6 +23,7 @@ import numpy as np
 import xarray as xr
 
 from .forecast import ROLES, check_roles, grib_times, open_forecast
+from .projected import on_grid  # noqa: F401 - its old home; seaway.weather.projected now
 from .roles import as_roles, pick
 
 #: GRIB code numbers that CDO writes as varNNN, with their meaning in ECMWF's tables (a hint in
