@@ -35,8 +35,17 @@ STANDARD_NAMES = {
     "wind_speed": ("wind_speed",),
 }
 
-#: Grid-relative vector pairs and the east/north names they become.
+#: Grid-relative vector pairs and the east/north names they become. In the CF standard name table
+#: "x" and "y" name components along the grid's own x and y axes (positive towards increasing
+#: x, y), which on a projected grid are not east and north: sea_water_x_velocity,
+#: barotropic_sea_water_x_velocity, x_wind (and the table's older aliases of x_wind / y_wind,
+#: grid_eastward_wind / grid_northward_wind). x_sea_water_velocity is not in the table: it is
+#: what MET Norway's ROMS products write for the 3-D current.
 GRID_VECTORS = {
+    ("sea_water_x_velocity", "sea_water_y_velocity"): (
+        "eastward_sea_water_velocity",
+        "northward_sea_water_velocity",
+    ),
     ("barotropic_sea_water_x_velocity", "barotropic_sea_water_y_velocity"): (
         "barotropic_eastward_sea_water_velocity",
         "barotropic_northward_sea_water_velocity",
@@ -46,6 +55,28 @@ GRID_VECTORS = {
         "northward_sea_water_velocity",
     ),
     ("x_wind", "y_wind"): ("eastward_wind", "northward_wind"),
+    ("grid_eastward_wind", "grid_northward_wind"): ("eastward_wind", "northward_wind"),
+}
+
+
+def grid_role(standard_name: Any) -> tuple[str, str] | None:
+    """(role, the grid-relative pair's first name) of a grid-relative vector component by its
+    standard name: ('current_east', 'sea_water_x_velocity') for sea_water_x_velocity, the
+    north role for the y component; None for any other name."""
+    for pair, earth in GRID_VECTORS.items():
+        if standard_name in pair:
+            k = pair.index(standard_name)
+            role = next(r for r, names in STANDARD_NAMES.items() if earth[k] in names)
+            return role, pair[0]
+    return None
+
+
+#: For each vector role, the grid-relative pair a field mapped onto it is marked with.
+GRID_PAIRS = {
+    "current_east": ("sea_water_x_velocity", "sea_water_y_velocity"),
+    "current_north": ("sea_water_x_velocity", "sea_water_y_velocity"),
+    "wind_east": ("x_wind", "y_wind"),
+    "wind_north": ("x_wind", "y_wind"),
 }
 
 

@@ -1,7 +1,8 @@
 """`seaway route --forecast FILE ...`: weather routing on the command line (seaway.weather).
 
 Without CHART the route runs on the forecast's own lat/lon grid, land where every field is NaN
-or the package's coastline (global-land-mask) has land; with an ice CHART (SIGRID-3, an ice
+or the package's coastline (global-land-mask) has land (a projected forecast is first resampled
+onto a lat/lon grid, seaway.cli.forecastgrid); with an ice CHART (SIGRID-3, an ice
 NetCDF, a concentration field, or a NetCDF season of charts with a time axis) the ice and the
 weather act in one voyage (seaway.weather.route_ice_weather). Objectives: the least time
 (Olovyannikov 2025; with danger zones the least time in danger when no safe route exists,
@@ -31,6 +32,7 @@ from ..weather import (
 )
 from .chartfile import open_chart
 from .common import Progress, searching, tell
+from .forecastgrid import coastline, onto_route_grid
 from .outputs import check_outputs, write_outputs
 
 
@@ -51,21 +53,9 @@ def _vessel(args, say):
     return vessel, profile, args.vessel or (profile.ice_class if profile else None)
 
 
-def _coastline(ds) -> np.ndarray:
-    """The package's coastline (global-land-mask) at the forecast's pixel centres."""
-    from global_land_mask import globe
-
-    lat = next(ds[c].values for c in ("lat", "latitude") if c in ds.coords)
-    lon = next(ds[c].values for c in ("lon", "longitude") if c in ds.coords)
-    la, lo = np.meshgrid(
-        np.asarray(lat, float), (np.asarray(lon, float) + 180.0) % 360.0 - 180.0, indexing="ij"
-    )
-    return globe.is_land(la, lo)
-
-
-def _season(args, ice_class, departure, say):
-    """The ice of CHART as a season (SeasonGrid): a NetCDF with a time axis as it is, one chart
-    taken as valid from the departure for the whole voyage (said)."""
+def _ice(args, ice_class, say):
+    """The ice of CHART: a SeasonGrid (a NetCDF with a time axis, as it is) or one chart's
+    layers (a Dataset), which _season() takes as valid from the departure."""
     path = args.chart
     if path.lower().endswith((".nc", ".nc4", ".cdf", ".netcdf")):
         ds = open_netcdf(path, "an ice chart is NetCDF, GeoTIFF or SIGRID-3")
@@ -93,12 +83,29 @@ def _season(args, ice_class, departure, say):
     keep = [
         k for k in ("CT", "CA", "SA", "CB", "SB", "CC", "SC", "thickness", "land", "off_chart") if k in ice
     ]
-    one = ice[keep].drop_vars("time", errors="ignore").expand_dims(time=[np.datetime64(departure, "ns")])
+    one = ice[keep].drop_vars("time", errors="ignore")
+    one.attrs["date"] = data.date or ""
+    return one
+
+
+def _grid_of(ice):
+    """(lat, lon, dims) of the ice's grid."""
+    t = ice.template if isinstance(ice, SeasonGrid) else ice["CT"]
+    return (*(t[d].values for d in t.dims), t.dims)
+
+
+def _season(ice, departure):
+    """The ice as a season: one chart taken as valid from the departure for the whole voyage
+    (said)."""
+    if isinstance(ice, SeasonGrid):
+        return ice
+    ice = ice.copy()
+    date = ice.attrs.pop("date", "")
     tell(
-        f"the ice chart{' of ' + data.date if data.date else ''} is taken as valid from the "
+        f"the ice chart{' of ' + date if date else ''} is taken as valid from the "
         "departure for the whole voyage (persistence of the ice)"
     )
-    return SeasonGrid(one)
+    return SeasonGrid(ice.expand_dims(time=[np.datetime64(departure, "ns")]))
 
 
 def run_forecast_route(args) -> int:
@@ -111,28 +118,32 @@ def run_forecast_route(args) -> int:
     for note in notes:
         say(note)
     source = ", ".join(os.path.basename(p) for p in args.forecast)
-    fc = ForecastGrid(ds, departure=args.depart, persist=args.persist, source=source)
-    for said in fc.assumptions:
-        tell(said)
-    departure = fc.departure
-    say(f"departure {departure} (forecast {fc.describe()})")
-    vessel, profile, ice_class = _vessel(args, say)
     method = {"auto": "astar", "bidirectional": None}.get(args.method, args.method)
     if method is None:
         raise ValueError(
             "a route through a forecast is on a clock: it cannot be searched from both "
             "ends; use --method astar or dijkstra"
         )
+    if args.chart is not None and args.objective != "time":
+        raise ValueError(
+            "through ice and weather at once only the least time is modelled; "
+            "use --objective time, or leave CHART out"
+        )
+    vessel, profile, ice_class = _vessel(args, say)
+    ice = _ice(args, ice_class or "Arc7", say) if args.chart is not None else None
+    ds, resampled = onto_route_grid(args, ds, source, None if ice is None else _grid_of(ice))
+    for said in resampled:
+        tell(said)
+    fc = ForecastGrid(ds, departure=args.depart, persist=args.persist, source=source)
+    for said in fc.assumptions:
+        tell(said)
+    departure = fc.departure
+    say(f"departure {departure} (forecast {fc.describe()})")
     common = dict(neighbourhood=args.neighbourhood, method=method)
     rows, cols = fc.shape
     with searching(say, rows * cols):
-        if args.chart is not None:
-            if args.objective != "time":
-                raise ValueError(
-                    "through ice and weather at once only the least time is modelled; "
-                    "use --objective time, or leave CHART out"
-                )
-            season = _season(args, ice_class or "Arc7", departure, say)
+        if ice is not None:
+            season = _season(ice, departure)
             cls = get_class(ice_class or "Arc7")
             model = (
                 "IMO POLARIS speed limits"
@@ -155,12 +166,14 @@ def run_forecast_route(args) -> int:
             )
             r = dataclasses.replace(r, notes=tuple(r.notes) + (f"speed in ice: {model} ({cls.name})",))
         else:
-            land = fc.dry | _coastline(ds)
+            land = fc.dry | coastline(ds)
             say(
                 f"routing on the forecast's grid ({rows} x {cols} pixels), land from its NaN fields "
                 "and the coastline of global-land-mask"
             )
             r = _on_forecast(args, ds, fc, vessel, profile, land, source, common, say)
+    if resampled:
+        r = dataclasses.replace(r, notes=tuple(resampled) + tuple(r.notes))
     return _report(args, r, planned, say)
 
 

@@ -17,7 +17,15 @@ EXAMPLE = (
     "--out voyage.rtz"
 )
 #: Options that mean something only with --forecast.
-_ONLY_WITH = ("forecast_variable", "depart", "persist", "arrive_by", "displacement", "vessel_file")
+_ONLY_WITH = (
+    "forecast_variable",
+    "forecast_crs",
+    "depart",
+    "persist",
+    "arrive_by",
+    "displacement",
+    "vessel_file",
+)
 
 
 def role_pair(text: str) -> tuple[str, str]:
@@ -65,7 +73,19 @@ def add_forecast_options(rp) -> None:
         metavar="ROLE=NAME",
         help=f"the variable that plays ROLE (repeatable); roles: {', '.join(ROLES)}; "
         "e.g. wave_height=var229 wave_from=var230 wave_period=var232 for CDO's "
-        "ECMWF wave fields",
+        "ECMWF wave fields; a role mapped onto a grid-relative field of a projected "
+        "forecast (standard name x/y, or none) is rotated to east/north, which is said",
+    )
+    g.add_argument(
+        "--forecast-crs",
+        metavar="CRS",
+        help="the projection of a forecast on a projected grid (EPSG code, PROJ string or "
+        "WKT) when its file names no grid mapping, or to override it. A projected forecast "
+        "(projection_x/y_coordinate axes, e.g. polar stereographic ROMS, NEMO, WAM) is "
+        "resampled bilinearly onto a lat/lon grid (the ice CHART's, else the box around the "
+        "ends at the forecast's resolution, or --grid), its grid-relative currents and winds "
+        "(sea_water_x/y_velocity, barotropic_sea_water_x/y_velocity, x/y_wind) rotated to "
+        "east/north, calm outside the model grid; all said and recorded",
     )
     g.add_argument(
         "--depart",

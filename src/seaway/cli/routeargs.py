@@ -74,7 +74,9 @@ def add_route_command(commands) -> None:
         help="lat/lon grid (degrees) to rasterise a SIGRID-3 chart onto (default: the "
         "box around the great circle between the ends, widened by a quarter of "
         "its length (at least 300 km), at 0.05 deg of latitude and the same km "
-        "east-west, clipped to the chart; see seaway.ice.routegrid)",
+        "east-west, clipped to the chart; see seaway.ice.routegrid), or to resample a "
+        "projected --forecast onto without CHART (default: the same box at the "
+        "forecast's resolution)",
     )
     rp.add_argument(
         "--depth",

@@ -179,7 +179,7 @@ class IceWeatherTime(IceSeasonTime):
             raise ValueError(
                 f"the forecast has {forecast.shape} pixels but the season's charts "
                 f"{self.season.shape}: put it on their grid first "
-                "(seaway.weather.files.on_grid)"
+                "(seaway.weather.projected.on_grid)"
             )
         self.forecast, self.vessel = forecast, vessel
         fastest_kn = 1.0 / (

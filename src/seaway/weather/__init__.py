@@ -5,10 +5,11 @@ engine settings, and re-planning during the voyage."""
 
 from ..base.units import KNOTS_PER_MS
 from ..vessel import Vessel  # noqa: F401 - the same class as seaway.vessel.Vessel, documented there
-from .files import decode_time, on_grid, open_forecasts
+from .files import decode_time, open_forecasts
 from .forecast import STANDARD_NAMES, find_fields, grib_times, open_forecast, to_latlon
 from .fuel import FuelCurve, route_fuel, route_min_fuel, tradeoff
 from .grid import ForecastGrid
+from .projected import is_projected, on_grid
 from .routes import position_at, replan, rhumb_line_km, route_ice_weather, route_safest, route_time
 from .sample import kara_autumn
 
@@ -32,6 +33,7 @@ __all__ = [
     "tradeoff",
     "decode_time",
     "on_grid",
+    "is_projected",
     "open_forecasts",
     "kara_autumn",
 ]

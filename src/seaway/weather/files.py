@@ -3,7 +3,8 @@ NetCDF that CDO converted from GRIB (variables named var229, an absolute time ax
 %Y%m%d.%f"), GRIB through cfgrib (the [grib] extra); merged into one Dataset whose fields the
 weather models find by role.
 
-* Roles (ROLES): found by CF standard name (STANDARD_NAMES), then by GRIB short name
+* Roles (ROLES): found by CF standard name (STANDARD_NAMES; grid-relative x/y components,
+  GRID_VECTORS, are kept for rotation: seaway.weather.roles), then by GRIB short name
   (GRIB_NAMES: swh, mwd, mwp, u10, v10, uo, vo, ...), or given as {role: variable}; an unknown
   role is refused naming the valid ones, and a file whose variables are only GRIB code numbers
   (CDO's varNNN) is refused naming the flags that map them.
@@ -21,8 +22,9 @@ import warnings
 import numpy as np
 import xarray as xr
 
-from ..chart.cf import STANDARD_NAMES, coord_role
-from .forecast import ROLES, check_roles, grib_times, open_forecast, role_of
+from .forecast import ROLES, check_roles, grib_times, open_forecast
+from .projected import on_grid  # noqa: F401 - its old home; seaway.weather.projected now
+from .roles import as_roles, pick
 
 #: GRIB code numbers that CDO writes as varNNN, with their meaning in ECMWF's tables (a hint in
 #: the error only: a code number alone does not say which table it is from).
@@ -139,14 +141,7 @@ def open_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, li
     parts, notes, found = [], [], {}
     for path in paths:
         ds = decode_time(_open_grib(path) if _grib(path) else open_forecast(path, decode_times=False), path)
-        fields = {}
-        for role, name in wanted.items():
-            if name in ds.data_vars and role not in found:
-                fields[role] = (name, "given")
-        for name, var in ds.data_vars.items():
-            hit = role_of(var)
-            if hit and hit[0] not in fields and hit[0] not in found and hit[0] not in wanted:
-                fields[hit[0]] = (str(name), hit[1])
+        fields = pick(ds, wanted, found)
         if not fields:
             raise ValueError(
                 f"{path}: no forecast field seaway knows (variables "
@@ -157,9 +152,7 @@ def open_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, li
         for role, (name, how) in fields.items():
             found[role] = name
             notes.append(f"forecast {role} = {path}:{name} ({how})")
-        part = ds[[n for n, _ in fields.values()]].rename({n: r for r, (n, _) in fields.items()})
-        for role in fields:
-            part[role].attrs["standard_name"] = STANDARD_NAMES[role][0]
+        part = as_roles(ds, fields, path, notes)
         parts.append((path, part))
     missing = {r: n for r, n in wanted.items() if r not in found}
     if missing:
@@ -237,34 +230,3 @@ def _merge(parts, notes) -> xr.Dataset:
             notes.append(f"{path}: resampled onto the grid of {parts[0][0]} (linear)")
         out.append(d.drop_vars([c for c in d.coords if c not in d.dims and c != "time"], errors="ignore"))
     return xr.merge(out, compat="override", join="exact")
-
-
-def on_grid(ds: xr.Dataset, lat, lon, dims=("lat", "lon"), source="the forecast"):
-    """(the forecast on the lat/lon grid `lat`, `lon` with dimensions `dims`, notes): resampled
-    linearly in latitude and longitude (exact where the grids share points; longitudes in either
-    convention). Pixels outside the forecast's extent have no weather (calm), which the notes
-    say."""
-    role = {coord_role(str(n), c.attrs): str(n) for n, c in ds.coords.items() if c.ndim == 1}
-    if "lat" not in role or "lon" not in role:
-        raise ValueError(
-            f"{source} is not on a lat/lon grid (its coordinates: {sorted(map(str, ds.coords))}); "
-            "move it onto one first (seaway.weather.to_latlon)"
-        )
-    lat, lon = np.asarray(lat, float), np.asarray(lon, float)
-    src_lon = np.asarray(ds[role["lon"]].values, float)
-    want_lon = lon % 360.0 if src_lon.max() > 180.0 else (lon + 180.0) % 360.0 - 180.0
-    out = ds.interp(
-        {role["lat"]: xr.DataArray(lat, dims=dims[0]), role["lon"]: xr.DataArray(want_lon, dims=dims[1])}
-    )
-    out = out.drop_vars([role["lat"], role["lon"]], errors="ignore")
-    out = out.assign_coords({dims[0]: lat, dims[1]: lon})
-    src_lat = np.asarray(ds[role["lat"]].values, float)
-    inside_lat = (lat >= src_lat.min()) & (lat <= src_lat.max())
-    inside_lon = (want_lon >= src_lon.min()) & (want_lon <= src_lon.max())
-    outside = 1.0 - inside_lat.mean() * inside_lon.mean()
-    notes = []
-    if outside > 0:
-        notes.append(
-            f"{100 * outside:.0f} % of the grid lies outside {source}: no weather (calm) is assumed there"
-        )
-    return out, notes

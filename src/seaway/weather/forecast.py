@@ -134,33 +134,51 @@ def _axis(ds, name):
     raise ValueError(f"the forecast has no 1-D coordinate with standard_name {name!r}")
 
 
+def grid_crs(ds: xr.Dataset, crs=None):
+    """(pyproj.CRS, x axis, y axis, metres per unit of the axes) of a forecast on a projected
+    grid: its 1-D projection_x/y_coordinate axes (km or m) and `crs` or the CRS its grid-mapping
+    variable gives (crs_wkt, proj4_string, or the CF grid-mapping attributes)."""
+    try:
+        import pyproj
+    except ImportError:
+        raise ImportError('a projected forecast needs pyproj: pip install "seaway[ice]"') from None
+    x_ax, y_ax = _axis(ds, "projection_x_coordinate"), _axis(ds, "projection_y_coordinate")
+    if crs is None:
+        mapping = next(
+            (ds[v.attrs["grid_mapping"]] for v in ds.data_vars.values() if v.attrs.get("grid_mapping") in ds),
+            None,
+        )
+        if mapping is None:
+            raise ValueError("the forecast names no grid mapping; pass crs=")
+        crs = mapping.attrs.get("crs_wkt") or mapping.attrs.get("proj4_string") or mapping.attrs.get("proj4")
+        if crs is None:
+            crs = pyproj.CRS.from_cf(dict(mapping.attrs))
+    scale = 1000.0 if str(x_ax.attrs.get("units", "m")).lower() in ("km", "kilometre", "kilometer") else 1.0
+    return pyproj.CRS.from_user_input(crs), x_ax, y_ax, scale
+
+
+def grid_xy(ds: xr.Dataset, lat, lon, crs=None):
+    """(x, y, north): the projected coordinates (in the axes' units) of the lat/lon grid's
+    points and the angle of north from the grid's +y axis there (radians, clockwise)."""
+    import pyproj
+
+    proj, _, _, scale = grid_crs(ds, crs)
+    to_grid = pyproj.Transformer.from_crs("EPSG:4326", proj, always_xy=True)
+    la, lo = np.meshgrid(np.asarray(lat, float), np.asarray(lon, float), indexing="ij")
+    x, y = to_grid.transform(lo, la)
+    xn, yn = to_grid.transform(lo, la + 1e-4)  # a step north, to find north on the grid
+    return x / scale, y / scale, np.arctan2(xn - x, yn - y)
+
+
 def to_latlon(ds: xr.Dataset, lat, lon, *, crs=None) -> xr.Dataset:
     """Resample a forecast on a projected grid onto the regular lat/lon grid `lat`, `lon`
     (bilinear in the projected coordinates; NaN outside the model grid), turning grid-relative
     vectors (GRID_VECTORS) into eastward/northward ones. The projection comes from `crs` or the
-    grid-mapping variable's proj4_string / crs_wkt. Needs pyproj (the [ice] extra)."""
-    try:
-        import pyproj
-    except ImportError:
-        raise ImportError('to_latlon needs pyproj: pip install "seaway[ice]"') from None
-    x_ax, y_ax = _axis(ds, "projection_x_coordinate"), _axis(ds, "projection_y_coordinate")
-    if crs is None:
-        mapping = next(
-            (ds[v.attrs["grid_mapping"]] for v in ds.data_vars.values() if "grid_mapping" in v.attrs), None
-        )
-        if mapping is None:
-            raise ValueError("the forecast names no grid mapping; pass crs=")
-        crs = mapping.attrs.get("crs_wkt") or mapping.attrs.get("proj4_string")
-    scale = 1000.0 if x_ax.attrs.get("units") == "km" else 1.0
-    to_grid = pyproj.Transformer.from_crs("EPSG:4326", pyproj.CRS.from_user_input(crs), always_xy=True)
-    la, lo = np.meshgrid(np.asarray(lat, float), np.asarray(lon, float), indexing="ij")
-    x, y = to_grid.transform(lo, la)
-    xn, yn = to_grid.transform(lo, la + 1e-4)  # a step north, to find north on the grid
-    north = np.arctan2(xn - x, yn - y)  # angle of north from the grid's +y, clockwise
-    pts = {
-        x_ax.name: xr.DataArray(x / scale, dims=("lat", "lon")),
-        y_ax.name: xr.DataArray(y / scale, dims=("lat", "lon")),
-    }
+    grid-mapping variable's crs_wkt / proj4_string / CF attributes. Needs pyproj (the [ice]
+    extra)."""
+    _, x_ax, y_ax, _ = grid_crs(ds, crs)
+    x, y, north = grid_xy(ds, lat, lon, crs)
+    pts = {x_ax.name: xr.DataArray(x, dims=("lat", "lon")), y_ax.name: xr.DataArray(y, dims=("lat", "lon"))}
     keep = [v for v in ds.data_vars if set(ds[v].dims) >= {x_ax.name, y_ax.name}]
     out = ds[keep].interp(pts, method="linear")
     out = out.drop_vars(

@@ -33,8 +33,8 @@ from ..ice.season import SeasonGrid
 from ..models import IceWeatherTime, TravelTime, WaveDanger
 from ..result.route import Route
 from ..vessel import Vessel
-from .files import on_grid
 from .grid import ForecastGrid
+from .projected import on_grid
 
 
 def route_time(
@@ -122,8 +122,8 @@ def route_ice_weather(
 
     season: a season of ice charts (a Dataset or NetCDF path with a time axis, see
         seaway.ice.season.as_season; or a SeasonGrid); one chart: expand_dims(time=[date]).
-    forecast: a forecast Dataset on a lat/lon grid; resampled onto the season's grid
-        (seaway.weather.files.on_grid) unless it is on it. departure, persist, variables: as in
+    forecast: a forecast Dataset on a lat/lon or projected grid; resampled onto the season's grid
+        (seaway.weather.projected.on_grid) unless it is on it. departure, persist, variables: as in
         route_time; the departure must lie within the season too.
     Returns a Route whose cost is the passage time in hours, waits included; stats.voyage holds
     departure, arrival, waits, the charts used, the forecast and what was assumed."""
