@@ -35,15 +35,24 @@ pytest.register_assert_rewrite("support")  # the helpers' asserts (support/grids
 
 from support.data import SHARED_DATA, missing  # noqa: E402
 
-settings.register_profile("ci", derandomize=True, deadline=None, database=None, max_examples=100,
-                          print_blob=True, suppress_health_check=[HealthCheck.too_slow])
+settings.register_profile(
+    "ci",
+    derandomize=True,
+    deadline=None,
+    database=None,
+    max_examples=100,
+    print_blob=True,
+    suppress_health_check=[HealthCheck.too_slow],
+)
 settings.register_profile("dev", deadline=None, max_examples=100)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 
 def pytest_report_header(config):
-    return [f"hypothesis profile: {settings._current_profile}",
-            f"shared data: {SHARED_DATA}" + ("" if SHARED_DATA.is_dir() else " (absent)")]
+    return [
+        f"hypothesis profile: {settings._current_profile}",
+        f"shared data: {SHARED_DATA}" + ("" if SHARED_DATA.is_dir() else " (absent)"),
+    ]
 
 
 def pytest_runtest_setup(item):

@@ -52,7 +52,9 @@ def _targets(node, module, is_package):
         base = ".".join(parts + ([node.module] if node.module else []))
     subs = [f"{base}.{a.name}" for a in node.names]
     path = SRC.parent.joinpath(*base.split("."))
-    named = [m for m, a in zip(subs, node.names) if (path / f"{a.name}.py").exists() or (path / a.name).is_dir()]
+    named = [
+        m for m, a in zip(subs, node.names) if (path / f"{a.name}.py").exists() or (path / a.name).is_dir()
+    ]
     return named or [base]
 
 
@@ -79,7 +81,10 @@ def test_function_level_imports_are_the_few_the_contract_names():
     named = {tuple(s.split(" -> ")) for s in contract["ignore_imports"]}
     found = _function_level_imports()
     # Each import is named (an imported name may be a module below the named one's package).
-    unnamed = {(a, b) for a, b in found
-               if not any(a == na and (b == nb or b.startswith(nb + ".")) for na, nb in named)}
+    unnamed = {
+        (a, b)
+        for a, b in found
+        if not any(a == na and (b == nb or b.startswith(nb + ".")) for na, nb in named)
+    }
     assert unnamed == set()
     assert 0 < len(found) <= 12

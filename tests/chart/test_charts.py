@@ -46,13 +46,17 @@ def test_kara_sea_grid_and_cf_attributes(kara):
     lat, lon = kara.lat.values, kara.lon.values
     assert np.all(np.diff(lat) < 0) and np.all(np.diff(lon) > 0)  # north to south, west to east
     np.testing.assert_allclose(np.diff(lat), -14 / 1900, rtol=1e-9)
-    np.testing.assert_allclose([lat[0], lat[-1], lon[0], lon[-1]],
-                               [82 - 7 / 1900, 68 + 7 / 1900, 50 + 30 / 2300, 110 - 30 / 2300])
+    np.testing.assert_allclose(
+        [lat[0], lat[-1], lon[0], lon[-1]], [82 - 7 / 1900, 68 + 7 / 1900, 50 + 30 / 2300, 110 - 30 / 2300]
+    )
     assert abs(lat[0] - lat[1]) * charts.KM_PER_DEG == pytest.approx(0.8190, abs=1e-3)
     assert (kara.lat.attrs["standard_name"], kara.lat.attrs["units"]) == ("latitude", "degrees_north")
     assert (kara.lon.attrs["standard_name"], kara.lon.attrs["units"]) == ("longitude", "degrees_east")
-    expected = {"land": ("land_binary_mask", "1"), "sea_ice_concentration": ("sea_ice_area_fraction", "0.1"),
-                "ice_thickness": ("sea_ice_thickness", "m")}
+    expected = {
+        "land": ("land_binary_mask", "1"),
+        "sea_ice_concentration": ("sea_ice_area_fraction", "0.1"),
+        "ice_thickness": ("sea_ice_thickness", "m"),
+    }
     for name, (std, units) in expected.items():
         assert (kara[name].attrs["standard_name"], kara[name].attrs["units"]) == (std, units)
     stage = kara.stage_of_development.attrs  # no CF standard name exists: flags instead
@@ -80,14 +84,17 @@ def test_land_is_the_globe_mask_at_pixel_centres(kara):
     assert 0.35 < float(kara.land.mean()) < 0.45  # Taymyr, Yamal, Gydan, Novaya Zemlya ...
 
 
-@pytest.mark.parametrize("lat, lon, is_land", [
-    (74.0, 56.0, True),    # Novaya Zemlya, northern island
-    (70.0, 70.0, True),    # Yamal peninsula
-    (73.0, 95.0, True),    # Taymyr
-    (75.5, 70.0, False),   # open Kara Sea
-    (79.0, 75.0, False),   # northern Kara Sea
-    (71.0, 50.5, False),   # south-east Barents Sea
-])
+@pytest.mark.parametrize(
+    "lat, lon, is_land",
+    [
+        (74.0, 56.0, True),  # Novaya Zemlya, northern island
+        (70.0, 70.0, True),  # Yamal peninsula
+        (73.0, 95.0, True),  # Taymyr
+        (75.5, 70.0, False),  # open Kara Sea
+        (79.0, 75.0, False),  # northern Kara Sea
+        (71.0, 50.5, False),  # south-east Barents Sea
+    ],
+)
 def test_known_points(kara, lat, lon, is_land):
     p = _at(kara, lat, lon)
     assert bool(p.land) is is_land
@@ -179,7 +186,9 @@ def test_ice_impact_classes_and_inputs():
 
 def test_kara_sea_costs_route_without_a_land_mask(kara):
     """NaN stages on land become inf impact, so the stage raster alone keeps a route at sea."""
-    u = charts.ice_impact(kara.stage_of_development.isel(lat=slice(None, None, 10), lon=slice(None, None, 10)))
+    u = charts.ice_impact(
+        kara.stage_of_development.isel(lat=slice(None, None, 10), lon=slice(None, None, 10))
+    )
     r = seaway.route(u, (75.5, 70.0), (79.0, 75.0), neighbourhood=3)
     land = kara.land.values[::10, ::10]
     assert not land[r.pixels[:, 0], r.pixels[:, 1]].any()
@@ -203,8 +212,9 @@ def test_synthetic_sea():
     assert np.isfinite(r.cost) and r.cost >= r.length
 
 
-@pytest.mark.parametrize("shape, land_fraction, seed", [((190, 230), 0.3, 0), ((100, 120), 0.5, 7),
-                                                        ((300, 200), 0.0, 3)])
+@pytest.mark.parametrize(
+    "shape, land_fraction, seed", [((190, 230), 0.3, 0), ((100, 120), 0.5, 7), ((300, 200), 0.0, 3)]
+)
 def test_synthetic_sea_other_shapes_stay_connected(shape, land_fraction, seed):
     a = charts.synthetic_sea(shape, land_fraction=land_fraction, seed=seed)
     assert a.shape == shape
@@ -214,8 +224,9 @@ def test_synthetic_sea_other_shapes_stay_connected(shape, land_fraction, seed):
 
 
 def _run_demo(*args):
-    return subprocess.run([sys.executable, "-m", "seaway", "demo", *args], capture_output=True,
-                          text=True, timeout=120)
+    return subprocess.run(
+        [sys.executable, "-m", "seaway", "demo", *args], capture_output=True, text=True, timeout=120
+    )
 
 
 @pytest.mark.cli
@@ -267,8 +278,10 @@ def test_demo_in_process(capsys):
 
 
 @pytest.mark.cli
-@pytest.mark.parametrize("args", [["demo", "--neighbourhood", "4"], ["demo", "--ice-class", "Arc10"],
-                                  ["demo", "--method", "bfs"], []])
+@pytest.mark.parametrize(
+    "args",
+    [["demo", "--neighbourhood", "4"], ["demo", "--ice-class", "Arc10"], ["demo", "--method", "bfs"], []],
+)
 def test_demo_bad_arguments_exit_2(args, capsys):
     with pytest.raises(SystemExit) as exit_info:
         main(args)

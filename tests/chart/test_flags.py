@@ -22,11 +22,18 @@ def _packed_chart(tmp_path):
     raw = np.full((9, 9), 50, np.uint8)  # 0.5 everywhere
     raw[:8, 4] = 254
     raw[0, 0] = 251
-    da = xr.DataArray(raw * 0.01, dims=("y", "x"), name="conc",
-                      attrs={"standard_name": "sea_ice_area_fraction", "units": "1",
-                             "flag_values": np.array([251, 252, 253, 254], np.uint8),
-                             "flag_meanings": "pole_hole lakes coastal land_mask",
-                             "valid_range": np.array([0, 100], np.uint8)})
+    da = xr.DataArray(
+        raw * 0.01,
+        dims=("y", "x"),
+        name="conc",
+        attrs={
+            "standard_name": "sea_ice_area_fraction",
+            "units": "1",
+            "flag_values": np.array([251, 252, 253, 254], np.uint8),
+            "flag_meanings": "pole_hole lakes coastal land_mask",
+            "valid_range": np.array([0, 100], np.uint8),
+        },
+    )
     da.encoding.update(scale_factor=0.01, dtype="uint8", _FillValue=np.uint8(255))
     path = tmp_path / "packed.nc"
     da.to_dataset().to_netcdf(path)
@@ -40,8 +47,10 @@ def test_flags_in_packed_units_become_land_and_impassable(tmp_path):
     assert f.land.sum() == 8 and f.land[:8, 4].all()
     assert np.isnan(f.values.values[0, 0]) and np.isnan(f.values.values[:8, 4]).all()
     assert float(f.values[3, 3]) == pytest.approx(0.5)
-    assert f.notes == ["conc: 1 pixels flagged pole_hole (2.51) are impassable",
-                       "conc: 8 pixels flagged land_mask (2.54) are land"]
+    assert f.notes == [
+        "conc: 1 pixels flagged pole_hole (2.51) are impassable",
+        "conc: 8 pixels flagged land_mask (2.54) are land",
+    ]
 
 
 def test_route_on_a_flagged_dataarray_goes_round_the_flagged_land(tmp_path):
@@ -58,16 +67,24 @@ def test_route_on_a_flagged_dataarray_goes_round_the_flagged_land(tmp_path):
 
 
 def test_values_outside_valid_range_are_impassable():
-    da = xr.DataArray(np.array([[0.2, 7.0], [0.3, 0.4]]), dims=("y", "x"), name="c",
-                      attrs={"valid_min": 0.0, "valid_max": 1.0})
+    da = xr.DataArray(
+        np.array([[0.2, 7.0], [0.3, 0.4]]),
+        dims=("y", "x"),
+        name="c",
+        attrs={"valid_min": 0.0, "valid_max": 1.0},
+    )
     f = flags_out(da)
     assert np.isnan(f.values.values[0, 1]) and f.land is None
     assert f.notes == ["c: 1 pixels outside its valid range 0..1 are impassable"]
 
 
 def test_bit_field_flags_are_refused():
-    da = xr.DataArray(np.zeros((2, 2)), dims=("y", "x"), name="qa",
-                      attrs={"flag_masks": np.array([1, 2, 4]), "flag_meanings": "a b c"})
+    da = xr.DataArray(
+        np.zeros((2, 2)),
+        dims=("y", "x"),
+        name="qa",
+        attrs={"flag_masks": np.array([1, 2, 4]), "flag_meanings": "a b c"},
+    )
     with pytest.raises(ValueError, match="bit field of flags .* choose a data variable"):
         flags_out(da)
 
@@ -79,8 +96,12 @@ def test_lat_lon_dimensions_without_values_are_refused():
 
 
 def test_concentration_chart_states_its_assumption():
-    conc = xr.DataArray(np.array([[0.0, 0.1, 0.15], [0.55, 1.0, np.nan]]), dims=("y", "x"),
-                        name="aice", attrs={"standard_name": "sea_ice_area_fraction"})
+    conc = xr.DataArray(
+        np.array([[0.0, 0.1, 0.15], [0.55, 1.0, np.nan]]),
+        dims=("y", "x"),
+        name="aice",
+        attrs={"standard_name": "sea_ice_area_fraction"},
+    )
     ds, assumed = concentration_chart(conc, stage=87)
     np.testing.assert_array_equal(ds.CT.values[0], [0, 0, 2])  # 0.15 is ice: 1.5 tenths -> 2
     np.testing.assert_array_equal(ds.CT.values[1, :2], [6, 10])
@@ -111,10 +132,24 @@ def test_nsidc_route_round_yamal_in_latlon(shared_data, tmp_path, capsys):
     """Baydaratskaya Bay -> the Gulf of Ob: round the Yamal peninsula (its northern tip, Bely
     Island, is at 73.3 N), never across it; ends and outputs in lat/lon."""
     out = tmp_path / "r.geojson"
-    code = main(["route", str(shared_data.joinpath(*NSIDC)), "--vessel", "Arc7", "--from",
-                 "70.3,66.0", "--to", "72.9,74.0", "--out", str(out), "-q"])
+    code = main(
+        [
+            "route",
+            str(shared_data.joinpath(*NSIDC)),
+            "--vessel",
+            "Arc7",
+            "--from",
+            "70.3,66.0",
+            "--to",
+            "72.9,74.0",
+            "--out",
+            str(out),
+            "-q",
+        ]
+    )
     assert code == 0
     import json
+
     coords = np.array(json.loads(out.read_text())["geometry"]["coordinates"])
     lon, lat = coords[:, 0], coords[:, 1]
     assert lat[0] == pytest.approx(70.32, abs=0.01) and lon[0] == pytest.approx(65.75, abs=0.01)

@@ -12,8 +12,8 @@ import seaway
 xr = pytest.importorskip("xarray")
 
 R_EARTH = 6371.0088
-LAT = np.linspace(60.0, 65.0, 6)    # 1 degree steps
-LON = np.linspace(-10.0, 4.0, 8)    # 2 degree steps
+LAT = np.linspace(60.0, 65.0, 6)  # 1 degree steps
+LON = np.linspace(-10.0, 4.0, 8)  # 2 degree steps
 V = np.random.default_rng(0).uniform(1, 5, (6, 8))
 A, B = (60.0, -10.0), (65.0, 4.0)
 
@@ -28,6 +28,7 @@ def arc_km(deg):
 
 
 # --- coordinates found on DataArrays -----------------------------------------------------
+
 
 @pytest.mark.parametrize("names", [("lat", "lon"), ("latitude", "longitude")])
 def test_dataarray_lat_lon_names(base, names):
@@ -49,17 +50,19 @@ def test_dataarray_transposed_lon_lat(base):
 
 
 def test_cf_attributes_only(base):
-    da = xr.DataArray(V, dims=("j", "i"), coords={
-        "j": ("j", LAT, {"standard_name": "latitude"}),
-        "i": ("i", LON, {"units": "degrees_east"}),
-    })
+    da = xr.DataArray(
+        V,
+        dims=("j", "i"),
+        coords={"j": ("j", LAT, {"standard_name": "latitude"}), "i": ("i", LON, {"units": "degrees_east"})},
+    )
     r = seaway.route(da, A, B)
     assert r.geographic and r.cost == base.cost
     # units alone on both
-    da = xr.DataArray(V.T, dims=("p", "q"), coords={
-        "p": ("p", LON, {"units": "degree_east"}),
-        "q": ("q", LAT, {"units": "degrees_north"}),
-    })
+    da = xr.DataArray(
+        V.T,
+        dims=("p", "q"),
+        coords={"p": ("p", LON, {"units": "degree_east"}), "q": ("q", LAT, {"units": "degrees_north"})},
+    )
     assert seaway.route(da, A, B).cost == base.cost
 
 
@@ -95,14 +98,19 @@ def test_projected_y_x_spacing():
     # the route is at least as long as the straight line (in coordinate units)
     assert r.length >= math.hypot(2500, 1750) - 1e-9
     # CF axis attributes on odd names, descending y (spacing taken as |step|)
-    da2 = xr.DataArray(V, dims=("north", "east"), coords={
-        "north": ("north", y[::-1], {"standard_name": "projection_y_coordinate"}),
-        "east": ("east", x, {"axis": "X"}),
-    })
+    da2 = xr.DataArray(
+        V,
+        dims=("north", "east"),
+        coords={
+            "north": ("north", y[::-1], {"standard_name": "projection_y_coordinate"}),
+            "east": ("east", x, {"axis": "X"}),
+        },
+    )
     assert seaway.route(da2, (0, 0), (5, 7)).cost == ref.cost
 
 
 # --- cost_field on DataArrays ------------------------------------------------------------
+
 
 def test_cost_field_dataarray_same_coords():
     da = xr.DataArray(V, dims=("lat", "lon"), coords={"lat": LAT, "lon": LON})
@@ -125,14 +133,16 @@ def test_cost_field_dataarray_same_coords():
 
 # --- dtypes ---------------------------------------------------------------------------------
 
+
 def test_float32_equals_float64():
     v = np.round(V * 4) / 4  # exactly representable in float32
     r64 = seaway.route(v, (0, 0), (5, 7), edge_cost="integral")
     r32 = seaway.route(v.astype(np.float32), (0, 0), (5, 7), edge_cost="integral")
     assert r32.cost == r64.cost
     np.testing.assert_array_equal(r32.pixels, r64.pixels)
-    np.testing.assert_array_equal(seaway.cost_field(v.astype(np.float32), (2, 3)),
-                                  seaway.cost_field(v, (2, 3)))
+    np.testing.assert_array_equal(
+        seaway.cost_field(v.astype(np.float32), (2, 3)), seaway.cost_field(v, (2, 3))
+    )
 
 
 @pytest.mark.parametrize("dtype", [np.int8, np.int32, np.int64, np.uint16])
@@ -160,6 +170,7 @@ def test_land_as_dataarray():
 
 
 # --- longitude conventions and wrapping charts -------------------------------------------
+
 
 def test_longitude_conventions_on_a_regional_chart():
     lon = np.arange(100.0, 260.0, 10.0)  # 16 columns across the antimeridian, 0..360 style
@@ -224,6 +235,7 @@ def test_seam_route_beats_an_expensive_direct_band():
 
 # --- threads --------------------------------------------------------------------------------
 
+
 def test_same_route_in_four_threads():
     rng = np.random.default_rng(7)
     v = rng.uniform(1, 10, (300, 300))
@@ -246,11 +258,14 @@ def test_same_route_in_four_threads():
 
 # --- land masks ----------------------------------------------------------------------------
 
+
 def test_bool_and_0_1_land_masks_give_one_route():
     wall = np.zeros((7, 7), bool)
     wall[1:, 3] = True  # a wall with a gap in row 0
-    routes = [seaway.route(np.ones((7, 7)), (6, 0), (6, 6), land=m, neighbourhood=3)
-              for m in (wall, wall.astype(np.uint8), wall.astype(float), wall.astype(np.int64))]
+    routes = [
+        seaway.route(np.ones((7, 7)), (6, 0), (6, 6), land=m, neighbourhood=3)
+        for m in (wall, wall.astype(np.uint8), wall.astype(float), wall.astype(np.int64))
+    ]
     assert {r.cost for r in routes} == {routes[0].cost}
     assert all((r.pixels[:, 1] != 3).sum() == len(r.pixels) - 1 for r in routes)  # row 0 gap
     assert routes[0].pixels[:, 0].min() == 0

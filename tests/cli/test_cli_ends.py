@@ -35,12 +35,18 @@ def pocket(tmp_path_factory):
     E, 72.8-73.2 N."""
     box, thick = shapely.box, {"POLY_TYPE": "I", "CT": "92", "SA": "93", "FA": "05"}
     water = {"POLY_TYPE": "W", "CT": "00"}
-    rows = [(box(60, 70, 60.9, 76), thick), (box(61.1, 70, 61.8, 76), thick),
-            (box(60.9, 70, 61.1, 72.9), thick), (box(60.9, 73.1, 61.1, 76), thick),
-            (box(60.9, 72.9, 61.1, 73.1), {"POLY_TYPE": "I", "CT": "92", "SA": "83", "FA": "04"}),
-            (box(61.8, 70, 69.3, 76), water), (box(69.7, 70, 80, 76), water),
-            (box(69.3, 70, 69.7, 72.8), water), (box(69.3, 73.2, 69.7, 76), water),
-            (box(69.3, 72.8, 69.7, 73.2), {"POLY_TYPE": "L"})]
+    rows = [
+        (box(60, 70, 60.9, 76), thick),
+        (box(61.1, 70, 61.8, 76), thick),
+        (box(60.9, 70, 61.1, 72.9), thick),
+        (box(60.9, 73.1, 61.1, 76), thick),
+        (box(60.9, 72.9, 61.1, 73.1), {"POLY_TYPE": "I", "CT": "92", "SA": "83", "FA": "04"}),
+        (box(61.8, 70, 69.3, 76), water),
+        (box(69.7, 70, 80, 76), water),
+        (box(69.3, 70, 69.7, 72.8), water),
+        (box(69.3, 73.2, 69.7, 76), water),
+        (box(69.3, 72.8, 69.7, 73.2), {"POLY_TYPE": "L"}),
+    ]
     path = write_chart(tmp_path_factory.mktemp("pocket") / "pocket.shp", rows)
     return str(path), read_sigrid3(str(path), latlon_grid(70, 76, 60, 80, 0.1))
 
@@ -67,26 +73,45 @@ def test_snapped_ends_join_in_one_water_and_every_output_names_both(pocket, tmp_
     path, ds = pocket
     (s, s_km), (e, e_km) = joint_reference(ds, "Arc5", [(73.05, 60.55), (73.05, 69.55)])
     assert s[1] > 61.8 and 40 < s_km < 45  # into the open water, not the pocket 15 km away
-    args = ["route", path, "--from", "73.05,60.55", "--to", "73.05,69.55", "--vessel", "Arc5",
-            "--grid", "70,76,60,80,0.1", "--no-smooth"]
+    args = [
+        "route",
+        path,
+        "--from",
+        "73.05,60.55",
+        "--to",
+        "73.05,69.55",
+        "--vessel",
+        "Arc5",
+        "--grid",
+        "70,76,60,80,0.1",
+        "--no-smooth",
+    ]
     assert main(args + ["-q"]) == 1  # without --snap: both named, with the points they would take
     err = capsys.readouterr().err
-    assert (f"start 73.05,60.55 is on an impassable pixel (ice an Arc5 ship may not enter: thick "
-            f"first-year ice (WMO stage 93, 10/10), total concentration 10/10); the nearest point "
-            f"the ship may use is {s[0]:.4f},{s[1]:.4f}, {s_km:.1f} km away: give it, or pass --snap") in err
-    assert f"end 73.05,69.55 is on an impassable pixel (land); the nearest point the ship may use is " \
-           f"{e[0]:.4f},{e[1]:.4f}, {e_km:.1f} km away" in err
+    assert (
+        f"start 73.05,60.55 is on an impassable pixel (ice an Arc5 ship may not enter: thick "
+        f"first-year ice (WMO stage 93, 10/10), total concentration 10/10); the nearest point "
+        f"the ship may use is {s[0]:.4f},{s[1]:.4f}, {s_km:.1f} km away: give it, or pass --snap"
+    ) in err
+    assert (
+        f"end 73.05,69.55 is on an impassable pixel (land); the nearest point the ship may use is "
+        f"{e[0]:.4f},{e[1]:.4f}, {e_km:.1f} km away" in err
+    )
     assert main(args + ["--snap", "-q"]) == 1  # the start would move 42 km: more than 20
-    assert (f"{s_km:.1f} km away, farther than --snap-km 20: give a point in water the ship may use, "
-            f"or --snap-km {np.ceil(s_km):.0f} to move the start there") in capsys.readouterr().err
+    assert (
+        f"{s_km:.1f} km away, farther than --snap-km 20: give a point in water the ship may use, "
+        f"or --snap-km {np.ceil(s_km):.0f} to move the start there"
+    ) in capsys.readouterr().err
     outs = [tmp_path / f"r.{x}" for x in ("geojson", "gpx", "rtz", "csv", "html")]
     pytest.importorskip("folium")
     code = main(args + ["--snap", "--snap-km", "50", "-q"] + [a for o in outs for a in ("--out", str(o))])
     out, err = capsys.readouterr()
     assert code == 0, err
-    moved = f"start 73.05,60.55 is on an impassable pixel (ice an Arc5 ship may not enter: thick " \
-            f"first-year ice (WMO stage 93, 10/10), total concentration 10/10): moved {s_km:.1f} km to " \
-            f"{s[0]:.4f},{s[1]:.4f} (--snap, at most 50 km)"
+    moved = (
+        f"start 73.05,60.55 is on an impassable pixel (ice an Arc5 ship may not enter: thick "
+        f"first-year ice (WMO stage 93, 10/10), total concentration 10/10): moved {s_km:.1f} km to "
+        f"{s[0]:.4f},{s[1]:.4f} (--snap, at most 50 km)"
+    )
     assert moved in err and f"moved {e_km:.1f} km to {e[0]:.4f},{e[1]:.4f}" in err
     assert "requested 73-03.00N 060-33.00E -> 73-03.00N 069-33.00E" in out and f"assumed: {moved}" in out
     props = json.loads(outs[0].read_text())["properties"]
@@ -96,10 +121,15 @@ def test_snapped_ends_join_in_one_water_and_every_output_names_both(pocket, tmp_
     desc = ET.parse(outs[1]).getroot().find(".//{http://www.topografix.com/GPX/1/1}desc").text
     assert f"start {s[0]:.5f},{s[1]:.5f} (requested 73.05,60.55)" in desc and moved in desc
     ext = ET.parse(outs[2]).getroot().find(".//{http://www.cirm.org/RTZ/1/0}extension")
-    assert ext.get("manufacturer") == "seaway" and f"end {e[0]:.5f},{e[1]:.5f} (requested 73.05,69.55)" in ext.text
+    assert (
+        ext.get("manufacturer") == "seaway"
+        and f"end {e[0]:.5f},{e[1]:.5f} (requested 73.05,69.55)" in ext.text
+    )
     head = [x for x in outs[3].read_text().splitlines() if x.startswith("#")]
-    assert head[1:3] == [f"# start {s[0]:.5f},{s[1]:.5f} (requested 73.05,60.55)",
-                         f"# end {e[0]:.5f},{e[1]:.5f} (requested 73.05,69.55)"]
+    assert head[1:3] == [
+        f"# start {s[0]:.5f},{s[1]:.5f} (requested 73.05,60.55)",
+        f"# end {e[0]:.5f},{e[1]:.5f} (requested 73.05,69.55)",
+    ]
     popups = [json.loads(p) for p in re.findall(r'\.bindPopup\(("(?:[^"\\]|\\.)*")', outs[4].read_text())]
     assert popups[0].startswith("<b>waypoint 1: start</b>")
     assert "requested 73&deg;03.0'N 060&deg;33.0'E" in popups[0] and moved in popups[0]
@@ -115,12 +145,30 @@ def test_a_start_on_real_land_moves_into_the_water_of_the_end(shared_data, tmp_p
     ds = read_sigrid3(path, latlon_grid(65, 74, -62, -50, 0.05))
     (s, s_km), _ = joint_reference(ds, "Arc7", [(67.0, -53.7), (72.0, -58.0)])
     out = tmp_path / "r.geojson"
-    code = main(["route", path, "--from", "67.0,-53.7", "--to", "72.0,-58.0", "--vessel", "Arc7",
-                 "--grid", "65,74,-62,-50,0.05", "--snap", "--out", str(out), "-q"])
+    code = main(
+        [
+            "route",
+            path,
+            "--from",
+            "67.0,-53.7",
+            "--to",
+            "72.0,-58.0",
+            "--vessel",
+            "Arc7",
+            "--grid",
+            "65,74,-62,-50,0.05",
+            "--snap",
+            "--out",
+            str(out),
+            "-q",
+        ]
+    )
     err = capsys.readouterr().err
     assert code == 0, err
-    assert (f"start 67,-53.7 is on an impassable pixel (land): moved {s_km:.1f} km to "
-            f"{s[0]:.4f},{s[1]:.4f} (--snap, at most 20 km)") in err
+    assert (
+        f"start 67,-53.7 is on an impassable pixel (land): moved {s_km:.1f} km to "
+        f"{s[0]:.4f},{s[1]:.4f} (--snap, at most 20 km)"
+    ) in err
     props = json.loads(out.read_text())["properties"]
     assert props["requested_start"] == [67.0, -53.7] and props["start"] == pytest.approx(list(s))
 
@@ -130,13 +178,28 @@ def test_the_issue_case_on_nsidc_is_refused_naming_the_distance(shared_data, cap
     """NSIDC G02202, 31 December 2021 (EPSG:3411): Baydaratskaya Bay and the Gulf of Ob lie in ice
     an Arc5 ship may not enter (thick first-year, assumed); the nearest usable water is
     hundreds of km away, so --snap refuses instead of printing a route from somewhere else."""
-    code = main(["route", str(shared_data.joinpath(*NSIDC)), "--vessel", "Arc5", "--from",
-                 "70.3,66.0", "--to", "72.9,74.0", "--snap", "-q"])
+    code = main(
+        [
+            "route",
+            str(shared_data.joinpath(*NSIDC)),
+            "--vessel",
+            "Arc5",
+            "--from",
+            "70.3,66.0",
+            "--to",
+            "72.9,74.0",
+            "--snap",
+            "-q",
+        ]
+    )
     err = capsys.readouterr().err
     assert code == 1
-    m = re.search(r"start 70.3,66 is on an impassable pixel \(ice an Arc5 ship may not enter: thick "
-                  r"first-year ice \(WMO stage 93\), total concentration 10/10\); the nearest point "
-                  r"the ship may use is ([\d.]+),([\d.]+), ([\d.]+) km away, farther than --snap-km 20", err)
+    m = re.search(
+        r"start 70.3,66 is on an impassable pixel \(ice an Arc5 ship may not enter: thick "
+        r"first-year ice \(WMO stage 93\), total concentration 10/10\); the nearest point "
+        r"the ship may use is ([\d.]+),([\d.]+), ([\d.]+) km away, farther than --snap-km 20",
+        err,
+    )
     assert m, err
     lat, lon, km = map(float, m.groups())
     assert km == pytest.approx(GEOD.inv(66.0, 70.3, lon, lat)[2] / 1000, abs=0.05) and km > 400

@@ -22,8 +22,14 @@ from support.seasons import retreating_edge
 pytestmark = pytest.mark.cli
 A, B = "--from=70.5,21", "--to=73.5,29"
 SHIP = Vessel(speed_kn=12.0, displacement_t=15000.0)
-CDO_ROLES = ["--forecast-variable", "wave_height=var229", "--forecast-variable", "wave_from=var230",
-             "--forecast-variable", "wave_period=var232"]
+CDO_ROLES = [
+    "--forecast-variable",
+    "wave_height=var229",
+    "--forecast-variable",
+    "wave_from=var230",
+    "--forecast-variable",
+    "wave_period=var232",
+]
 
 
 def _run(capsys, *argv):
@@ -34,6 +40,7 @@ def _run(capsys, *argv):
 
 def _land(ds):
     from global_land_mask import globe
+
     la, lo = np.meshgrid(ds.lat.values, ds.lon.values, indexing="ij")
     return globe.is_land(la, lo)
 
@@ -45,19 +52,36 @@ def test_cdo_waves_are_refused_naming_the_flags_then_routed_as_the_same_forecast
     code, _, err = _run(capsys, "--forecast", path, A, B)
     assert code == 1 and "--forecast-variable wave_height=var229 --forecast-variable wave_from=var230" in err
     out_geo = tmp_path / "r.geojson"
-    code, out, err = _run(capsys, "--forecast", path, *CDO_ROLES, "--depart", "2026-10-01T06:00", A, B,
-                          "--out", out_geo)
+    code, out, err = _run(
+        capsys, "--forecast", path, *CDO_ROLES, "--depart", "2026-10-01T06:00", A, B, "--out", out_geo
+    )
     assert code == 0, err
-    twin = route_time(ff.in_memory(("hs", "wdir", "per")), (70.5, 21), (73.5, 29), vessel=SHIP,
-                      departure="2026-10-01T06:00", land=_land(ff.in_memory()))
+    twin = route_time(
+        ff.in_memory(("hs", "wdir", "per")),
+        (70.5, 21),
+        (73.5, 29),
+        vessel=SHIP,
+        departure="2026-10-01T06:00",
+        land=_land(ff.in_memory()),
+    )
     props = json.loads(out_geo.read_text())["properties"]
     assert props["time_h"] == pytest.approx(twin.cost, rel=1e-12) and props["cost"] == props["time_h"]
-    assert props["departure"] == "2026-10-01T06:00:00Z" and props["arrival"] == str(twin.stats.voyage.arrival)[:19] + "Z"
+    assert (
+        props["departure"] == "2026-10-01T06:00:00Z"
+        and props["arrival"] == str(twin.stats.voyage.arrival)[:19] + "Z"
+    )
     assert props["forecast"] == "waves.nc (2026-10-01T00:00 to 2026-10-04T00:00, every 6 h)"
     assert "departure 2026-10-01T06:00:00Z" in out and "ETA (UTC)" in out
     # The API takes the raw file too: its time axis is decoded, the roles checked.
-    api = route_time(raw, (70.5, 21), (73.5, 29), vessel=SHIP, departure="2026-10-01T06:00",
-                     land=_land(ff.in_memory()), variables={"wave_height": "var229", "wave_from": "var230"})
+    api = route_time(
+        raw,
+        (70.5, 21),
+        (73.5, 29),
+        vessel=SHIP,
+        departure="2026-10-01T06:00",
+        land=_land(ff.in_memory()),
+        variables={"wave_height": "var229", "wave_from": "var230"},
+    )
     assert api.cost == pytest.approx(twin.cost, rel=1e-12)  # the period plays no part in the time
 
 
@@ -66,8 +90,13 @@ def test_a_misspelt_role_is_refused_naming_the_roles(tmp_path, capsys):
     with pytest.raises(SystemExit) as exc:
         main(["route", "--forecast", str(path), "--forecast-variable", "wave_direction=var230", A, B])
     assert exc.value.code == 2
-    assert "unknown role 'wave_direction' (did you mean wave_from?); the roles are current_east, " in capsys.readouterr().err
-    with pytest.raises(ValueError, match=r"unknown forecast role 'wave_direction' \(did you mean wave_from\?\)"):
+    assert (
+        "unknown role 'wave_direction' (did you mean wave_from?); the roles are current_east, "
+        in capsys.readouterr().err
+    )
+    with pytest.raises(
+        ValueError, match=r"unknown forecast role 'wave_direction' \(did you mean wave_from\?\)"
+    ):
         find_fields(decode_time(xr.open_dataset(path)), {"wave_height": "var229", "wave_direction": "var230"})
 
 
@@ -75,22 +104,47 @@ def test_departures_outside_the_forecast_are_refused_or_held_with_persist(tmp_pa
     path = ff.write_cdo_waves(tmp_path / "waves.nc")
     code, _, err = _run(capsys, "--forecast", path, *CDO_ROLES, "--depart", "2026-09-25T00:00", A, B)
     assert code == 1
-    assert ("departure 2026-09-25T00:00 is 144 h before the forecast's first time (the forecast covers "
-            "2026-10-01T00:00 to 2026-10-04T00:00)") in err and "--persist" in err
+    assert (
+        "departure 2026-09-25T00:00 is 144 h before the forecast's first time (the forecast covers "
+        "2026-10-01T00:00 to 2026-10-04T00:00)"
+    ) in err and "--persist" in err
     rtz = tmp_path / "r.rtz"
-    code, out, err = _run(capsys, "--forecast", path, *CDO_ROLES, "--depart", "2026-10-05T00:00", "--persist",
-                          A, B, "--out", rtz)
-    assert code == 0 and "persistence: the departure 2026-10-05T00:00 is 24 h after the forecast's last time" in err
-    assert "assumed: persistence" in out and "validityPeriodStart=\"2026-10-05T00:00:00Z\"" in rtz.read_text()
+    code, out, err = _run(
+        capsys,
+        "--forecast",
+        path,
+        *CDO_ROLES,
+        "--depart",
+        "2026-10-05T00:00",
+        "--persist",
+        A,
+        B,
+        "--out",
+        rtz,
+    )
+    assert (
+        code == 0
+        and "persistence: the departure 2026-10-05T00:00 is 24 h after the forecast's last time" in err
+    )
+    assert "assumed: persistence" in out and 'validityPeriodStart="2026-10-05T00:00:00Z"' in rtz.read_text()
 
 
 def test_one_file_per_variable_merged_on_time(tmp_path, capsys):
     paths = ff.write_cf_per_variable(tmp_path, step_h=12)  # currents twice a day
     ds, notes = open_forecasts(paths)
-    assert "forecast files merged on their common span 2026-10-01T00:00:00.000000000 to " \
-           "2026-10-04T00:00:00.000000000, every 6 h (linear in time)" in notes
-    assert sorted(ds.data_vars) == ["current_east", "current_north", "wave_from", "wave_height",
-                                    "wave_period", "wind_east", "wind_north"]
+    assert (
+        "forecast files merged on their common span 2026-10-01T00:00:00.000000000 to "
+        "2026-10-04T00:00:00.000000000, every 6 h (linear in time)" in notes
+    )
+    assert sorted(ds.data_vars) == [
+        "current_east",
+        "current_north",
+        "wave_from",
+        "wave_height",
+        "wave_period",
+        "wind_east",
+        "wind_north",
+    ]
     # A current field every 12 h read every 6 h: the mean of its neighbours (linear in time).
     full = ff.in_memory()
     assert np.allclose(ds.current_north.isel(time=1), full.cur_n.isel(time=[0, 2]).mean("time"))
@@ -115,8 +169,9 @@ def test_grib_through_cfgrib_routes_as_the_same_forecast(tmp_path, capsys):
     out_geo = tmp_path / "r.geojson"
     code, _, err = _run(capsys, "--forecast", path, A, B, "--out", out_geo)
     assert code == 0, err
-    twin = route_time(full[["hs", "wdir", "per", "wind_e", "wind_n"]], (70.5, 21), (73.5, 29), vessel=SHIP,
-                      land=_land(full))
+    twin = route_time(
+        full[["hs", "wdir", "per", "wind_e", "wind_n"]], (70.5, 21), (73.5, 29), vessel=SHIP, land=_land(full)
+    )
     assert json.loads(out_geo.read_text())["properties"]["time_h"] == pytest.approx(twin.cost, rel=1e-4)
 
 
@@ -130,8 +185,18 @@ def test_an_undecodable_time_axis_is_refused_naming_the_variable(tmp_path, capsy
 def test_least_fuel_that_arrives_in_time_and_the_options_need_a_forecast(tmp_path, capsys):
     paths = ff.write_cf_per_variable(tmp_path)
     argv = [a for p in paths for a in ("--forecast", p)]
-    code, out, err = _run(capsys, *argv, "--vessel-file", "pc6-general-cargo", "--objective", "fuel",
-                          "--arrive-by", "2026-10-02T00:00", A, B)
+    code, out, err = _run(
+        capsys,
+        *argv,
+        "--vessel-file",
+        "pc6-general-cargo",
+        "--objective",
+        "fuel",
+        "--arrive-by",
+        "2026-10-02T00:00",
+        A,
+        B,
+    )
     assert code == 0, err
     hours = float(out.split("fuel ")[-1].split(" t over ")[1].split(" h")[0])
     assert hours <= 24.0 + 0.05  # arrives by the deadline (printed to 0.1 h)
@@ -143,20 +208,44 @@ def test_ice_and_weather_in_one_voyage_from_the_command_line(tmp_path, capsys):
     season = retreating_edge(days=4)
     season.to_netcdf(tmp_path / "ice.nc")
     g = season.isel(time=slice(0, 3))
-    fc = xr.Dataset({"ce": (("time", "lat", "lon"), np.full((3,) + g.CT.shape[1:], 0.2),
-                            {"standard_name": "eastward_sea_water_velocity"}),
-                     "cn": (("time", "lat", "lon"), np.full((3,) + g.CT.shape[1:], 0.3),
-                            {"standard_name": "northward_sea_water_velocity"})},
-                    coords={"time": g.time.values, "lat": g.lat.values, "lon": g.lon.values})
+    fc = xr.Dataset(
+        {
+            "ce": (
+                ("time", "lat", "lon"),
+                np.full((3,) + g.CT.shape[1:], 0.2),
+                {"standard_name": "eastward_sea_water_velocity"},
+            ),
+            "cn": (
+                ("time", "lat", "lon"),
+                np.full((3,) + g.CT.shape[1:], 0.3),
+                {"standard_name": "northward_sea_water_velocity"},
+            ),
+        },
+        coords={"time": g.time.values, "lat": g.lat.values, "lon": g.lon.values},
+    )
     fc.to_netcdf(tmp_path / "currents.nc")
     csv = tmp_path / "r.csv"
-    code, out, err = _run(capsys, tmp_path / "ice.nc", "--forecast", tmp_path / "currents.nc",
-                          "--vessel", "Arc7", "--from=71,70", "--to=76,74", "--out", csv)
+    code, out, err = _run(
+        capsys,
+        tmp_path / "ice.nc",
+        "--forecast",
+        tmp_path / "currents.nc",
+        "--vessel",
+        "Arc7",
+        "--from=71,70",
+        "--to=76,74",
+        "--out",
+        csv,
+    )
     assert code == 0, err
-    api = route_ice_weather(season, fc, (71.0, 70.0), (76.0, 74.0), ice_class="Arc7", vessel=Vessel(speed_kn=12.0))
+    api = route_ice_weather(
+        season, fc, (71.0, 70.0), (76.0, 74.0), ice_class="Arc7", vessel=Vessel(speed_kn=12.0)
+    )
     alone = route_season(season, (71.0, 70.0), (76.0, 74.0), ice_class="Arc7", v0_kn=12.0)
     assert f"voyage {api.cost // 24:.0f} d" in out and api.cost < alone.cost  # the current helps north
-    assert "# departure 2026-07-01T00:00:00Z, arrival " + str(api.stats.voyage.arrival)[:19] in csv.read_text()
+    assert (
+        "# departure 2026-07-01T00:00:00Z, arrival " + str(api.stats.voyage.arrival)[:19] in csv.read_text()
+    )
 
 
 def test_replan_continues_the_voyage_from_where_the_ship_is(tmp_path, capsys):
@@ -176,8 +265,13 @@ def test_replan_continues_the_voyage_from_where_the_ship_is(tmp_path, capsys):
     assert f"at {at} the ship is at " in err and f"(after vertex {k + 1} of " in err
     new = json.loads(again.read_text())["properties"]
     assert new["departure"] == at + "Z"
-    assert abs((np.datetime64(new["arrival"].rstrip("Z")) - np.datetime64(props["arrival"].rstrip("Z")))
-               / np.timedelta64(1, "s")) <= 60
+    assert (
+        abs(
+            (np.datetime64(new["arrival"].rstrip("Z")) - np.datetime64(props["arrival"].rstrip("Z")))
+            / np.timedelta64(1, "s")
+        )
+        <= 60
+    )
     code = main(["replan", str(first), *map(str, argv), "--at", "2026-10-09T00:00", "-q"])
     assert code == 1 and "is outside the voyage" in capsys.readouterr().err
 
@@ -189,15 +283,23 @@ def test_the_least_time_in_danger_when_no_route_avoids_the_danger_zones(tmp_path
     paths = ff.write_cf_per_variable(tmp_path)
     argv = [a for p in paths for a in ("--forecast", p)]
     ship_file = tmp_path / "ship.toml"
-    ship_file.write_text('name = "feeder"\nservice_speed_kn = 12.0\ndisplacement_t = 15000.0\n'
-                         'danger_wind_ms = 11.0\n')
+    ship_file.write_text(
+        'name = "feeder"\nservice_speed_kn = 12.0\ndisplacement_t = 15000.0\ndanger_wind_ms = 11.0\n'
+    )
     out_geo = tmp_path / "r.geojson"
-    code, out, err = _run(capsys, *argv, "--vessel-file", ship_file, "--depart", "2026-10-03T18:00",
-                          A, B, "--out", out_geo)
+    code, out, err = _run(
+        capsys, *argv, "--vessel-file", ship_file, "--depart", "2026-10-03T18:00", A, B, "--out", out_geo
+    )
     assert code == 0, err
     props = json.loads(out_geo.read_text())["properties"]
-    api = route_time(ff.in_memory(), (70.5, 21), (73.5, 29), vessel=load(ship_file).vessel,
-                     departure="2026-10-03T18:00", land=_land(ff.in_memory()))
+    api = route_time(
+        ff.in_memory(),
+        (70.5, 21),
+        (73.5, 29),
+        vessel=load(ship_file).vessel,
+        departure="2026-10-03T18:00",
+        land=_land(ff.in_memory()),
+    )
     assert api.stats.danger is not None and props["hours_in_danger"] == pytest.approx(api.stats.danger.hours)
     assert props["hours_in_danger"] > 0 and "no route avoids the danger zones" in err
     assert "through danger zones:" in out and props["time_h"] == pytest.approx(api.cost, rel=1e-12)

@@ -22,19 +22,28 @@ def chart(tmp_path):
     return str(path)
 
 
-@pytest.mark.parametrize("name, option, message", [
-    ("missing/r.gpx", "--out", "--out {p}: the directory {d} does not exist; create it first"),
-    ("r.txt", "--out", "--out {p}: cannot tell the format from the extension '.txt'; use one of "
-                       ".csv, .geojson, .gpx, .htm, .html, .json, .rtz"),
-    ("r.jpg", "--plot", "--plot {p}: cannot tell the format from the extension '.jpg'; use one of .png"),
-    ("adir", "--out", "--out {p} is a directory; give a file name inside it"),
-])
-def test_a_bad_output_path_stops_the_run_before_the_chart_is_read(chart, tmp_path, capsys, name,
-                                                                  option, message):
+@pytest.mark.parametrize(
+    "name, option, message",
+    [
+        ("missing/r.gpx", "--out", "--out {p}: the directory {d} does not exist; create it first"),
+        (
+            "r.txt",
+            "--out",
+            "--out {p}: cannot tell the format from the extension '.txt'; use one of "
+            ".csv, .geojson, .gpx, .htm, .html, .json, .rtz",
+        ),
+        ("r.jpg", "--plot", "--plot {p}: cannot tell the format from the extension '.jpg'; use one of .png"),
+        ("adir", "--out", "--out {p} is a directory; give a file name inside it"),
+    ],
+)
+def test_a_bad_output_path_stops_the_run_before_the_chart_is_read(
+    chart, tmp_path, capsys, name, option, message
+):
     (tmp_path / "adir").mkdir()
     bad = tmp_path / name
-    code = main(["route", chart, "--variable", "cost", *ENDS, "--out", str(tmp_path / "ok.geojson"),
-                 option, str(bad)])
+    code = main(
+        ["route", chart, "--variable", "cost", *ENDS, "--out", str(tmp_path / "ok.geojson"), option, str(bad)]
+    )
     err = capsys.readouterr().err
     assert code == 1
     assert message.format(p=bad, d=bad.parent) in err
@@ -44,8 +53,22 @@ def test_a_bad_output_path_stops_the_run_before_the_chart_is_read(chart, tmp_pat
 
 def test_an_output_given_twice_is_refused(chart, tmp_path, capsys):
     out = tmp_path / "r.csv"
-    assert main(["route", chart, "--variable", "cost", *ENDS, "--out", str(out), "--out",
-                 str(tmp_path / "." / "r.csv")]) == 1
+    assert (
+        main(
+            [
+                "route",
+                chart,
+                "--variable",
+                "cost",
+                *ENDS,
+                "--out",
+                str(out),
+                "--out",
+                str(tmp_path / "." / "r.csv"),
+            ]
+        )
+        == 1
+    )
     assert f"{tmp_path / '.' / 'r.csv'} is given twice" in capsys.readouterr().err
 
 
@@ -63,16 +86,21 @@ def test_outputs_are_written_all_or_nothing(chart, tmp_path, monkeypatch, capsys
         return real_fdopen(fd, *a, **k)
 
     monkeypatch.setattr(os, "fdopen", fdopen)
-    code = main(["route", chart, "--variable", "cost", *ENDS, "--out", str(outs[0]), "--out",
-                 str(outs[1]), "-q"])
+    code = main(
+        ["route", chart, "--variable", "cost", *ENDS, "--out", str(outs[0]), "--out", str(outs[1]), "-q"]
+    )
     err = capsys.readouterr().err
     assert code == 1
     assert f"error: [Errno 28] {outs[1]}: cannot write it (No space left on device)" in err
     assert ".seaway-" not in err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["chart.nc"]
     monkeypatch.setattr(os, "fdopen", real_fdopen)
-    assert main(["route", chart, "--variable", "cost", *ENDS, "--out", str(outs[0]), "--out",
-                 str(outs[1]), "-q"]) == 0
+    assert (
+        main(
+            ["route", chart, "--variable", "cost", *ENDS, "--out", str(outs[0]), "--out", str(outs[1]), "-q"]
+        )
+        == 0
+    )
     assert json.loads(outs[0].read_text())["properties"]["cost"] > 0 and outs[1].stat().st_size > 0
 
 
@@ -99,8 +127,22 @@ def test_a_real_chart_run_checks_its_outputs_first(shared_data, tmp_path, capsys
     rasterised; the GeoJSON beside it is not written."""
     pytest.importorskip("pyogrio")
     out, png = tmp_path / "r.geojson", tmp_path / "maps" / "r.png"
-    code = main(["route", str(shared_data.joinpath(*DMI)), "--from", "59.5,-44", "--to", "60.5,-48",
-                 "--vessel", "Arc7", "--out", str(out), "--plot", str(png)])
+    code = main(
+        [
+            "route",
+            str(shared_data.joinpath(*DMI)),
+            "--from",
+            "59.5,-44",
+            "--to",
+            "60.5,-48",
+            "--vessel",
+            "Arc7",
+            "--out",
+            str(out),
+            "--plot",
+            str(png),
+        ]
+    )
     err = capsys.readouterr().err
     assert code == 1 and f"--plot {png}: the directory {png.parent} does not exist" in err
     assert "reading" not in err and not out.exists()

@@ -51,8 +51,18 @@ def test_the_roms_currents_route_on_the_command_line(shared_data, tmp_path, caps
     auto = json.loads((tmp_path / "auto.geojson").read_text())["properties"]
     assert auto["time_h"] == pytest.approx(props["time_h"], rel=1e-12)
     # The 3-D current is refused, naming the surface field.
-    code = main(["route", "--forecast", str(path), "--forecast-variable", "current_east=u",
-                 "--forecast-variable", "current_north=v", *ENDS])
+    code = main(
+        [
+            "route",
+            "--forecast",
+            str(path),
+            "--forecast-variable",
+            "current_east=u",
+            "--forecast-variable",
+            "current_north=v",
+            *ENDS,
+        ]
+    )
     _, err = capsys.readouterr()
     assert code == 1 and "u (current_east) has a vertical axis 'depth' (17 levels)" in err
     assert "--forecast-variable current_east=ubar" in err and "broadcast" not in err

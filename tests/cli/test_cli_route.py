@@ -25,8 +25,9 @@ pytestmark = pytest.mark.cli
 
 
 def run(*args, timeout=120):
-    return subprocess.run([sys.executable, "-m", "seaway", *args], capture_output=True, text=True,
-                          timeout=timeout)
+    return subprocess.run(
+        [sys.executable, "-m", "seaway", *args], capture_output=True, text=True, timeout=timeout
+    )
 
 
 @pytest.fixture(scope="module")
@@ -40,9 +41,14 @@ def chart_nc(tmp_path_factory):
     land[10:35, 30:45] = True
     stage[land] = np.nan
     conc = np.where(stage == 93.0, 10.0, 0.0)
-    ds = xr.Dataset({"stage_of_development": (("lat", "lon"), stage), "land": (("lat", "lon"), land),
-                     "sea_ice_concentration": (("lat", "lon"), conc)},
-                    coords={"lat": lat, "lon": lon})
+    ds = xr.Dataset(
+        {
+            "stage_of_development": (("lat", "lon"), stage),
+            "land": (("lat", "lon"), land),
+            "sea_ice_concentration": (("lat", "lon"), conc),
+        },
+        coords={"lat": lat, "lon": lon},
+    )
     path = tmp_path_factory.mktemp("chart") / "chart.nc"
     ds.to_netcdf(path)
     return path, ds
@@ -52,8 +58,22 @@ def chart_nc(tmp_path_factory):
 def test_route_netcdf_all_outputs(chart_nc, tmp_path):
     path, ds = chart_nc
     outs = [tmp_path / f"r.{ext}" for ext in ("geojson", "gpx", "rtz", "csv", "html")]
-    args = ["route", str(path), "--from", "73,61", "--to", "73,75", "--vessel", "Arc7",
-            "--neighbourhood", "7", "--speed", "12", "--plot", str(tmp_path / "r.png")]
+    args = [
+        "route",
+        str(path),
+        "--from",
+        "73,61",
+        "--to",
+        "73,75",
+        "--vessel",
+        "Arc7",
+        "--neighbourhood",
+        "7",
+        "--speed",
+        "12",
+        "--plot",
+        str(tmp_path / "r.png"),
+    ]
     for o in outs:
         args += ["--out", str(o)]
     done = run(*args)
@@ -67,16 +87,21 @@ def test_route_netcdf_all_outputs(chart_nc, tmp_path):
     feature = json.loads(outs[0].read_text())
     assert feature["properties"]["cost"] == pytest.approx(r.cost, rel=1e-9)
     assert feature["properties"]["time_h"] == pytest.approx(r.length / 1.852 / 12, rel=1e-9)
-    wps = ET.parse(outs[2]).getroot().findall("{http://www.cirm.org/RTZ/1/0}waypoints/"
-                                              "{http://www.cirm.org/RTZ/1/0}waypoint")
+    wps = (
+        ET.parse(outs[2])
+        .getroot()
+        .findall("{http://www.cirm.org/RTZ/1/0}waypoints/{http://www.cirm.org/RTZ/1/0}waypoint")
+    )
     assert len(wps) == len(r.waypoints) >= 3  # around the island
     gpx = ET.parse(outs[1]).getroot()
     assert len(gpx.findall(".//{http://www.topografix.com/GPX/1/1}rtept")) == len(wps)
     rows = outs[3].read_text().splitlines()
     head, rows = [x for x in rows if x.startswith("#")], [x for x in rows if not x.startswith("#")]
     assert head[1].startswith("# speed in ice: Andreeva 2021: V = F x V0, V0 12 kn")  # not open water's
-    assert head[2:4] == ["# start 73.00000,61.00000 (requested 73,61)",
-                         "# end 73.00000,75.00000 (requested 73,75)"]  # the ends used and asked for
+    assert head[2:4] == [
+        "# start 73.00000,61.00000 (requested 73,61)",
+        "# end 73.00000,75.00000 (requested 73,75)",
+    ]  # the ends used and asked for
     assert rows[0].startswith("waypoint,lat,lon,leg,course_deg") and len(rows) == len(wps) + 1
     assert "sea_ice_concentration_max" in rows[0]
     assert (tmp_path / "r.png").stat().st_size > 10_000
@@ -90,28 +115,50 @@ def test_route_netcdf_all_outputs(chart_nc, tmp_path):
 
 def test_route_cost_variable_and_no_smooth(chart_nc, tmp_path):
     path, _ = chart_nc
-    done = run("route", str(path), "--variable", "sea_ice_concentration", "--from", "73,61",
-               "--to", "74,75", "--no-smooth", "--edge-cost", "mean", "-q")
+    done = run(
+        "route",
+        str(path),
+        "--variable",
+        "sea_ice_concentration",
+        "--from",
+        "73,61",
+        "--to",
+        "74,75",
+        "--no-smooth",
+        "--edge-cost",
+        "mean",
+        "-q",
+    )
     assert done.returncode == 0 and done.stderr == ""
     assert "edge cost 'mean', 5x5 stencil" in done.stdout
 
 
-@pytest.mark.parametrize("args, code, message", [
-    (["--from", "73,61", "--to", "72,50"], 1, "end (lat 72, lon 50) lies outside the chart"),
-    (["--from", "73,61", "--to", "74,67"], 1, "end 74,67 is on an impassable pixel (land); the "
-     "nearest point the ship may use is 74.0000,65.8000, 36.8 km away"),  # 1.2 deg lon at 74 N
-    # thick first-year ice south of 72 N: Arc5 may not enter (paper 000, Table 3); open water
-    # begins at 72.1 N, 1.1 deg of latitude = 122.3 km north (R = 6371.0088 km)
-    (["--from", "71,61", "--to", "73,75", "--vessel", "Arc5"], 1,
-     "start 71,61 is on an impassable pixel (ice an Arc5 ship may not enter: thick first-year "
-     "ice (WMO stage 93), total concentration 10/10); the nearest point the ship may use is "
-     "72.1000,61.0000, 122.3 km away"),
-    (["--from", "73,61", "--to", "73,75", "--variable", "nope"], 1, "has no variable 'nope'"),
-    (["--from", "73,61", "--to", "73,75", "--vessel", "Arc99"], 1, "ice_class must be one of"),
-    (["--from", "73;61", "--to", "73,75"], 2, "expected LAT,LON"),
-    (["--from", "73,61"], 2, "the following arguments are required: --to"),
-    (["--from", "73,61", "--to", "73,75", "--neighbourhood", "4"], 2, "must be an odd integer"),
-])
+@pytest.mark.parametrize(
+    "args, code, message",
+    [
+        (["--from", "73,61", "--to", "72,50"], 1, "end (lat 72, lon 50) lies outside the chart"),
+        (
+            ["--from", "73,61", "--to", "74,67"],
+            1,
+            "end 74,67 is on an impassable pixel (land); the "
+            "nearest point the ship may use is 74.0000,65.8000, 36.8 km away",
+        ),  # 1.2 deg lon at 74 N
+        # thick first-year ice south of 72 N: Arc5 may not enter (paper 000, Table 3); open water
+        # begins at 72.1 N, 1.1 deg of latitude = 122.3 km north (R = 6371.0088 km)
+        (
+            ["--from", "71,61", "--to", "73,75", "--vessel", "Arc5"],
+            1,
+            "start 71,61 is on an impassable pixel (ice an Arc5 ship may not enter: thick first-year "
+            "ice (WMO stage 93), total concentration 10/10); the nearest point the ship may use is "
+            "72.1000,61.0000, 122.3 km away",
+        ),
+        (["--from", "73,61", "--to", "73,75", "--variable", "nope"], 1, "has no variable 'nope'"),
+        (["--from", "73,61", "--to", "73,75", "--vessel", "Arc99"], 1, "ice_class must be one of"),
+        (["--from", "73;61", "--to", "73,75"], 2, "expected LAT,LON"),
+        (["--from", "73,61"], 2, "the following arguments are required: --to"),
+        (["--from", "73,61", "--to", "73,75", "--neighbourhood", "4"], 2, "must be an odd integer"),
+    ],
+)
 def test_route_errors(chart_nc, args, code, message):
     path, _ = chart_nc
     done = run("route", str(path), *args, "-q")
@@ -123,8 +170,10 @@ def test_route_snap_and_missing_file(chart_nc, tmp_path):
     path, _ = chart_nc
     done = run("route", str(path), "--from", "73,61", "--to", "74,67", "--snap")
     assert done.returncode == 1  # 36.8 km is farther than --snap-km's 20 km
-    assert ("the nearest point the ship may use is 74.0000,65.8000, 36.8 km away, farther than "
-            "--snap-km 20: give a point in water the ship may use, or --snap-km 37") in done.stderr
+    assert (
+        "the nearest point the ship may use is 74.0000,65.8000, 36.8 km away, farther than "
+        "--snap-km 20: give a point in water the ship may use, or --snap-km 37"
+    ) in done.stderr
     done = run("route", str(path), "--from", "73,61", "--to", "74,67", "--snap", "--snap-km", "40")
     assert done.returncode == 0, done.stderr
     assert "end 74,67 is on an impassable pixel (land): moved 36.8 km to 74.0000,65.8000" in done.stderr
@@ -140,16 +189,28 @@ def test_broken_sigrid_file_is_a_clear_error(tmp_path):
     assert "chart.shp" in done.stderr
 
 
-DMI = (SHARED_DATA / "ice_charts_sigrid3" / "dmi_greenland"
-       / "201304100920_CapeFarewell_RIC.shp")
+DMI = SHARED_DATA / "ice_charts_sigrid3" / "dmi_greenland" / "201304100920_CapeFarewell_RIC.shp"
 
 
 @pytest.mark.needs_data(DMI)
 def test_route_on_a_real_sigrid3_chart(tmp_path):
     pytest.importorskip("pyogrio")
     out = tmp_path / "r.geojson"
-    done = run("route", str(DMI), "--from", "59.5,-44", "--to", "60.5,-48", "--vessel", "Arc7",
-               "--grid", "59,61,-49,-43,0.01", "--no-smooth", "--out", str(out))
+    done = run(
+        "route",
+        str(DMI),
+        "--from",
+        "59.5,-44",
+        "--to",
+        "60.5,-48",
+        "--vessel",
+        "Arc7",
+        "--grid",
+        "59,61,-49,-43,0.01",
+        "--no-smooth",
+        "--out",
+        str(out),
+    )
     assert done.returncode == 0, done.stderr
     assert "200 x 600 pixels" in done.stderr  # the --grid: 2 x 6 degrees at 0.01
     feature = json.loads(out.read_text())
@@ -162,17 +223,35 @@ def test_route_on_a_real_sigrid3_chart(tmp_path):
 def test_help_explains_every_option():
     done = run("route", "--help")
     assert done.returncode == 0
-    for option in ("--from", "--to", "--vessel", "--variable", "--land-variable", "--neighbourhood",
-                   "--edge-cost", "--method", "--no-smooth", "--snap", "--speed", "--name", "--out",
-                   "--plot", "--quiet", "--depth", "--draft", "--ukc", "--depth-variable",
-                   "--depth-positive", "exit status: 0"):
+    for option in (
+        "--from",
+        "--to",
+        "--vessel",
+        "--variable",
+        "--land-variable",
+        "--neighbourhood",
+        "--edge-cost",
+        "--method",
+        "--no-smooth",
+        "--snap",
+        "--speed",
+        "--name",
+        "--out",
+        "--plot",
+        "--quiet",
+        "--depth",
+        "--draft",
+        "--ukc",
+        "--depth-variable",
+        "--depth-positive",
+        "exit status: 0",
+    ):
         assert option in done.stdout
     assert run("--help").returncode == 0 and run("bench", "--help").returncode == 0
 
 
 def test_bench_small():
-    done = run("bench", "--size", "95x115", "--neighbourhood", "3", "5", "--method", "astar",
-               "--repeat", "1")
+    done = run("bench", "--size", "95x115", "--neighbourhood", "3", "5", "--method", "astar", "--repeat", "1")
     assert done.returncode == 0, done.stderr
     lines = done.stdout.splitlines()
     assert "synthetic_sea 95 x 115 pixels" in lines[0]
@@ -186,8 +265,10 @@ def test_bench_small():
 
 # --- progress of a long search on stderr (issue 13) ----------------------------------------
 
-@pytest.mark.skipif(threading.current_thread() is not threading.main_thread(),
-                    reason="the waiting main thread reports")
+
+@pytest.mark.skipif(
+    threading.current_thread() is not threading.main_thread(), reason="the waiting main thread reports"
+)
 def test_the_cli_reports_pixels_settled_during_a_long_search(monkeypatch, capsys):
     """`seaway route`'s search block prints the token's count on stderr: a search that holds on
     until a line has been printed for its 28672 settled pixels (no clock in the test)."""
@@ -221,6 +302,7 @@ def test_the_cli_reports_pixels_settled_during_a_long_search(monkeypatch, capsys
 
 # --- bad chart files and interrupts: exit statuses, no half-written output -----------------
 
+
 @pytest.mark.parametrize("cut", ["classic", "hdf5", "garbage"])
 def test_cli_reports_a_bad_chart_file_with_exit_status_1(tmp_path, cut, capsys):
     if cut == "garbage":
@@ -229,8 +311,9 @@ def test_cli_reports_a_bad_chart_file_with_exit_status_1(tmp_path, cut, capsys):
     else:
         bad, _ = _truncated(tmp_path, "NETCDF3_64BIT" if cut == "classic" else "NETCDF4", 0.5)
     out = tmp_path / "route.geojson"
-    code = main(["route", str(bad), "--variable", "cost", "--from", "71,61", "--to", "73,69",
-                 "--out", str(out), "-q"])
+    code = main(
+        ["route", str(bad), "--variable", "cost", "--from", "71,61", "--to", "73,69", "--out", str(out), "-q"]
+    )
     err = capsys.readouterr().err
     assert code == 1
     assert f"seaway route: error: {bad}" in err
@@ -247,8 +330,9 @@ def test_cli_interrupted_while_writing_exits_130_without_output(tmp_path, monkey
 
     monkeypatch.setattr(export.os, "replace", interrupted)  # Ctrl-C just before the rename
     out = tmp_path / "route.geojson"
-    code = main(["route", str(path), "--variable", "cost", "--from", "71,61", "--to", "73,69",
-                 "--out", str(out)])
+    code = main(
+        ["route", str(path), "--variable", "cost", "--from", "71,61", "--to", "73,69", "--out", str(out)]
+    )
     assert code == 130
     assert "seaway route: interrupted" in capsys.readouterr().err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["chart.nc"]
@@ -258,9 +342,24 @@ def test_cli_interrupted_while_writing_exits_130_without_output(tmp_path, monkey
 def test_ctrl_c_in_the_cli_exits_130_and_writes_nothing(tmp_path):
     """A real SIGINT while `seaway route kara` loads the chart and routes."""
     out = tmp_path / "route.geojson"
-    proc = subprocess.Popen([sys.executable, "-m", "seaway", "route", "kara", "--from", "70.3,58.5",
-                             "--to", "77.7,104", "--out", str(out)],
-                            stderr=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    proc = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "seaway",
+            "route",
+            "kara",
+            "--from",
+            "70.3,58.5",
+            "--to",
+            "77.7,104",
+            "--out",
+            str(out),
+        ],
+        stderr=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        text=True,
+    )
     first = proc.stderr.readline()  # the first progress line: main() is running
     assert "reading kara" in first
     proc.send_signal(signal.SIGINT)
@@ -285,8 +384,14 @@ def test_an_interrupt_that_passed_through_PyRun_String_still_exits_130(tmp_path)
         "def route(args):\n"
         "    run(b'raise KeyboardInterrupt', 257, {}, {})  # 257: Py_file_input\n"
         "cli.run_route = route\n"
-        "cli.entry(['route', 'kara', '--from', '70.3,58.5', '--to', '77.7,104'])\n")
-    proc = subprocess.run([sys.executable, "-m", "interrupted_in_pyrun"], cwd=tmp_path,
-                          capture_output=True, text=True, timeout=120)
+        "cli.entry(['route', 'kara', '--from', '70.3,58.5', '--to', '77.7,104'])\n"
+    )
+    proc = subprocess.run(
+        [sys.executable, "-m", "interrupted_in_pyrun"],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert proc.returncode == 130, proc.stderr
     assert proc.stderr.strip().endswith("seaway route: interrupted")

@@ -31,8 +31,9 @@ KARA_GATE, VILKITSKY = (70.4, 58.6), (77.7, 104.0)
 
 
 def run(*args):
-    return subprocess.run([sys.executable, "-m", "seaway", *args], capture_output=True, text=True,
-                          timeout=300)
+    return subprocess.run(
+        [sys.executable, "-m", "seaway", *args], capture_output=True, text=True, timeout=300
+    )
 
 
 @pytest.fixture(scope="module")
@@ -67,8 +68,9 @@ def table_value(stdout, label):
 def test_route_kara_gate_to_vilkitsky_on_the_default_grid(charts, which, tmp_path):
     path = charts[0] if which == "lonlat" else charts[1]
     out = tmp_path / "r.geojson"
-    done = run("route", str(path), "--from", "70.4,58.6", "--to", "77.7,104.0", "--vessel", "Arc7",
-               "--out", str(out))
+    done = run(
+        "route", str(path), "--from", "70.4,58.6", "--to", "77.7,104.0", "--vessel", "Arc7", "--out", str(out)
+    )
     assert done.returncode == 0, done.stderr
     # The default grid: 0.05 deg of latitude around the ends, widened by >= 300 km each side.
     m = re.search(r"grid: lat ([\d.]+)\.\.([\d.]+), lon ([\d.]+)\.\.([\d.]+) at 0.05 x", done.stderr)
@@ -76,6 +78,7 @@ def test_route_kara_gate_to_vilkitsky_on_the_default_grid(charts, which, tmp_pat
     assert south <= 70.4 - 300 / 111.2 and north >= 77.7 + 300 / 111.2
     assert west < 58.6 - 5 and east > 104.0 + 5 and east - west < 120
     import json
+
     feature = json.loads(out.read_text())
     coords = np.array(feature["geometry"]["coordinates"])  # lon, lat
     start, end = coords[0][::-1], coords[-1][::-1]
@@ -115,23 +118,41 @@ GRID = ["--grid", "66,88,40,130,0.1"]
 
 @pytest.mark.slow
 @pytest.mark.cli
-@pytest.mark.parametrize("end, words", [
-    ((69.0, 60.0), ["end 69,60 is on an impassable pixel (land)"]),
-    ((84.5, 60.0), ["ice an Arc7 ship may not enter", "old ice (WMO stage 95, 9/10)",
-                    "glacier ice (WMO stage 98, 1/10)", "total concentration 10/10"]),
-])
-def test_an_end_on_land_or_in_forbidden_ice_is_named_with_the_nearest_usable_point(
-        charts, kara, end, words):
+@pytest.mark.parametrize(
+    "end, words",
+    [
+        ((69.0, 60.0), ["end 69,60 is on an impassable pixel (land)"]),
+        (
+            (84.5, 60.0),
+            [
+                "ice an Arc7 ship may not enter",
+                "old ice (WMO stage 95, 9/10)",
+                "glacier ice (WMO stage 98, 1/10)",
+                "total concentration 10/10",
+            ],
+        ),
+    ],
+)
+def test_an_end_on_land_or_in_forbidden_ice_is_named_with_the_nearest_usable_point(charts, kara, end, words):
     ds, usable = kara
-    args = ["route", str(charts[0]), "--from", "70.4,58.6", "--to", f"{end[0]},{end[1]}",
-            "--vessel", "Arc7", *GRID, "--no-smooth"]
+    args = [
+        "route",
+        str(charts[0]),
+        "--from",
+        "70.4,58.6",
+        "--to",
+        f"{end[0]},{end[1]}",
+        "--vessel",
+        "Arc7",
+        *GRID,
+        "--no-smooth",
+    ]
     done = run(*args, "-q")
     assert done.returncode == 1 and done.stdout == ""
     for w in words:
         assert w in done.stderr, done.stderr
     (lat, lon), dist = nearest_usable(ds, usable, end)
-    m = re.search(r"the nearest point the ship may use is ([-\d.]+),([-\d.]+), ([\d.]+) km away",
-                  done.stderr)
+    m = re.search(r"the nearest point the ship may use is ([-\d.]+),([-\d.]+), ([\d.]+) km away", done.stderr)
     assert m, done.stderr
     assert float(m.group(1)) == pytest.approx(lat, abs=1e-4)
     assert float(m.group(2)) == pytest.approx(lon, abs=1e-4)
@@ -142,8 +163,7 @@ def test_an_end_on_land_or_in_forbidden_ice_is_named_with_the_nearest_usable_poi
     assert far.returncode == 1 and "farther than --snap-km 20: give a point in water" in far.stderr
     snapped = run(*args, "--snap", "--snap-km", "100", "-q")  # a snap is said even with --quiet
     assert snapped.returncode == 0, snapped.stderr
-    m = re.search(r"moved ([\d.]+) km to ([-\d.]+),([-\d.]+) \(--snap, at most 100 km\)",
-                  snapped.stderr)
+    m = re.search(r"moved ([\d.]+) km to ([-\d.]+),([-\d.]+) \(--snap, at most 100 km\)", snapped.stderr)
     assert m and words[0] in snapped.stderr
     assert float(m.group(1)) == pytest.approx(dist, abs=0.05)
     assert (float(m.group(2)), float(m.group(3))) == pytest.approx((lat, lon), abs=1e-4)
@@ -165,8 +185,9 @@ def _fmt_lon(v):
 def test_a_start_off_the_chart_polygons_is_named(charts, kara):
     ds, usable = kara
     # 87 N 100 E is the uncharted hole of tests/panarctic.py: unknown ice, never open water.
-    done = run("route", str(charts[0]), "--from", "87,100", "--to", "77.7,104.0", "--vessel",
-               "Arc7", *GRID, "-q")
+    done = run(
+        "route", str(charts[0]), "--from", "87,100", "--to", "77.7,104.0", "--vessel", "Arc7", *GRID, "-q"
+    )
     assert done.returncode == 1
     assert "start 87,100 is on an impassable pixel (off the chart" in done.stderr
     (lat, lon), dist = nearest_usable(ds, usable, (87, 100))
@@ -178,8 +199,19 @@ def test_route_across_the_antimeridian_on_the_default_grid(charts, tmp_path):
     import json
 
     out = tmp_path / "r.geojson"
-    done = run("route", str(charts[0]), "--from", "68,-170", "--to", "72,165", "--vessel", "Arc7",
-               "--out", str(out), "-q")
+    done = run(
+        "route",
+        str(charts[0]),
+        "--from",
+        "68,-170",
+        "--to",
+        "72,165",
+        "--vessel",
+        "Arc7",
+        "--out",
+        str(out),
+        "-q",
+    )
     assert done.returncode == 0, done.stderr
     feature = json.loads(out.read_text())
     geom = feature["geometry"]

@@ -56,8 +56,10 @@ def both(costs, start, end, **kw):
     as impassable, as skimage means to, so skimage is given NaN as inf."""
     costs = np.asarray(costs, dtype=float)
     out = []
-    for f, a in ((skgraph.route_through_array, np.where(np.isnan(costs), np.inf, costs)),
-                 (route_through_array, costs)):
+    for f, a in (
+        (skgraph.route_through_array, np.where(np.isnan(costs), np.inf, costs)),
+        (route_through_array, costs),
+    ):
         try:
             out.append(f(a, start, end, **kw))
         except ValueError as e:
@@ -127,7 +129,9 @@ def test_hand_values():
     a = np.array([[1.0, 2, 3, 4], [5, 6, 7, 8], [9, 10, 11, 12]])
     # 4-connected, summed: 1+2+3+4+8+12 = 30 along the top row and right column
     assert route_through_array(a, (0, 0), (2, 3), fully_connected=False, geometric=False) == (
-        [(0, 0), (0, 1), (0, 2), (0, 3), (1, 3), (2, 3)], 30.0)
+        [(0, 0), (0, 1), (0, 2), (0, 3), (1, 3), (2, 3)],
+        30.0,
+    )
     # 8-connected geometric: (1+2)/2 + (2+7)/2*sqrt2 + (7+12)/2*sqrt2 = 1.5 + 14 sqrt2
     path, cost = route_through_array(a, (0, 0), (-1, -1))
     assert path == [(0, 0), (0, 1), (1, 2), (2, 3)]
@@ -178,7 +182,9 @@ def test_list_and_integer_input():
         sk_path, sk_cost = skgraph.route_through_array(a, (0, 0), (0, 2), **kw)
         path, cost = route_through_array(a, (0, 0), (0, 2), **kw)
         assert cost == pytest.approx(sk_cost)
-        assert path_cost(a, path, kw.get("fully_connected", True), kw.get("geometric", True)) == pytest.approx(cost)
+        assert path_cost(
+            a, path, kw.get("fully_connected", True), kw.get("geometric", True)
+        ) == pytest.approx(cost)
 
 
 def test_bad_arguments():
@@ -189,6 +195,7 @@ def test_bad_arguments():
 
 
 # --- a negative start pixel (issue 13) -----------------------------------------------------
+
 
 def test_compat_negative_start_by_hand_and_as_skimage():
     """8 x 4 ones, start (4, 1) at -0.5, end (0, 3): the first step costs (-0.5 + 1) / 2 x its

@@ -109,13 +109,22 @@ def test_exclusion_and_penalty_zones_on_a_route(tmp_path):
     u = np.ones((11, 21))
     wall = Polygon([(9.5, -1), (11.5, -1), (11.5, 8.5), (9.5, 8.5)])  # x = col, y = row
     r = seaway.route(u, (2, 0), (2, 20), zones=[Zone(wall)], neighbourhood=3)
-    assert (r.pixels[:, 0] >= 9).any() and not ((r.pixels[:, 1] >= 10) & (r.pixels[:, 1] <= 11) & (r.pixels[:, 0] <= 8)).any()
+    assert (r.pixels[:, 0] >= 9).any() and not (
+        (r.pixels[:, 1] >= 10) & (r.pixels[:, 1] <= 11) & (r.pixels[:, 0] <= 8)
+    ).any()
     band = box(9.5, -1, 11.5, 12)
     path = tmp_path / "band.geojson"
-    path.write_text(json.dumps({"type": "FeatureCollection", "features": [
-        {"type": "Feature", "properties": {}, "geometry": shapely.geometry.mapping(band)}]}))
-    p = seaway.route(u, (2, 0), (2, 20), zones=[Zone(str(path), penalty=3)], neighbourhood=3,
-                     edge_cost="max")
+    path.write_text(
+        json.dumps(
+            {
+                "type": "FeatureCollection",
+                "features": [
+                    {"type": "Feature", "properties": {}, "geometry": shapely.geometry.mapping(band)}
+                ],
+            }
+        )
+    )
+    p = seaway.route(u, (2, 0), (2, 20), zones=[Zone(str(path), penalty=3)], neighbourhood=3, edge_cost="max")
     assert p.cost == pytest.approx(20 + 3 * 2)  # steps 9->10, 10->11, 11->12 at 3 instead of 1
     assert p.pixels[:, 0].tolist() == [2] * 21
 
@@ -128,18 +137,31 @@ def test_zone_from_a_shapefile_and_a_geojson_mapping(tmp_path):
     chart = as_chart(np.ones((30, 40)), lat=lat, lon=lon)
     poly = box(43.9, 70.5, 45.1, 72.45)  # columns 20-25, rows 5-24
     path = tmp_path / "closed.shp"
-    pyogrio.raw.write(str(path), np.array([shapely.to_wkb(poly)], dtype=object), [], [],
-                      driver="ESRI Shapefile", crs="EPSG:4326", geometry_type="Polygon")
+    pyogrio.raw.write(
+        str(path),
+        np.array([shapely.to_wkb(poly)], dtype=object),
+        [],
+        [],
+        driver="ESRI Shapefile",
+        crs="EPSG:4326",
+        geometry_type="Polygon",
+    )
     masks = [rasterise_zone(Zone(g), chart) for g in (str(path), shapely.geometry.mapping(poly), poly)]
     want = np.zeros((30, 40), bool)
     want[5:25, 20:26] = True
     for m in masks:
         np.testing.assert_array_equal(m, want)
-    r = seaway.route(np.ones((30, 40)), (71.5, 40.0), (71.5, 47.8), lat=lat, lon=lon,
-                     zones=[Zone(str(path), name="closed area")], neighbourhood=5)
+    r = seaway.route(
+        np.ones((30, 40)),
+        (71.5, 40.0),
+        (71.5, 47.8),
+        lat=lat,
+        lon=lon,
+        zones=[Zone(str(path), name="closed area")],
+        neighbourhood=5,
+    )
     assert not want[tuple(r.pixels.T)].any()
-    free = seaway.route(np.ones((30, 40)), (71.5, 40.0), (71.5, 47.8), lat=lat, lon=lon,
-                        neighbourhood=5)
+    free = seaway.route(np.ones((30, 40)), (71.5, 40.0), (71.5, 47.8), lat=lat, lon=lon, neighbourhood=5)
     assert want[tuple(free.pixels.T)].any() and r.cost > free.cost
 
 
@@ -151,7 +173,10 @@ def test_via_points_each_leg_optimal():
     r = chart.route(a, b, via=[v1, v2], method="dijkstra")
     legs = [chart.route(p, q, method="dijkstra") for p, q in [(a, v1), (v1, v2), (v2, b)]]
     assert r.cost == pytest.approx(sum(leg.cost for leg in legs), rel=1e-12)
-    assert r.pixels.tolist() == legs[0].pixels.tolist() + legs[1].pixels[1:].tolist() + legs[2].pixels[1:].tolist()
+    assert (
+        r.pixels.tolist()
+        == legs[0].pixels.tolist() + legs[1].pixels[1:].tolist() + legs[2].pixels[1:].tolist()
+    )
     assert list(r.stats.constraints.via_pixels) == [v1, v2]
     assert r.stats.constraints.turn_penalty is None
     # the legs' search figures combined: settled adds up, the peaks take the larger
@@ -171,10 +196,15 @@ def test_via_errors_name_the_point():
         seaway.route(u, (0, 0), (9, 9), via=(2, 2))
 
 
-@pytest.mark.parametrize("kwargs,match", [
-    (dict(km=-1), "km must be"), (dict(km=5, soft_km=3), "soft_km"), (dict(), "changes nothing"),
-    (dict(km=1, ice=np.ones((3, 3))), "boolean"),
-])
+@pytest.mark.parametrize(
+    "kwargs,match",
+    [
+        (dict(km=-1), "km must be"),
+        (dict(km=5, soft_km=3), "soft_km"),
+        (dict(), "changes nothing"),
+        (dict(km=1, ice=np.ones((3, 3))), "boolean"),
+    ],
+)
 def test_bad_keep_away(kwargs, match):
     with pytest.raises((ValueError, TypeError), match=match):
         constrain(np.ones((4, 4)), keep_away=KeepAway(**kwargs))
@@ -199,12 +229,14 @@ def test_route_many_with_constraints():
     u[10:20, 15:25] = np.inf
     keep, zone = KeepAway(km=2, soft_km=5, penalty=1), Zone(box(30, 0, 33, 20), penalty=4)
     voyages = {"plain": ((2, 2), (27, 37)), "via": ((2, 2), (27, 37), [(25, 5)])}
-    table = seaway.route_many(u, voyages, threads=2, keep_away=[keep], zones=[zone],
-                              turn_penalty=0.01, keep_routes=True)
+    table = seaway.route_many(
+        u, voyages, threads=2, keep_away=[keep], zones=[zone], turn_penalty=0.01, keep_routes=True
+    )
     assert table.status.tolist() == ["ok", "ok"]
     for vid, (s, e, *via) in voyages.items():
-        want = seaway.route(u, s, e, via=via[0] if via else (), keep_away=[keep], zones=[zone],
-                            turn_penalty=0.01)
+        want = seaway.route(
+            u, s, e, via=via[0] if via else (), keep_away=[keep], zones=[zone], turn_penalty=0.01
+        )
         row = table.set_index("voyage").loc[vid]
         assert row.cost == pytest.approx(want.cost, rel=1e-12)
         assert row.route.pixels.tolist() == want.pixels.tolist()
@@ -223,28 +255,79 @@ def test_cli_constraints(tmp_path):
     cost[45:, :] = 8.0
     land = np.zeros((61, 81), bool)
     land[10:35, 30:45] = True
-    ds = xr.Dataset({"cost": (("lat", "lon"), cost), "land": (("lat", "lon"), land)},
-                    coords={"lat": lat, "lon": lon})
+    ds = xr.Dataset(
+        {"cost": (("lat", "lon"), cost), "land": (("lat", "lon"), land)}, coords={"lat": lat, "lon": lon}
+    )
     path = tmp_path / "c.nc"
     ds.to_netcdf(path)
     zone = tmp_path / "z.geojson"
-    zone.write_text(json.dumps({"type": "Polygon", "coordinates": [[[66, 73], [68, 73], [68, 75], [66, 75], [66, 73]]]}))
+    zone.write_text(
+        json.dumps({"type": "Polygon", "coordinates": [[[66, 73], [68, 73], [68, 75], [66, 75], [66, 73]]]})
+    )
     out = tmp_path / "r.geojson"
-    done = subprocess.run([sys.executable, "-m", "seaway", "route", str(path), "--variable", "cost",
-                           "--from", "73,61", "--to", "73,75", "--via", "75.5,68", "--turn-penalty",
-                           "0.01", "--land-buffer", "10", "--land-soft", "30,2", "--ice-buffer",
-                           "8,15", "--penalty-zone", f"{zone},3", "--out", str(out)],
-                          capture_output=True, text=True, timeout=120)
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "seaway",
+            "route",
+            str(path),
+            "--variable",
+            "cost",
+            "--from",
+            "73,61",
+            "--to",
+            "73,75",
+            "--via",
+            "75.5,68",
+            "--turn-penalty",
+            "0.01",
+            "--land-buffer",
+            "10",
+            "--land-soft",
+            "30,2",
+            "--ice-buffer",
+            "8,15",
+            "--penalty-zone",
+            f"{zone},3",
+            "--out",
+            str(out),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert done.returncode == 0, done.stderr
     assert "not smoothed" in done.stderr
-    want = seaway.route(ds.cost, (73, 61), (73, 75), land=ds.land, via=[(75.5, 68)],
-                        turn_penalty=0.01, keep_away=[KeepAway(km=10, soft_km=30, penalty=2),
-                                                      KeepAway(km=15, ice=8.0)],
-                        zones=[Zone(str(zone), penalty=3)])
+    want = seaway.route(
+        ds.cost,
+        (73, 61),
+        (73, 75),
+        land=ds.land,
+        via=[(75.5, 68)],
+        turn_penalty=0.01,
+        keep_away=[KeepAway(km=10, soft_km=30, penalty=2), KeepAway(km=15, ice=8.0)],
+        zones=[Zone(str(zone), penalty=3)],
+    )
     assert json.loads(out.read_text())["properties"]["cost"] == pytest.approx(want.cost, rel=1e-9)
-    bad = subprocess.run([sys.executable, "-m", "seaway", "route", str(path), "--from", "73,61",
-                          "--to", "73,75", "--penalty-zone", f"{zone},0.5"], capture_output=True,
-                         text=True, timeout=60)
+    bad = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "seaway",
+            "route",
+            str(path),
+            "--from",
+            "73,61",
+            "--to",
+            "73,75",
+            "--penalty-zone",
+            f"{zone},0.5",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
     assert bad.returncode == 2 and "FACTOR >= 1" in bad.stderr
 
 
@@ -255,8 +338,9 @@ def test_cost_field_with_a_buffer_and_a_zone():
     land[5:7, 6:8] = True
     keep, zone = KeepAway(km=1.5, soft_km=3, penalty=2), Zone(box(10.5, -1, 12.5, 6.5), penalty=3)
     got = seaway.cost_field(u, (0, 0), land=land, keep_away=[keep], zones=[zone], neighbourhood=3)
-    want = seaway.cost_field(constrain(u, land=land, keep_away=[keep], zones=[zone]), (0, 0),
-                             land=land, neighbourhood=3)
+    want = seaway.cost_field(
+        constrain(u, land=land, keep_away=[keep], zones=[zone]), (0, 0), land=land, neighbourhood=3
+    )
     np.testing.assert_array_equal(got, want)
     assert np.isinf(got[4, 6]) and np.isfinite(got[11, 14])  # within 1.5 of land; reachable
     plain = seaway.cost_field(u, (0, 0), land=land, neighbourhood=3)

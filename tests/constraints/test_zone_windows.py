@@ -28,16 +28,18 @@ BLOCK = box(1.25, 60.65, 1.75, 61.35)  # rows 7-13, columns 13-17
 
 def km_route(start, end, land=None):
     """The static shortest route in km on the forecast's grid (k = 3)."""
-    return seaway.route(np.ones((21, 31)), start, end, lat=LAT, lon=LON, land=land, neighbourhood=3,
-                        edge_cost="max")
+    return seaway.route(
+        np.ones((21, 31)), start, end, lat=LAT, lon=LON, land=land, neighbourhood=3, edge_cost="max"
+    )
 
 
 def test_closed_wall_makes_the_ship_wait_until_it_opens():
     """A wall across the whole chart, closed for the first 10 h: the ship reaches the wall well
     before, waits, and crosses at 10 h. Cost = 10 h + the shortest remaining time from the
     pixel before the wall (any row) to the end."""
-    r = route_time(FC, A, B, vessel=SHIP, neighbourhood=3,
-                   zones=[Zone(WALL, active=(0.0, 10.0), name="wall")])
+    r = route_time(
+        FC, A, B, vessel=SHIP, neighbourhood=3, zones=[Zone(WALL, active=(0.0, 10.0), name="wall")]
+    )
     rest = min(km_route((LAT[row], LON[14]), B).cost for row in range(21)) / KMH
     assert r.cost == pytest.approx(10.0 + rest, rel=1e-9)
     wait = r.stats.voyage.wait_h
@@ -62,8 +64,7 @@ def test_closed_wall_makes_the_ship_wait_until_it_opens():
     assert r.cost > plain.cost + 3
 
 
-@pytest.mark.parametrize("window", [(-10.0, 1.0), (20.0, 30.0),
-                                    ("2026-01-01T20", "2026-01-02T06")])
+@pytest.mark.parametrize("window", [(-10.0, 1.0), (20.0, 30.0), ("2026-01-01T20", "2026-01-02T06")])
 def test_zone_closed_only_when_the_ship_is_elsewhere_changes_nothing(window):
     """Closed before the ship gets there (open again at 1 h; it reaches the wall after ~3.4 h)
     or only after it has passed (from 20 h; it arrives after ~6.3 h): the plain route."""
@@ -125,6 +126,7 @@ def test_hard_keep_away_on_a_time_route():
     land[9:12, 14:17] = True
     kept = route_time(FC, A, B, vessel=SHIP, neighbourhood=3, land=land, keep_away=[KeepAway(km=15)])
     from support.distance import brute_distance
+
     d = brute_distance(land, LAT, LON)
     assert d[tuple(kept.pixels.T)].min() > 15
     want = km_route(A, B, land=d <= 15).cost / KMH
@@ -145,8 +147,7 @@ def test_time_zone_errors():
     with pytest.raises(ValueError, match="at most 8 zones"):
         route_time(FC, A, B, vessel=SHIP, zones=[Zone(BLOCK)] * 9)
     with pytest.raises(ValueError, match="turn_penalty works with the static edge costs"):
-        ForecastGrid(FC).prepare().route(A, B, model=TravelTime(ForecastGrid(FC), SHIP),
-                                          turn_penalty=0.1)
+        ForecastGrid(FC).prepare().route(A, B, model=TravelTime(ForecastGrid(FC), SHIP), turn_penalty=0.1)
 
 
 def test_via_on_a_season_route_is_refused_with_the_fix():

@@ -96,6 +96,7 @@ def test_draft_in_the_ob_bay_shallow_draft_passes_deep_draft_refused(ob_chart):
     neck = _bottleneck(z.values, a, b)
     assert 8.8 < neck < 9.6
     from seaway.depth import deepest_way
+
     assert deepest_way(cost, None, z, OB["start"], OB["end"]) == pytest.approx(neck, abs=1e-6)
     # 8 m draft + 10 % UKC = 8.8 m: passes; its shallowest water is >= 8.8 and <= the bottleneck
     r = seaway.route(apply_draft(cost, z, 8.0), OB["start"], OB["end"])
@@ -122,8 +123,9 @@ def test_paper_002_f1_from_the_bathymetry(ob_chart):
 
 
 def run(*args):
-    return subprocess.run([sys.executable, "-m", "seaway", *args], capture_output=True, text=True,
-                          timeout=300)
+    return subprocess.run(
+        [sys.executable, "-m", "seaway", *args], capture_output=True, text=True, timeout=300
+    )
 
 
 @pytest.fixture(scope="module")
@@ -144,6 +146,7 @@ def test_cli_depth_draft_least_depth_and_refusals(ob_file, ob_chart):
     done = run(*common, "--draft", "8", "--out", str(outs[0]), "--out", str(outs[1]))
     assert done.returncode == 0, done.stderr
     import json
+
     props = json.loads(outs[0].read_text())["properties"]
     lat, lon = props["least_depth_at"]
     assert props["least_depth_m"] == pytest.approx(float(z.sel(lat=lat, lon=lon)), abs=1e-9)
@@ -161,8 +164,10 @@ def test_cli_depth_draft_least_depth_and_refusals(ob_file, ob_chart):
     # deep draft: the end itself is too shallow; the message names the depth and the way out
     deep = run(*common, "--draft", "12")
     assert deep.returncode == 1 and deep.stdout == ""
-    assert "end 69,73.5 is on an impassable pixel (too shallow: depth 10.0 m < draft 12 m + UKC " \
-           "1.2 m)" in deep.stderr
+    assert (
+        "end 69,73.5 is on an impassable pixel (too shallow: depth 10.0 m < draft 12 m + UKC "
+        "1.2 m)" in deep.stderr
+    )
     assert "the nearest point the ship may use is" in deep.stderr
     far = run(*common, "--draft", "12", "--snap")  # the nearest deep water is 241 km away
     assert far.returncode == 1 and "farther than --snap-km 20" in far.stderr
@@ -174,19 +179,26 @@ def test_cli_depth_draft_least_depth_and_refusals(ob_file, ob_chart):
     # ends deep enough, the way not: no route, exit 1
     mid = run(*common, "--draft", "8.8")
     assert mid.returncode == 1 and "no route" in mid.stderr
-    assert (f"the deepest water joining the ends is {neck:.1f} m, less than draft 8.8 m + UKC "
-            f"0.88 m = 9.68 m: a draft of at most {np.floor(neck / 1.1 * 10 + 1e-6) / 10:.1f} m (with the "
-            "default UKC of 10 %) gets through") in mid.stderr
-    assert f"at most {np.floor((neck - 0.5) * 10 + 1e-6) / 10:.1f} m (with this UKC)" in run(
-        *common, "--draft", "9.5", "--ukc", "0.5").stderr
+    assert (
+        f"the deepest water joining the ends is {neck:.1f} m, less than draft 8.8 m + UKC "
+        f"0.88 m = 9.68 m: a draft of at most {np.floor(neck / 1.1 * 10 + 1e-6) / 10:.1f} m (with the "
+        "default UKC of 10 %) gets through"
+    ) in mid.stderr
+    assert (
+        f"at most {np.floor((neck - 0.5) * 10 + 1e-6) / 10:.1f} m (with this UKC)"
+        in run(*common, "--draft", "9.5", "--ukc", "0.5").stderr
+    )
     # a draft without a bathymetry, a UKC without a draft
-    assert "--draft and --ukc need --depth FILE" in run("route", str(ob_file), "--from", "74.5,72",
-                                                         "--to", "69,73.5", "--draft", "8").stderr
+    assert (
+        "--draft and --ukc need --depth FILE"
+        in run("route", str(ob_file), "--from", "74.5,72", "--to", "69,73.5", "--draft", "8").stderr
+    )
     assert "--ukc needs --draft" in run(*common, "--ukc", "1").stderr
     junk = ob_file.parent / "junk.nc"
     junk.write_bytes(b"\x89HDF\r\n\x1a\n truncated")
-    bad = run("route", str(ob_file), "--from", "74.5,72", "--to", "69,73.5", "--depth", str(junk),
-              "--draft", "8")
+    bad = run(
+        "route", str(ob_file), "--from", "74.5,72", "--to", "69,73.5", "--depth", str(junk), "--draft", "8"
+    )
     assert bad.returncode == 1 and "junk.nc" in bad.stderr and "Traceback" not in bad.stderr
 
 
@@ -211,8 +223,9 @@ def test_paper_002_time_route_with_f1_from_depth_keeps_out_of_shallows(ob_chart)
     hours = np.sum(km / (np.minimum(f[:-1], f[1:]) * 12 * 1.852))
     assert found[0].time == pytest.approx(hours, rel=1e-9)
     with pytest.raises(NoRouteError):
-        pareto.pareto_routes(andreeva.depth_factor(z, neck + 0.05), OB["start"], OB["end"],
-                               v0_kn=12, thresholds=[1e-9])
+        pareto.pareto_routes(
+            andreeva.depth_factor(z, neck + 0.05), OB["start"], OB["end"], v0_kn=12, thresholds=[1e-9]
+        )
 
 
 @needs_etopo

@@ -11,9 +11,13 @@ from seaway.depth import apply_draft, depth_on_grid, least_depth, open_bathymetr
 
 
 def _write(path, name, values, attrs, lat, lon):
-    ds = xr.Dataset({name: (("lat", "lon"), values, attrs)},
-                    coords={"lat": ("lat", lat, {"units": "degrees_north"}),
-                            "lon": ("lon", lon, {"units": "degrees_east"})})
+    ds = xr.Dataset(
+        {name: (("lat", "lon"), values, attrs)},
+        coords={
+            "lat": ("lat", lat, {"units": "degrees_north"}),
+            "lon": ("lon", lon, {"units": "degrees_east"}),
+        },
+    )
     ds.to_netcdf(path)
     return path
 
@@ -22,8 +26,13 @@ def test_conventions_from_cf_attributes_guesses_said_and_bad_units(tmp_path):
     lat, lon = np.array([70.0, 71.0, 72.0]), np.array([10.0, 11.0, 12.0, 13.0])
     depth = np.array([[5.0, 10, 20, 40], [-3, 8, 16, 30], [1, 2, 4, 8]])
     cases = {
-        "depth_down.nc": ("deptho", depth, {"standard_name": "sea_floor_depth_below_sea_surface",
-                                            "units": "m"}, 1.0, "standard_name"),
+        "depth_down.nc": (
+            "deptho",
+            depth,
+            {"standard_name": "sea_floor_depth_below_sea_surface", "units": "m"},
+            1.0,
+            "standard_name",
+        ),
         "elev_up.nc": ("elevation", -depth, {"positive": "up", "units": "metres"}, 1.0, "positive"),
         "feet.nc": ("depth", depth / 0.3048, {"positive": "down", "units": "ft"}, 1.0, "positive"),
         "guess_z.nc": ("z", -depth, {}, 1.0, "ASSUMED elevation positive up"),
@@ -35,8 +44,10 @@ def test_conventions_from_cf_attributes_guesses_said_and_bad_units(tmp_path):
         assert how in b.convention, (fname, b.convention)
         assert bool(b.notes) == ("ASSUMED" in how) or fname == "guess_z.nc"
     z = open_bathymetry(tmp_path / "guess_z.nc")
-    assert any("ASSUMED elevation positive up (the ETOPO/GEBCO convention)" in n and
-               "positive='down'" in n for n in z.notes)
+    assert any(
+        "ASSUMED elevation positive up (the ETOPO/GEBCO convention)" in n and "positive='down'" in n
+        for n in z.notes
+    )
     assert any("states no units: ASSUMED metres" in n for n in z.notes)
     flipped = open_bathymetry(tmp_path / "guess_z.nc", positive="down")
     np.testing.assert_allclose(flipped.depth.values, -depth)
@@ -63,8 +74,17 @@ def test_geotiff_bathymetry_guess_and_override(tmp_path):
 
     depth = np.array([[5.0, 10, 20, 40], [-3, 8, 16, 30], [1, 2, 4, 8]], dtype="float32")
     path = tmp_path / "gebco_like.tif"
-    with rasterio.open(path, "w", driver="GTiff", height=3, width=4, count=1, dtype="float32",
-                       crs="EPSG:4326", transform=Affine(1.0, 0.0, 9.5, 0.0, -1.0, 72.5)) as dst:
+    with rasterio.open(
+        path,
+        "w",
+        driver="GTiff",
+        height=3,
+        width=4,
+        count=1,
+        dtype="float32",
+        crs="EPSG:4326",
+        transform=Affine(1.0, 0.0, 9.5, 0.0, -1.0, 72.5),
+    ) as dst:
         dst.write(-depth, 1)  # GEBCO GeoTIFF: elevation, no CF attributes
     b = open_bathymetry(path)
     assert "ASSUMED elevation positive up" in b.convention
@@ -89,8 +109,7 @@ def test_least_depth_of_a_route_across_the_seam_of_a_360_degree_chart():
     """A route from 175 E to 175 W on a chart wrapping at +-180 crosses the seam in one step;
     the pixels sampled along it stay by the seam (they once swept the whole row)."""
     lat, lon = np.arange(79.5, 59.0, -1.0), np.arange(-179.5, 180.0, 1.0)
-    cost = xr.DataArray(np.ones((lat.size, lon.size)), dims=("lat", "lon"),
-                        coords={"lat": lat, "lon": lon})
+    cost = xr.DataArray(np.ones((lat.size, lon.size)), dims=("lat", "lon"), coords={"lat": lat, "lon": lon})
     z = cost.copy(data=np.where(np.abs(lon) > 170, 100.0, 1.0)[None, :].repeat(lat.size, 0))
     for r in (seaway.route(cost, (70.5, 175.5), (70.5, -175.5)),):
         for route in (r, r.smoothed()):

@@ -17,8 +17,12 @@ RTOL = 1e-9
 
 def primitive_offsets(k):
     h = (k - 1) // 2
-    return [(a, b) for a in range(-h, h + 1) for b in range(-h, h + 1)
-            if (a, b) != (0, 0) and math.gcd(abs(a), abs(b)) == 1]
+    return [
+        (a, b)
+        for a in range(-h, h + 1)
+        for b in range(-h, h + 1)
+        if (a, b) != (0, 0) and math.gcd(abs(a), abs(b)) == 1
+    ]
 
 
 def lattice_optimum(targets, k, dx, dy):
@@ -63,14 +67,16 @@ def test_uniform_planar_exact_optimum(k, directions, edge_cost):
     dx, dy = (float(v) for v in rng.uniform(0.4, 2.5, size=2))
     n, c = 17, 8
     u = np.ones((n, n))
-    field = seaway.cost_field(u, (c, c), dx=dx, dy=dy, neighbourhood=k, directions=directions,
-                              edge_cost=edge_cost)
+    field = seaway.cost_field(
+        u, (c, c), dx=dx, dy=dy, neighbourhood=k, directions=directions, edge_cost=edge_cost
+    )
     i, j = np.indices((n, n))
     expect = lattice_optimum(np.column_stack([i.ravel() - c, j.ravel() - c]), k, dx, dy).reshape(n, n)
     np.testing.assert_allclose(field, expect, rtol=RTOL, atol=1e-12)
     # route() from a corner agrees with the field, and scaling the cost scales the route
-    r = seaway.route(3.5 * u, (c, c), (0, n - 3), dx=dx, dy=dy, neighbourhood=k,
-                     directions=directions, edge_cost=edge_cost)
+    r = seaway.route(
+        3.5 * u, (c, c), (0, n - 3), dx=dx, dy=dy, neighbourhood=k, directions=directions, edge_cost=edge_cost
+    )
     assert r.cost == pytest.approx(3.5 * expect[0, n - 3], rel=RTOL)
     assert r.length == pytest.approx(expect[0, n - 3], rel=RTOL)
 
@@ -139,14 +145,16 @@ def test_single_geographic_step_is_haversine(lat_sign, edge_cost):
 def test_single_step_across_antimeridian_on_wrapping_chart():
     lat, lon = np.array([-10.0, 0.0, 10.0]), -175.0 + 22.5 * np.arange(16)
     u = np.ones((3, 16))
-    r = seaway.route(u, (10.0, lon[15]), (-10.0, lon[1]), lat=lat, lon=lon, neighbourhood=7,
-                     method="dijkstra")
+    r = seaway.route(
+        u, (10.0, lon[15]), (-10.0, lon[1]), lat=lat, lon=lon, neighbourhood=7, method="dijkstra"
+    )
     assert r.cost == pytest.approx(haversine(10.0, lon[15], -10.0, lon[1]), rel=1e-12)
     assert r.pixels.tolist() == [[2, 15], [0, 1]]
 
 
-@pytest.mark.parametrize("start,end", [((45, 5), (55, 35)), ((41, 1), (59, 2)),
-                                       ((59, 0.5), (41, 39.5)), ((50, 0.5), (50, 39.5))])
+@pytest.mark.parametrize(
+    "start,end", [((45, 5), (55, 35)), ((41, 1), (59, 2)), ((59, 0.5), (41, 39.5)), ((50, 0.5), (50, 39.5))]
+)
 def test_uniform_geographic_close_to_great_circle(start, end):
     lat, lon = np.arange(40, 60.001, 0.25), np.arange(0, 40.001, 0.25)
     u = np.ones((lat.size, lon.size))
@@ -181,7 +189,6 @@ def test_route_over_the_pole_is_the_meridian(k):
     lat, lon = np.array([60.0, 70.0, 80.0, 90.0]), -180.0 + 22.5 * np.arange(16)
     u = np.ones((4, 16))
     for method in ("dijkstra", "astar"):
-        r = seaway.route(u, (60.0, -180.0), (60.0, 0.0), lat=lat, lon=lon, neighbourhood=k,
-                         method=method)
+        r = seaway.route(u, (60.0, -180.0), (60.0, 0.0), lat=lat, lon=lon, neighbourhood=k, method=method)
         assert r.cost == pytest.approx(haversine(60.0, -180.0, 60.0, 0.0), rel=1e-12)
         assert r.cost == pytest.approx(60 * math.pi / 180 * 6371.0088, rel=1e-12)

@@ -29,8 +29,10 @@ def _queries(cost, n, seed):
     water = np.argwhere(np.isfinite(cost))
     pick = rng.choice(len(water), (n, 2))
     methods = ["dijkstra", "astar", ("astar", 2.0)]
-    return [(tuple(map(int, water[a])), tuple(map(int, water[b])), methods[k % 3])
-            for k, (a, b) in enumerate(pick)]
+    return [
+        (tuple(map(int, water[a])), tuple(map(int, water[b])), methods[k % 3])
+        for k, (a, b) in enumerate(pick)
+    ]
 
 
 def _answer(route_fn, q):
@@ -57,8 +59,9 @@ def _threaded(fn, items):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("edge_cost, k, dtype", [("max", 3, np.float64), ("integral", 7, np.float32),
-                                                 ("mean", 15, np.float64)])
+@pytest.mark.parametrize(
+    "edge_cost, k, dtype", [("max", 3, np.float64), ("integral", 7, np.float32), ("mean", 15, np.float64)]
+)
 def test_threads_on_one_prepared_chart_give_the_serial_answers(edge_cost, k, dtype):
     cost = _chart(11, (90, 120), dtype)
     chart = seaway.prepare(cost, neighbourhood=k, edge_cost=edge_cost)
@@ -78,7 +81,11 @@ def test_threads_mixing_routes_and_cost_fields_on_one_chart():
     routes = [_answer(chart.route, q) for q in queries]
 
     def job(i):
-        return ("field", i, chart.cost_field(starts[i])) if i % 2 else ("route", i, _answer(chart.route, queries[i]))
+        return (
+            ("field", i, chart.cost_field(starts[i]))
+            if i % 2
+            else ("route", i, _answer(chart.route, queries[i]))
+        )
 
     for kind, i, got in _threaded(job, range(len(queries))):
         if kind == "field":
@@ -90,8 +97,10 @@ def test_threads_mixing_routes_and_cost_fields_on_one_chart():
 def test_threads_on_plain_route_and_geographic_charts_give_the_serial_answers():
     cost = _chart(13, (40, 72))
     lat, lon = np.linspace(60, 80, 40), np.arange(72) * 5.0  # wraps around the globe
-    queries = [((float(lat[a[0]]), float(lon[a[1]])), (float(lat[b[0]]), float(lon[b[1]])), how)
-               for a, b, how in _queries(cost, 24, seed=5)]
+    queries = [
+        ((float(lat[a[0]]), float(lon[a[1]])), (float(lat[b[0]]), float(lon[b[1]])), how)
+        for a, b, how in _queries(cost, 24, seed=5)
+    ]
 
     def fresh(a, b, **kw):
         return seaway.route(cost, a, b, lat=lat, lon=lon, neighbourhood=5, **kw)
@@ -107,8 +116,9 @@ def _interrupt_main_after(seconds):
     return timer
 
 
-@pytest.mark.skipif(threading.current_thread() is not threading.main_thread(),
-                    reason="signals reach only the main thread")
+@pytest.mark.skipif(
+    threading.current_thread() is not threading.main_thread(), reason="signals reach only the main thread"
+)
 def test_an_interrupted_query_leaves_the_prepared_chart_correct():
     """Ctrl-C while a long search runs (GIL released): KeyboardInterrupt arrives when the search
     returns; the workspace goes back to the pool, and the next queries are exact."""

@@ -18,7 +18,7 @@ def _stub():
         if isinstance(node, ast.ClassDef):
             members[node.name] = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
         if isinstance(node, (ast.Assign, ast.AnnAssign)):
-            for t in (node.targets if isinstance(node, ast.Assign) else [node.target]):
+            for t in node.targets if isinstance(node, ast.Assign) else [node.target]:
                 if isinstance(t, ast.Name):
                     (aliases if t.id[:1].isupper() else top).add(t.id)  # Model = A | B: typing only
     return top - aliases, members

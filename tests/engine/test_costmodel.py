@@ -20,15 +20,18 @@ def sea():
     water = np.argwhere(np.isfinite(field))
     rng = np.random.default_rng(4)
     pairs = [((380, 20), tuple(int(v) for v in water[np.argmax(field[np.isfinite(field)])]))]
-    pairs += [(tuple(int(v) for v in water[a]), tuple(int(v) for v in water[b]))
-              for a, b in rng.choice(len(water), size=(10, 2), replace=False)]
+    pairs += [
+        (tuple(int(v) for v in water[a]), tuple(int(v) for v in water[b]))
+        for a, b in rng.choice(len(water), size=(10, 2), replace=False)
+    ]
     return chart, pairs
 
 
 def _counts(chart, s, e):
     lm = chart.landmarks_for(chart.model)
-    return costmodel.settled(chart, chart.model, chart.landmark_sample(chart.model), lm.table, s, e,
-                             methods.low_contrast(chart))
+    return costmodel.settled(
+        chart, chart.model, chart.landmark_sample(chart.model), lm.table, s, e, methods.low_contrast(chart)
+    )
 
 
 def test_counts_track_the_pixels_settled(sea):
@@ -52,8 +55,15 @@ def test_auto_is_exact_whichever_search_it_picks(sea):
     chart, pairs = sea
     picked = set()
     for s, e in pairs:
-        est = costmodel.estimate(chart, chart.model, chart.landmark_sample(chart.model),
-                                 chart.landmarks_for(chart.model).table, s, e, methods.low_contrast(chart))
+        est = costmodel.estimate(
+            chart,
+            chart.model,
+            chart.landmark_sample(chart.model),
+            chart.landmarks_for(chart.model).table,
+            s,
+            e,
+            methods.low_contrast(chart),
+        )
         picked.add(min(est, key=lambda m: est[m]))
         r = chart.route(s, e)
         assert r.method == methods.PUBLIC.get(min(est, key=lambda m: est[m]), min(est, key=lambda m: est[m]))

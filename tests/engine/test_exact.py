@@ -21,7 +21,10 @@ METHODS = ("bidirectional", "landmarks", "auto")
 def _ends(ref, start, expect, rng):
     fin = np.isfinite(expect)
     reach = np.argwhere(fin)
-    ends = [tuple(int(v) for v in reach[i]) for i in rng.choice(len(reach), size=min(5, len(reach)), replace=False)]
+    ends = [
+        tuple(int(v) for v in reach[i])
+        for i in rng.choice(len(reach), size=min(5, len(reach)), replace=False)
+    ]
     ends.append(tuple(int(v) for v in reach[np.argmax(expect[fin])]))  # the farthest pixel
     return ends, [tuple(int(v) for v in e) for e in np.argwhere(~fin & ref.ok)[:2]]
 
@@ -186,7 +189,9 @@ def test_cancel_token_stops_bidirectional_and_landmark_building():
     with pytest.raises(KeyboardInterrupt, match="search cancelled"):
         chart.router.build_landmarks(engine, 2, 0, token)
     full = chart.cost_field((0, 0))
-    assert chart.route((0, 0), (399, 399), method="bidirectional").cost == pytest.approx(full[399, 399], rel=RTOL)
+    assert chart.route((0, 0), (399, 399), method="bidirectional").cost == pytest.approx(
+        full[399, 399], rel=RTOL
+    )
 
 
 def test_bidirectional_is_the_same_bit_for_bit_on_one_core_and_on_two():

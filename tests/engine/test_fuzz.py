@@ -21,8 +21,7 @@ from seaway.compat import route_through_array
 from support.reference import RefGraph
 
 EXAMPLES = int(os.environ.get("SEAWAY_FUZZ_EXAMPLES", "40"))
-FUZZ = settings(max_examples=EXAMPLES, deadline=None, database=None,
-                suppress_health_check=list(HealthCheck))
+FUZZ = settings(max_examples=EXAMPLES, deadline=None, database=None, suppress_health_check=list(HealthCheck))
 RTOL = 1e-9
 VALUES = [0.0, -0.0, 1e-9, 0.3, 1.0, 1.0, 2.5, 7.0, 1e6, 1e30, np.inf, np.nan]
 KS = [3, 5, 7, 9, 11, 13, 15]
@@ -50,12 +49,17 @@ def charts(draw, negative=False):
             u[p] = 1.0 if not (np.isfinite(u[p]) and u[p] >= 0) else u[p]
             if land is not None:
                 land[p] = False
-    kw = dict(land=land, neighbourhood=draw(st.sampled_from(KS)),
-              directions=draw(st.sampled_from(["full", "unique"])),
-              edge_cost=draw(st.sampled_from(["max", "mean", "integral"])))
+    kw = dict(
+        land=land,
+        neighbourhood=draw(st.sampled_from(KS)),
+        directions=draw(st.sampled_from(["full", "unique"])),
+        edge_cost=draw(st.sampled_from(["max", "mean", "integral"])),
+    )
     if geo == "planar":
-        kw.update(dx=draw(st.sampled_from([1e-3, 0.5, 1.0, 3.0, 1e4])),
-                  dy=draw(st.sampled_from([1e-3, 0.25, 1.0, 2.0, 1e4])))
+        kw.update(
+            dx=draw(st.sampled_from([1e-3, 0.5, 1.0, 3.0, 1e4])),
+            dy=draw(st.sampled_from([1e-3, 0.25, 1.0, 2.0, 1e4])),
+        )
         pts = [tuple(p) for p in rc]
     else:
         dlat = draw(st.sampled_from([-5.0, -0.5, 0.01, 0.5, 5.0]))
@@ -132,8 +136,9 @@ def test_cost_fields_equal_the_reference(prob):
 def test_one_prepared_chart_answers_every_pair(rows, cols, k, data):
     """Many queries on one PreparedChart (workspace reuse) against the reference, 1x1 to 6x6."""
     n = rows * cols
-    u = np.array(data.draw(st.lists(st.sampled_from([0.0, 1.0, 3.0, np.inf]), min_size=n,
-                                    max_size=n))).reshape(rows, cols)
+    u = np.array(
+        data.draw(st.lists(st.sampled_from([0.0, 1.0, 3.0, np.inf]), min_size=n, max_size=n))
+    ).reshape(rows, cols)
     u.flat[data.draw(st.integers(0, n - 1))] = 1.0
     chart = seaway.prepare(u, neighbourhood=k, edge_cost=data.draw(st.sampled_from(["max", "integral"])))
     ref = RefGraph(u, k=k, edge_cost=chart.edge_cost)
@@ -149,18 +154,39 @@ def test_one_prepared_chart_answers_every_pair(rows, cols, k, data):
                 _check_route(chart.route(s, e, method=method), ref, [s, e], expect[e])
 
 
-JUNK = st.one_of(st.none(), st.booleans(), st.integers(-5, 20), st.floats(allow_nan=True),
-                 st.text(max_size=4), st.tuples(st.integers(-3, 9)),
-                 st.tuples(st.floats(allow_nan=True), st.floats(allow_nan=True)),
-                 st.tuples(st.integers(-3, 9), st.integers(-3, 9)),
-                 st.tuples(st.integers(0, 3), st.integers(0, 3), st.integers(0, 3)),
-                 st.lists(st.integers(0, 3), max_size=3), st.just(np.array([1, 2])))
+JUNK = st.one_of(
+    st.none(),
+    st.booleans(),
+    st.integers(-5, 20),
+    st.floats(allow_nan=True),
+    st.text(max_size=4),
+    st.tuples(st.integers(-3, 9)),
+    st.tuples(st.floats(allow_nan=True), st.floats(allow_nan=True)),
+    st.tuples(st.integers(-3, 9), st.integers(-3, 9)),
+    st.tuples(st.integers(0, 3), st.integers(0, 3), st.integers(0, 3)),
+    st.lists(st.integers(0, 3), max_size=3),
+    st.just(np.array([1, 2])),
+)
 
 
 @FUZZ
-@given(st.fixed_dictionaries({}, optional={
-    "neighbourhood": JUNK, "directions": JUNK, "edge_cost": JUNK, "method": JUNK, "weight": JUNK,
-    "dx": JUNK, "dy": JUNK}), JUNK, JUNK, st.sampled_from(["planar", "geo", "empty", "3d", "text", "land"]))
+@given(
+    st.fixed_dictionaries(
+        {},
+        optional={
+            "neighbourhood": JUNK,
+            "directions": JUNK,
+            "edge_cost": JUNK,
+            "method": JUNK,
+            "weight": JUNK,
+            "dx": JUNK,
+            "dy": JUNK,
+        },
+    ),
+    JUNK,
+    JUNK,
+    st.sampled_from(["planar", "geo", "empty", "3d", "text", "land"]),
+)
 def test_junk_arguments_raise_value_or_type_errors(kw, start, end, chart):
     u = np.ones((4, 5))
     if chart == "geo":
@@ -180,9 +206,15 @@ def test_junk_arguments_raise_value_or_type_errors(kw, start, end, chart):
         return
     # accepted: the arguments were valid, and the answer is the reference's
     k = kw.get("neighbourhood", 5)
-    ref = RefGraph(u, k=k, directions=kw.get("directions", "full"),
-                   edge_cost=kw.get("edge_cost", "max"), dx=kw.get("dx", 1.0), dy=kw.get("dy", 1.0),
-                   **({"lat": kw["lat"], "lon": kw["lon"]} if "lat" in kw else {}))
+    ref = RefGraph(
+        u,
+        k=k,
+        directions=kw.get("directions", "full"),
+        edge_cost=kw.get("edge_cost", "max"),
+        dx=kw.get("dx", 1.0),
+        dy=kw.get("dy", 1.0),
+        **({"lat": kw["lat"], "lon": kw["lon"]} if "lat" in kw else {}),
+    )
     expect = ref.costs(r.pixels[0])[tuple(r.pixels[-1])]
     assert ref.path_cost(r.pixels) == pytest.approx(r.cost, rel=RTOL)
     w = 1.0 if kw.get("weight") is None else float(kw["weight"])
@@ -197,8 +229,9 @@ def test_compat_route_through_array_follows_skimage_rules(rows, cols, data):
     geometric=False, so the path is checked against the rules here; test_compat compares the
     two on ordinary charts)."""
     n = rows * cols
-    u = np.array(data.draw(st.lists(st.sampled_from([-1.0, 0.0, 0.5, 2.0, np.inf, np.nan]),
-                                    min_size=n, max_size=n))).reshape(rows, cols)
+    u = np.array(
+        data.draw(st.lists(st.sampled_from([-1.0, 0.0, 0.5, 2.0, np.inf, np.nan]), min_size=n, max_size=n))
+    ).reshape(rows, cols)
     s = (data.draw(st.integers(0, rows - 1)), data.draw(st.integers(0, cols - 1)))
     e = (data.draw(st.integers(0, rows - 1)), data.draw(st.integers(0, cols - 1)))
     geometric, full = data.draw(st.booleans()), data.draw(st.booleans())

@@ -18,17 +18,24 @@ R_EARTH = 6371.0088
 def hav(lat1, lon1, lat2, lon2):
     """Great-circle distance in km, written out independently of seaway."""
     p1, p2 = math.radians(lat1), math.radians(lat2)
-    a = math.sin((p2 - p1) / 2) ** 2 + math.cos(p1) * math.cos(p2) * math.sin(math.radians(lon2 - lon1) / 2) ** 2
+    a = (
+        math.sin((p2 - p1) / 2) ** 2
+        + math.cos(p1) * math.cos(p2) * math.sin(math.radians(lon2 - lon1) / 2) ** 2
+    )
     return 2 * R_EARTH * math.asin(math.sqrt(a))
 
 
 # --- 1 x N corridors ---------------------------------------------------------------------------
 
-@pytest.mark.parametrize("edge_cost, expected", [
-    ("max", 9.0),       # max(1,2) + max(2,3) + max(3,4) = 2 + 3 + 4
-    ("mean", 7.5),      # 1.5 + 2.5 + 3.5
-    ("integral", 7.5),  # a unit axis step is half in each pixel: same as the mean
-])
+
+@pytest.mark.parametrize(
+    "edge_cost, expected",
+    [
+        ("max", 9.0),  # max(1,2) + max(2,3) + max(3,4) = 2 + 3 + 4
+        ("mean", 7.5),  # 1.5 + 2.5 + 3.5
+        ("integral", 7.5),  # a unit axis step is half in each pixel: same as the mean
+    ],
+)
 def test_corridor_unit_steps(edge_cost, expected):
     c = np.array([[1.0, 2, 3, 4]])
     r = seaway.route(c, (0, 0), (0, 3), neighbourhood=3, edge_cost=edge_cost)
@@ -53,6 +60,7 @@ def test_corridor_long_step_over_expensive_pixel():
 
 
 # --- the segment land rule -----------------------------------------------------------------------
+
 
 def test_corner_touching_land_blocks_the_diagonal():
     # . is water (cost 1), L land.   L . .      start S=(1,0), end E=(0,1)
@@ -121,17 +129,21 @@ def test_long_step_never_jumps_over_land():
 
 # --- a knight move under the three edge costs ------------------------------------------------
 
-@pytest.mark.parametrize("edge_cost, expected, path", [
-    # knight step (1,1)->(2,3): r = sqrt5 -> max(1,3)*sqrt5 = 6.708; but via (1,2):
-    # max(1,2)*1 + max(2,3)*sqrt2 = 2 + 3 sqrt2 = 6.243 is cheaper
-    ("max", 2 + 3 * S2, [[1, 1], [1, 2], [2, 3]]),
-    # knight (1+3)/2*sqrt5 = 2 sqrt5 = 4.472; via (1,2): 1.5 + 2.5 sqrt2 = 5.036
-    ("mean", 2 * S5, [[1, 1], [2, 3]]),
-    # the knight segment spends 1/4 of its length in each of (1,1), (1,2), (2,2), (2,3):
-    # (1+2+3+3)/4*sqrt5 = 2.25 sqrt5 = 5.0312; via (1,2): 0.5*(1+2) + sqrt2*(2+3)/2 = 5.0355
-    # (the diagonal only grazes the corner of (1,3) and (2,2): zero length in them)
-    ("integral", 2.25 * S5, [[1, 1], [2, 3]]),
-])
+
+@pytest.mark.parametrize(
+    "edge_cost, expected, path",
+    [
+        # knight step (1,1)->(2,3): r = sqrt5 -> max(1,3)*sqrt5 = 6.708; but via (1,2):
+        # max(1,2)*1 + max(2,3)*sqrt2 = 2 + 3 sqrt2 = 6.243 is cheaper
+        ("max", 2 + 3 * S2, [[1, 1], [1, 2], [2, 3]]),
+        # knight (1+3)/2*sqrt5 = 2 sqrt5 = 4.472; via (1,2): 1.5 + 2.5 sqrt2 = 5.036
+        ("mean", 2 * S5, [[1, 1], [2, 3]]),
+        # the knight segment spends 1/4 of its length in each of (1,1), (1,2), (2,2), (2,3):
+        # (1+2+3+3)/4*sqrt5 = 2.25 sqrt5 = 5.0312; via (1,2): 0.5*(1+2) + sqrt2*(2+3)/2 = 5.0355
+        # (the diagonal only grazes the corner of (1,3) and (2,2): zero length in them)
+        ("integral", 2.25 * S5, [[1, 1], [2, 3]]),
+    ],
+)
 def test_knight_step_edge_costs(edge_cost, expected, path):
     u = np.full((5, 5), 100.0)
     u[1, 1], u[1, 2], u[2, 2], u[2, 3] = 1, 2, 3, 3
@@ -139,7 +151,9 @@ def test_knight_step_edge_costs(edge_cost, expected, path):
     assert r.cost == pytest.approx(expected, rel=1e-12)
     assert r.pixels.tolist() == path
     for method in ("dijkstra", "astar"):
-        assert seaway.route(u, (1, 1), (2, 3), edge_cost=edge_cost, method=method).cost == pytest.approx(expected)
+        assert seaway.route(u, (1, 1), (2, 3), edge_cost=edge_cost, method=method).cost == pytest.approx(
+            expected
+        )
 
 
 def test_anisotropic_cells():
@@ -181,6 +195,7 @@ def test_walled_off_raises_no_route_error():
 
 # --- cost_field --------------------------------------------------------------------------------
 
+
 def test_cost_field_values():
     # corridor, k=3, max: 0, max(1,2)=2, 2+3=5, 5+4=9
     f = seaway.cost_field(np.array([[1.0, 2, 3, 4]]), (0, 0), neighbourhood=3)
@@ -198,6 +213,7 @@ def test_cost_field_values():
 
 
 # --- Route attributes on a geographic chart ---------------------------------------------------
+
 
 def test_geographic_route_length_coords_geojson():
     lat, lon = [10.0, 11.0], [20.0, 21.0, 22.0]

@@ -26,8 +26,9 @@ def _interrupt_after(seconds):
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(threading.current_thread() is not threading.main_thread(),
-                    reason="signals reach the main thread only")
+@pytest.mark.skipif(
+    threading.current_thread() is not threading.main_thread(), reason="signals reach the main thread only"
+)
 def test_ctrl_c_stops_a_long_search_and_the_chart_still_answers(big, monkeypatch):
     chart = seaway.prepare(big, neighbourhood=7)
     full = chart.cost_field((0, 0))
@@ -71,13 +72,15 @@ def test_a_cancel_token_stops_the_engine_from_any_thread(big):
 
 # -- workspace reuse after Ctrl-C and progress of long searches (issue 13) --------------------
 
+
 def _sleep_until(condition):
     while not condition():  # no timing assertion: only waits for the other thread
         time.sleep(0.001)
 
 
-@pytest.mark.skipif(threading.current_thread() is not threading.main_thread(),
-                    reason="signals reach the main thread only")
+@pytest.mark.skipif(
+    threading.current_thread() is not threading.main_thread(), reason="signals reach the main thread only"
+)
 def test_after_ctrl_c_the_next_query_reuses_the_workspace():
     cost = np.random.default_rng(3).uniform(1.0, 9.0, (300, 300))
     chart = seaway.prepare(cost, neighbourhood=5)
@@ -114,8 +117,9 @@ def test_settled_counter_is_published_every_4096_expansions():
     assert token.settled == (200 * 150) // 4096 * 4096  # the last multiple of 4096 reached
 
 
-@pytest.mark.skipif(threading.current_thread() is not threading.main_thread(),
-                    reason="the waiting main thread reports")
+@pytest.mark.skipif(
+    threading.current_thread() is not threading.main_thread(), reason="the waiting main thread reports"
+)
 def test_the_waiting_thread_hands_the_settled_count_to_a_listener(monkeypatch):
     """No clock: the search settles 200 x 150 pixels (counter at 28672, the last multiple of
     4096), then waits until the listener has heard that count (it may hear smaller ones
@@ -147,11 +151,20 @@ def test_the_waiting_thread_hands_the_settled_count_to_a_listener(monkeypatch):
 def test_settled_progress_is_throttled_to_once_a_second_of_its_clock():
     now, said = [100.0], []
     progress = seaway.base.interrupt.SettledProgress(said.append, 1_000_000, clock=lambda: now[0])
-    for t, settled in [(100.5, 4096), (101.0, 8192), (101.5, 12288), (101.9, 16384),
-                       (102.0, 20480), (103.5, 20480), (104.0, 500_000)]:
+    for t, settled in [
+        (100.5, 4096),
+        (101.0, 8192),
+        (101.5, 12288),
+        (101.9, 16384),
+        (102.0, 20480),
+        (103.5, 20480),
+        (104.0, 500_000),
+    ]:
         now[0] = t
         progress(settled)
     # due at 101.0 (said), then at 102.0 (said); 103.5 has no new pixels; 104.0 said.
-    assert said == ["searching: 8,192 pixels settled (1 % of the chart)",
-                    "searching: 20,480 pixels settled (2 % of the chart)",
-                    "searching: 500,000 pixels settled (50 % of the chart)"]
+    assert said == [
+        "searching: 8,192 pixels settled (1 % of the chart)",
+        "searching: 20,480 pixels settled (2 % of the chart)",
+        "searching: 500,000 pixels settled (50 % of the chart)",
+    ]

@@ -35,13 +35,15 @@ def test_prepared_queries_equal_fresh_routes():
     pts = _water(cost, 12)
     for method in ("dijkstra", "astar"):
         for a, b in zip(pts[:-1], pts[1:]):
-            expected = _cost_or_none(lambda: seaway.route(cost, a, b, neighbourhood=5,
-                                                          edge_cost="integral", method=method))
+            expected = _cost_or_none(
+                lambda: seaway.route(cost, a, b, neighbourhood=5, edge_cost="integral", method=method)
+            )
             got = _cost_or_none(lambda: chart.route(a, b, method=method))
             assert got == expected  # the same numbers, bit for bit
     field = chart.cost_field(pts[0])
-    np.testing.assert_array_equal(field, seaway.cost_field(cost, pts[0], neighbourhood=5,
-                                                           edge_cost="integral"))
+    np.testing.assert_array_equal(
+        field, seaway.cost_field(cost, pts[0], neighbourhood=5, edge_cost="integral")
+    )
 
 
 def test_state_left_by_one_query_does_not_leak_into_the_next():

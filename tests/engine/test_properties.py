@@ -32,9 +32,12 @@ def problems(draw):
         land[p] = False
         if not np.isfinite(u[p]):
             u[p] = 1.0
-    kw = dict(land=land, neighbourhood=draw(st.sampled_from([3, 5, 7])),
-              directions=draw(st.sampled_from(["full", "unique"])),
-              edge_cost=draw(st.sampled_from(["max", "mean", "integral"])))
+    kw = dict(
+        land=land,
+        neighbourhood=draw(st.sampled_from([3, 5, 7])),
+        directions=draw(st.sampled_from(["full", "unique"])),
+        edge_cost=draw(st.sampled_from(["max", "mean", "integral"])),
+    )
     if geo == "planar":
         kw.update(dx=draw(st.floats(0.25, 4.0)), dy=draw(st.floats(0.25, 4.0)))
         pts = [tuple(p) for p in rc]

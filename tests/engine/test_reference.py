@@ -32,7 +32,10 @@ def test_matches_reference(edge_cost, k, directions, grid):
     np.testing.assert_allclose(field[fin], expect[fin], rtol=RTOL, atol=1e-12)
 
     reach = np.argwhere(fin)
-    ends = [tuple(int(v) for v in reach[i]) for i in rng.choice(len(reach), size=min(4, len(reach)), replace=False)]
+    ends = [
+        tuple(int(v) for v in reach[i])
+        for i in rng.choice(len(reach), size=min(4, len(reach)), replace=False)
+    ]
     far = tuple(int(v) for v in reach[np.argmax(expect[fin])])
     for end in ends + [far]:
         best = expect[end]
@@ -57,12 +60,20 @@ def test_wrap_route_crosses_antimeridian():
     cols = 18
     lat, lon = np.array([0.0, 10.0, 20.0, 30.0, 40.0, 50.0]), -170.0 + 20.0 * np.arange(cols)
     u = np.ones((6, cols))
-    u[:, 2:cols - 3] = 5.0  # the long way round is expensive
+    u[:, 2 : cols - 3] = 5.0  # the long way round is expensive
     for edge_cost in EDGE_COSTS:
         ref = RefGraph(u, lat=lat, lon=lon, k=7, edge_cost=edge_cost)
         expect = ref.costs((2, 1))[2, cols - 2]
-        r = seaway.route(u, (20.0, lon[1]), (20.0, lon[cols - 2]), lat=lat, lon=lon,
-                         neighbourhood=7, edge_cost=edge_cost, method="dijkstra")
+        r = seaway.route(
+            u,
+            (20.0, lon[1]),
+            (20.0, lon[cols - 2]),
+            lat=lat,
+            lon=lon,
+            neighbourhood=7,
+            edge_cost=edge_cost,
+            method="dijkstra",
+        )
         assert r.cost == pytest.approx(expect, rel=RTOL)
         # one step of 3 columns across the seam: exactly the great circle
         assert r.cost == pytest.approx(haversine(20.0, lon[1], 20.0, lon[cols - 2]), rel=1e-12)

@@ -72,10 +72,12 @@ def test_a_move_farther_than_the_limit_is_refused_naming_the_distance():
     (move,) = e.value.moves  # the end moves 6.5 km: allowed; the start 42 km: not
     assert move.name == "start" and move.distance == pytest.approx(s_km, abs=0.01) and e.value.limit == 20
     assert move.to == pytest.approx(s_ref) and move.why == "an impassable pixel (cost NaN or infinite)"
-    assert str(e.value).startswith(f"start 73,60.5 is on an impassable pixel (an impassable pixel (cost "
-                                   f"NaN or infinite)); the nearest point the ship may use is "
-                                   f"{s_ref[0]:.4f},{s_ref[1]:.4f}, {s_km:.1f} km away: farther than "
-                                   "max_km=20")
+    assert str(e.value).startswith(
+        f"start 73,60.5 is on an impassable pixel (an impassable pixel (cost "
+        f"NaN or infinite)); the nearest point the ship may use is "
+        f"{s_ref[0]:.4f},{s_ref[1]:.4f}, {s_km:.1f} km away: farther than "
+        "max_km=20"
+    )
 
 
 def test_one_usable_end_keeps_its_water_and_the_other_joins_it():
@@ -94,7 +96,10 @@ def test_the_route_records_the_requested_ends_in_every_output(tmp_path):
     snapped = seaway.snap_ends(cost, START, END, lat=LAT, lon=LON, land=land, max_km=50)
     r = snapped.record(seaway.route(cost, snapped.start, snapped.end, lat=LAT, lon=LON, land=land))
     assert r.requested == (START, END) and len(r.assumptions) == 2
-    assert r.assumptions[0].startswith("start 73,60.5 is on an impassable pixel") and "moved 42." in r.assumptions[0]
+    assert (
+        r.assumptions[0].startswith("start 73,60.5 is on an impassable pixel")
+        and "moved 42." in r.assumptions[0]
+    )
     s = r.summary()
     assert s["requested_start"] == START and s["start"] == pytest.approx(snapped.start)
     props = export.geojson(r)["properties"]

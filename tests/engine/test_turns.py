@@ -44,8 +44,7 @@ def test_turn_penalty_matches_expanded_reference(k, grid):
     penalty = 0.02 if per_degree else TABLE
     angles, costs = ([0, 180], [0, 180 * 0.02]) if per_degree else (list(TABLE), list(TABLE.values()))
     ref = RefGraph(u, land=land, k=k, directions=directions, edge_cost=edge_cost, **geo)
-    chart = seaway.prepare(u, land=land, neighbourhood=k, directions=directions,
-                           edge_cost=edge_cost, **geo)
+    chart = seaway.prepare(u, land=land, neighbourhood=k, directions=directions, edge_cost=edge_cost, **geo)
     rng = np.random.default_rng(seed)
     water = np.argwhere(ref.ok)
     checked = 0
@@ -60,7 +59,9 @@ def test_turn_penalty_matches_expanded_reference(k, grid):
             r = chart.route(point(geo, s), point(geo, e), method=method, turn_penalty=penalty)
             assert r.cost == pytest.approx(want, rel=1e-9, abs=1e-12)
             assert tuple(r.pixels[0]) == s and tuple(r.pixels[-1]) == e
-            assert path_cost_with_turns(ref, r.pixels, angles, costs, geo) == pytest.approx(want, rel=1e-9, abs=1e-12)
+            assert path_cost_with_turns(ref, r.pixels, angles, costs, geo) == pytest.approx(
+                want, rel=1e-9, abs=1e-12
+            )
             assert r.step_costs.sum() == pytest.approx(r.cost, rel=1e-12)
             checked += 1
     assert checked > 0
@@ -116,8 +117,17 @@ def test_via_point_carries_the_incoming_step():
     assert back.pixels[:, 1].tolist() == [0, 1, 2, 3, 4, 5, 6, 5, 4, 3, 2]
 
 
-@pytest.mark.parametrize("bad,err", [(-1, ValueError), (float("nan"), ValueError), (True, TypeError),
-                                     ({200: 1}, ValueError), ({0: -1}, ValueError), ("x", TypeError)])
+@pytest.mark.parametrize(
+    "bad,err",
+    [
+        (-1, ValueError),
+        (float("nan"), ValueError),
+        (True, TypeError),
+        ({200: 1}, ValueError),
+        ({0: -1}, ValueError),
+        ("x", TypeError),
+    ],
+)
 def test_bad_turn_penalty(bad, err):
     with pytest.raises(err, match="turn_penalty"):
         seaway.route(np.ones((4, 4)), (0, 0), (3, 3), turn_penalty=bad)
@@ -179,7 +189,9 @@ def test_dominated_states_dropped_exactly_for_any_penalty_table(seed):
         if not np.isfinite(want):
             continue
         for method in ("dijkstra", "astar"):
-            r = chart.route(point(geo, s), point(geo, e), method=method, turn_penalty=dict(zip(angles, costs)))
+            r = chart.route(
+                point(geo, s), point(geo, e), method=method, turn_penalty=dict(zip(angles, costs))
+            )
             assert r.cost == pytest.approx(want, rel=1e-9, abs=1e-12), (angles, costs, method)
             checked += 1
     assert checked >= 4

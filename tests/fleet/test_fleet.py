@@ -56,16 +56,25 @@ def test_threads_equal_serial_and_single_routes(sea):
 
 def test_bad_items_are_reported_not_fatal():
     cost = walled_chart()
-    voyages = [((0, 0), (39, 59)),   # ok
-               ((12, 42), (0, 5)),   # start on the wall
-               ((0, 0), (15, 45)),   # end inside the pond: unreachable
-               (("x", 3), (1, 1)),   # malformed point
-               ((0, 0),),            # not a (start, end) pair
-               ((0, 0), (40, 0)),    # end outside the chart
-               ((5, 5), (2, 2))]     # ok, after the failures
+    voyages = [
+        ((0, 0), (39, 59)),  # ok
+        ((12, 42), (0, 5)),  # start on the wall
+        ((0, 0), (15, 45)),  # end inside the pond: unreachable
+        (("x", 3), (1, 1)),  # malformed point
+        ((0, 0),),  # not a (start, end) pair
+        ((0, 0), (40, 0)),  # end outside the chart
+        ((5, 5), (2, 2)),
+    ]  # ok, after the failures
     table = seaway.route_many(cost, voyages, threads=2)
-    assert table.status.tolist() == ["ok", "bad input", "no route", "bad input", "bad input",
-                                     "bad input", "ok"]
+    assert table.status.tolist() == [
+        "ok",
+        "bad input",
+        "no route",
+        "bad input",
+        "bad input",
+        "bad input",
+        "ok",
+    ]
     assert "impassable" in table.error[1] and "nearest passable pixel" in table.error[1]
     assert "no route" in table.error[2]
     assert "pair of numbers" in table.error[3] and "(start, end) pair" in table.error[4]
@@ -81,14 +90,14 @@ def test_charts_times_vessels_keep_routes(sea):
     charts = {"winter": cost, "summer": np.where(np.isfinite(cost), 1 + (cost - 1) / 29, np.inf)}
     vessels = {"Arc7": lambda c: c, "Arc4": lambda c: c * 2.5}
     voyages = [(start, end), (end, (start[0] - 3, start[1]))]
-    table = seaway.route_many(charts, voyages, vessels=vessels, threads=2, keep_routes=True,
-                              method="dijkstra")
+    table = seaway.route_many(
+        charts, voyages, vessels=vessels, threads=2, keep_routes=True, method="dijkstra"
+    )
     assert len(table) == 8
     expect = [(c, v, y) for c in charts for v in vessels for y in range(2)]
     assert list(zip(table.chart, table.vessel, table.voyage)) == expect
     for row in table.itertuples():
-        r = seaway.route(vessels[row.vessel](charts[row.chart]), *voyages[row.voyage],
-                         method="dijkstra")
+        r = seaway.route(vessels[row.vessel](charts[row.chart]), *voyages[row.voyage], method="dijkstra")
         assert row.status == "ok" and row.cost == r.cost
         np.testing.assert_array_equal(row.route.pixels, r.pixels)
     w = table[table.chart == "winter"]
@@ -115,8 +124,9 @@ def test_failing_vessel_and_bad_options(sea):
 
 def test_dataframe_voyages_and_progress_bar(sea, capsys):
     cost, start, end = sea
-    plan = pd.DataFrame({"start": [start, end, start], "end": [end, start, start]},
-                        index=["out", "back", "stay"])
+    plan = pd.DataFrame(
+        {"start": [start, end, start], "end": [end, start, start]}, index=["out", "back", "stay"]
+    )
     table = seaway.route_many(cost, plan, threads=2, progress=True)
     assert table.voyage.tolist() == ["out", "back", "stay"] and table.cost[2] == 0.0
     assert table.cost[0] == seaway.route(cost, start, end).cost
@@ -128,8 +138,9 @@ def test_dataframe_voyages_and_progress_bar(sea, capsys):
 @pytest.fixture(scope="module")
 def client():
     distributed = pytest.importorskip("dask.distributed")
-    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
-                                       dashboard_address=":0")
+    cluster = distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=False, dashboard_address=":0"
+    )
     c = distributed.Client(cluster)
     yield c
     c.close()
@@ -143,8 +154,10 @@ def season(cost, days=3):
     lat, lon = np.linspace(76, 72, rows), np.linspace(60, 75, cols)
     ice = np.stack([np.where(np.isfinite(cost), cost * (1 + 0.2 * d), 0.0) for d in range(days)])
     time = np.arange(days).astype("timedelta64[D]") + np.datetime64("2025-01-01")
-    ds = xr.Dataset({"ice": (("time", "lat", "lon"), ice), "land": (("lat", "lon"), ~np.isfinite(cost))},
-                    coords=dict(time=time, lat=lat, lon=lon))
+    ds = xr.Dataset(
+        {"ice": (("time", "lat", "lon"), ice), "land": (("lat", "lon"), ~np.isfinite(cost))},
+        coords=dict(time=time, lat=lat, lon=lon),
+    )
     return ds.chunk({"time": 1}), lat, lon
 
 
@@ -155,9 +168,11 @@ def test_dask_season_equals_serial(sea, client):
     assert ds.ice.chunks[0] == (1, 1, 1)
     dry = np.argwhere(~np.isfinite(cost))[0]
     pts = [((lat[s[0]], lon[s[1]]), (lat[e[0]], lon[e[1]])) for s, e in water_pairs(cost, 3)]
-    voyages = {"main": ((lat[start[0]], lon[start[1]]), (lat[end[0]], lon[end[1]])),
-               **{f"p{i}": p for i, p in enumerate(pts)},
-               "on land": ((lat[dry[0]], lon[dry[1]]), pts[0][1])}  # ice 0 there: land var
+    voyages = {
+        "main": ((lat[start[0]], lon[start[1]]), (lat[end[0]], lon[end[1]])),
+        **{f"p{i}": p for i, p in enumerate(pts)},
+        "on land": ((lat[dry[0]], lon[dry[1]]), pts[0][1]),
+    }  # ice 0 there: land var
     vessels = {"Arc7": lambda d: d.ice, "Arc5": lambda d: d.ice * 1.7 + 0.5}
     serial = seaway.route_many(ds, voyages, vessels=vessels, threads=1)
     dist = seaway.route_many(ds, voyages, vessels=vessels, cluster=client)
@@ -180,8 +195,7 @@ def test_dask_by_scheduler_address(sea, client, capsys):
     cost, start, end = sea
     voyages = water_pairs(cost, 4, seed=5) + [(start, end)]
     serial = seaway.route_many({"a": cost, "b": cost + 1}, voyages, threads=1)
-    dist = seaway.route_many({"a": cost, "b": cost + 1}, voyages,
-                             cluster=client.scheduler.address)
+    dist = seaway.route_many({"a": cost, "b": cost + 1}, voyages, cluster=client.scheduler.address)
     assert dist.cost.tolist() == serial.cost.tolist() and (dist.status == "ok").all()
     assert list(dist.chart) == ["a"] * 5 + ["b"] * 5
     assert "routes 10/10" in capsys.readouterr().err  # the progress bar is on with a cluster

@@ -26,6 +26,7 @@ def test_a_route_through_open_water_of_a_real_chart_reports_none(shared_data, tm
     pytest.importorskip("pyogrio")
     from seaway.ice.grids import latlon_grid
     from seaway.ice.sigrid import read_sigrid3
+
     ds = read_sigrid3(str(shared_data.joinpath(*DMI_SUMMER)), latlon_grid(57.7, 62.6, -52.7, -37.3, 0.1))
     r = seaway.route(chart_impact(ds, "Arc7"), (62.45, -51.15), (57.75, -39.75), land=ds.land)
     r = r.with_environment(ds)
@@ -56,9 +57,16 @@ def _band_chart():
     land = (LAT > 72) & (LAT < 74) & (LON > 72) & (LON < 75)
     dims = ("lat", "lon")
     ct = np.where(band, 10.0, 0.0)
-    return xr.Dataset({"CT": (dims, ct), "CA": (dims, ct), "SA": (dims, np.where(band, 86.0, np.nan)),
-                       "FA": (dims, np.where(band, 4.0, np.nan)), "land": (dims, land)},
-                      coords={"lat": lat, "lon": lon})
+    return xr.Dataset(
+        {
+            "CT": (dims, ct),
+            "CA": (dims, ct),
+            "SA": (dims, np.where(band, 86.0, np.nan)),
+            "FA": (dims, np.where(band, 4.0, np.nan)),
+            "land": (dims, land),
+        },
+        coords={"lat": lat, "lon": lon},
+    )
 
 
 def _dense_km(route, inside, n=2000):

@@ -46,11 +46,14 @@ def aari(tmp_path_factory):
     polygons FA 08 SA 99 CT 92, as AARI codes it), a strip of thin first-year pack ice (SA 87,
     FA 04) north of it, open water at both ends."""
     fast = {"POLY_TYPE": "I", "CT": "92", "SA": "99", "FA": "08"}
-    rows = [(shapely.box(60, 70, 63, 76), {"POLY_TYPE": "W", "CT": "00"}),
-            (shapely.box(77, 70, 80, 76), {"POLY_TYPE": "W", "CT": "00"}),
-            (shapely.box(63, 70, 68, 75), fast), (shapely.box(68, 70, 72, 75), fast),
-            (shapely.box(72, 70, 77, 75), fast),
-            (shapely.box(63, 75, 77, 76), {"POLY_TYPE": "I", "CT": "92", "SA": "87", "FA": "04"})]
+    rows = [
+        (shapely.box(60, 70, 63, 76), {"POLY_TYPE": "W", "CT": "00"}),
+        (shapely.box(77, 70, 80, 76), {"POLY_TYPE": "W", "CT": "00"}),
+        (shapely.box(63, 70, 68, 75), fast),
+        (shapely.box(68, 70, 72, 75), fast),
+        (shapely.box(72, 70, 77, 75), fast),
+        (shapely.box(63, 75, 77, 76), {"POLY_TYPE": "I", "CT": "92", "SA": "87", "FA": "04"}),
+    ]
     path = _write(tmp_path_factory.mktemp("aari") / "aari_winter.shp", rows)
     return str(path), read_sigrid3(str(path), latlon_grid(70, 76, 60, 80, 0.1))
 
@@ -100,6 +103,7 @@ def test_arc7_crosses_fast_ice_directly_under_the_assumption_and_says_so(aari):
 @pytest.mark.cli
 def test_cli_fast_ice_switch_prints_the_assumption(aari, capsys):
     from seaway.cli import main
+
     path, _ = aari
     ends = ["--from", "73,61", "--to", "73,79", "--grid", "70,76,60,80,0.1", "--vessel", "Arc7"]
     assert main(["route", path, *ends, "--no-smooth"]) == 0

@@ -13,25 +13,67 @@ from seaway.ice.impact import ice_impact
 INF = np.inf
 # Paper 000, Tables 2 and 3, transcribed by the paper's Russian ice-type names; the codes each
 # name covers are the WMO stages (thin = 87 and its stages 88, 89).
-NAMES = {"Открытая вода": [55], "Начальные виды": [81], "Нилас": [82], "Серый": [84],
-         "Молодой": [83], "Серо-белый": [85], "Тонкий": [87, 88, 89], "Однолетний": [86],
-         "Средний": [91], "Толстый": [93]}
-TABLE_2 = {"Открытая вода": 2, "Начальные виды": 3, "Нилас": 5, "Серый": 8, "Молодой": 10,
-           "Серо-белый": 13, "Тонкий": 15, "Однолетний": 20, "Средний": 25, "Толстый": 30}
-TABLE_3 = {"Открытая вода": 1, "Начальные виды": 3, "Нилас": 5, "Серый": 10, "Молодой": 15,
-           "Серо-белый": 25, "Тонкий": 30, "Однолетний": INF, "Средний": INF, "Толстый": INF}
+NAMES = {
+    "Открытая вода": [55],
+    "Начальные виды": [81],
+    "Нилас": [82],
+    "Серый": [84],
+    "Молодой": [83],
+    "Серо-белый": [85],
+    "Тонкий": [87, 88, 89],
+    "Однолетний": [86],
+    "Средний": [91],
+    "Толстый": [93],
+}
+TABLE_2 = {
+    "Открытая вода": 2,
+    "Начальные виды": 3,
+    "Нилас": 5,
+    "Серый": 8,
+    "Молодой": 10,
+    "Серо-белый": 13,
+    "Тонкий": 15,
+    "Однолетний": 20,
+    "Средний": 25,
+    "Толстый": 30,
+}
+TABLE_3 = {
+    "Открытая вода": 1,
+    "Начальные виды": 3,
+    "Нилас": 5,
+    "Серый": 10,
+    "Молодой": 15,
+    "Серо-белый": 25,
+    "Тонкий": 30,
+    "Однолетний": INF,
+    "Средний": INF,
+    "Толстый": INF,
+}
 # Paper 000, Table 1: class -> thickness (m) it may enter.
-TABLE_1 = {"Ice1": 0.4, "Ice2": 0.5, "Ice3": 0.7, "Arc4": 0.8, "Arc5": 1.0, "Arc6": 1.3,
-           "Arc7": 1.4, "Arc8": 2.1, "Arc9": 3.5, "Icebreaker6": 1.5, "Icebreaker7": 2.0,
-           "Icebreaker8": 3.0, "Icebreaker9": 4.0}
+TABLE_1 = {
+    "Ice1": 0.4,
+    "Ice2": 0.5,
+    "Ice3": 0.7,
+    "Arc4": 0.8,
+    "Arc5": 1.0,
+    "Arc6": 1.3,
+    "Arc7": 1.4,
+    "Arc8": 2.1,
+    "Arc9": 3.5,
+    "Icebreaker6": 1.5,
+    "Icebreaker7": 2.0,
+    "Icebreaker8": 3.0,
+    "Icebreaker9": 4.0,
+}
 
 
 def _by_code(table):
     return {code: float(table[name]) for name, codes in NAMES.items() for code in codes}
 
 
-@pytest.mark.parametrize("ice_class, table", [("Arc7", TABLE_2), ("Arc8", TABLE_2),
-                                              ("Arc9", TABLE_2), ("Arc5", TABLE_3)])
+@pytest.mark.parametrize(
+    "ice_class, table", [("Arc7", TABLE_2), ("Arc8", TABLE_2), ("Arc9", TABLE_2), ("Arc5", TABLE_3)]
+)
 def test_paper_000_tables_exactly(ice_class, table):
     expected = _by_code(table)
     assert impact.ICE_IMPACT[ice_class] == expected
@@ -51,15 +93,34 @@ def test_classes_table_1_and_mapping():
     assert classes.get_class("Arc4").polaris_class == "IA Super" and not classes.get_class("Arc4").assumed
     assert classes.get_class("Ice3").polaris_class == "IA"
     assert classes.get_class("IA Super").rs_class == "Arc4" and classes.get_class("IA").rs_class == "Ice3"
-    assert [classes.get_class(f"Arc{n}").polaris_class for n in (5, 6, 7, 8, 9)] == ["PC6", "PC5", "PC4", "PC3", "PC2"]
+    assert [classes.get_class(f"Arc{n}").polaris_class for n in (5, 6, 7, 8, 9)] == [
+        "PC6",
+        "PC5",
+        "PC4",
+        "PC3",
+        "PC2",
+    ]
     assert "polaris_class" in classes.get_class("Arc7").assumed
     assert [classes.get_class(f"PC{n}").rs_class for n in range(1, 8)] == [
-        "Arc9", "Arc8", "Arc7", "Arc6", "Arc5", "Arc4", "Ice3"]
+        "Arc9",
+        "Arc8",
+        "Arc7",
+        "Arc6",
+        "Arc5",
+        "Arc4",
+        "Ice3",
+    ]
     assert classes.get_class("PC3").h_pass == 1.4 and "h_pass" in classes.get_class("PC3").assumed
     assert classes.get_class("IB").h_pass == 0.6  # FSICR design thickness
     # Spellings: case, spaces, the paper's 'Icebraker', 1A for IA.
-    for alias, name in [("arc 7", "Arc7"), ("ia super", "IA Super"), ("1A", "IA"), ("pc-3", "PC3"),
-                        ("Icebraker8", "Icebreaker8"), ("not ice strengthened", "none")]:
+    for alias, name in [
+        ("arc 7", "Arc7"),
+        ("ia super", "IA Super"),
+        ("1A", "IA"),
+        ("pc-3", "PC3"),
+        ("Icebraker8", "Icebreaker8"),
+        ("not ice strengthened", "none"),
+    ]:
         assert classes.get_class(alias).name == name
     with pytest.raises(ValueError, match=r"ice_class must be one of \['none', 'Ice1'"):
         classes.get_class("Arc10")
@@ -113,12 +174,15 @@ def test_concentration_limit_of_table_1():
 def test_chart_impact_on_a_sigrid_style_dataset():
     dims = ("lat", "lon")
     nan = np.nan
-    ds = xr.Dataset({
-        "CT": (dims, [[0.0, 9.0, 9.0, nan, nan]]),
-        "SA": (dims, [[nan, 91.0, nan, nan, nan]]),
-        "land": (dims, [[False, False, False, False, True]]),
-        "off_chart": (dims, [[False, False, False, True, False]]),
-    }, coords={"lat": [70.0], "lon": [60.0, 60.1, 60.2, 60.3, 60.4]})
+    ds = xr.Dataset(
+        {
+            "CT": (dims, [[0.0, 9.0, 9.0, nan, nan]]),
+            "SA": (dims, [[nan, 91.0, nan, nan, nan]]),
+            "land": (dims, [[False, False, False, False, True]]),
+            "off_chart": (dims, [[False, False, False, True, False]]),
+        },
+        coords={"lat": [70.0], "lon": [60.0, 60.1, 60.2, 60.3, 60.4]},
+    )
     assert impact.governing_stage(ds).values.tolist()[0][:3] == [55, 91, 99]
     u = impact.chart_impact(ds, "Arc7")
     assert u.values.tolist() == [[2, 25, INF, INF, INF]]  # ice of no stage: unknown -> forbidden

@@ -35,21 +35,24 @@ def test_riv_table_as_printed():
     assert polaris.riv_row("Arc7") == polaris.riv_row("PC4")  # assumed equivalence
 
 
-@pytest.mark.parametrize("ice_class, ct, pairs, expected", [
-    ("PC5", 9, [(5, 93), (4, 91)], 1 * 3 + 5 * 0 + 4 * 1),  # thick FY 0, medium FY 1
-    ("PC7", 10, [(10, 93)], -20),
-    ("PC7", 6, [(6, 93)], 4 * 3 - 12),  # exactly 0: normal
-    ("PC7", 7, [(7, 93)], 3 * 3 - 14),
-    ("IA", 10, [(5, 85), (5, 88)], 5 * 2 + 5 * 1),  # grey-white 2, TFY 1st stage 1
-    ("IA", 8, [(8, 91)], 2 * 3 - 16),
-    ("not ice strengthened", 2, [(2, 81)], 8 * 3 + 2 * 1),  # new ice 1
-    ("PC1", 10, [(10, 97)], 10),  # multi-year -> heavy MY, RIV 1
-    ("PC3", 9, [(3, 96), (6, 93)], 3 + 3 * 1 + 6 * 2),  # second-year 1, thick FY 2
-    ("PC4", 9, [(9, 99)], 3 - 18),  # unknown stage -> HMY (-2): conservative
-    ("PC6", 9, [(3, 93)], 3 - 3 - 6),  # 6/10 unaccounted for -> the thickest stage, SA
-    ("Arc7", 10, [(10, 93)], 10),  # Arc7 -> PC4 (assumed): ThFY 1
-    ("IA Super", 10, [(4, 83), (6, 87)], 4 * 2 + 6 * 1),  # young -> GW, thin FY -> TFY2
-])
+@pytest.mark.parametrize(
+    "ice_class, ct, pairs, expected",
+    [
+        ("PC5", 9, [(5, 93), (4, 91)], 1 * 3 + 5 * 0 + 4 * 1),  # thick FY 0, medium FY 1
+        ("PC7", 10, [(10, 93)], -20),
+        ("PC7", 6, [(6, 93)], 4 * 3 - 12),  # exactly 0: normal
+        ("PC7", 7, [(7, 93)], 3 * 3 - 14),
+        ("IA", 10, [(5, 85), (5, 88)], 5 * 2 + 5 * 1),  # grey-white 2, TFY 1st stage 1
+        ("IA", 8, [(8, 91)], 2 * 3 - 16),
+        ("not ice strengthened", 2, [(2, 81)], 8 * 3 + 2 * 1),  # new ice 1
+        ("PC1", 10, [(10, 97)], 10),  # multi-year -> heavy MY, RIV 1
+        ("PC3", 9, [(3, 96), (6, 93)], 3 + 3 * 1 + 6 * 2),  # second-year 1, thick FY 2
+        ("PC4", 9, [(9, 99)], 3 - 18),  # unknown stage -> HMY (-2): conservative
+        ("PC6", 9, [(3, 93)], 3 - 3 - 6),  # 6/10 unaccounted for -> the thickest stage, SA
+        ("Arc7", 10, [(10, 93)], 10),  # Arc7 -> PC4 (assumed): ThFY 1
+        ("IA Super", 10, [(4, 83), (6, 87)], 4 * 2 + 6 * 1),  # young -> GW, thin FY -> TFY2
+    ],
+)
 def test_rio_on_egg_codes(ice_class, ct, pairs, expected):
     assert rio_egg(ice_class, ct, *pairs) == expected
 
@@ -66,7 +69,13 @@ def test_operation_levels_and_speed_limits():
     assert polaris.operation_level(r, "IA Super").tolist() == [0, 0, 2, 2, 2]  # below PC7
     assert polaris.operation_level(r, "Arc5").tolist() == [0, 0, 1, 1, 2]  # Arc5 -> PC6
     assert [polaris.speed_limit_kn(c) for c in ("PC1", "PC2", "PC3", "PC5", "PC6", "PC7")] == [
-        11, 8, 5, 5, 3, 3]
+        11,
+        8,
+        5,
+        5,
+        3,
+        3,
+    ]
     assert polaris.speed_limit_kn("IA") == np.inf
 
 
@@ -77,9 +86,15 @@ def _tongue_chart():
     sa = np.full(shape, np.nan)
     ct[0:34, 29:31], sa[0:34, 29:31] = 10, 93
     dims = ("y", "x")
-    return xr.Dataset({"CT": (dims, ct), "CA": (dims, np.where(ct > 0, ct, np.nan)),
-                       "SA": (dims, sa), "land": (dims, np.zeros(shape, bool))},
-                      coords={"y": np.arange(shape[0])[::-1] * 5.0, "x": np.arange(shape[1]) * 5.0})
+    return xr.Dataset(
+        {
+            "CT": (dims, ct),
+            "CA": (dims, np.where(ct > 0, ct, np.nan)),
+            "SA": (dims, sa),
+            "land": (dims, np.zeros(shape, bool)),
+        },
+        coords={"y": np.arange(shape[0])[::-1] * 5.0, "x": np.arange(shape[1]) * 5.0},
+    )
 
 
 def test_polaris_cost_raster_and_routes():
@@ -101,7 +116,9 @@ def test_polaris_cost_raster_and_routes():
     s4 = summary.summarize(r4, ds, time_cost=pc4.cost, polaris=pc4)
     s7 = summary.summarize(r7, ds, time_cost=pc7.cost, polaris=pc7)
     assert s4["rio_min"] == 10 and s4["rio_max"] == 30 and not s4["elevated_risk"]
-    assert s4["by_stage"]["thick first-year ice"]["distance"] == pytest.approx(10.0)  # column 30: halves of two 10-km steps
+    assert s4["by_stage"]["thick first-year ice"]["distance"] == pytest.approx(
+        10.0
+    )  # column 30: halves of two 10-km steps
     assert s4["by_concentration"]["very close 9-10/10"]["distance"] == pytest.approx(10.0)
     assert s4["length"] == pytest.approx(245) and s4["time"] == pytest.approx(r4.cost)
     assert s7["rio_min"] == 30 and not s7["special_consideration"]

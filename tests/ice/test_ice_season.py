@@ -27,10 +27,14 @@ def planar_season(stage, ct=None, hours=None, dx=10.0):
     hours = np.arange(k) * 24.0 if hours is None else np.asarray(hours, float)
     time = DAY0 + (hours * 3600).astype("timedelta64[s]")
     sa = np.where(stage == 55, np.nan, stage).astype(float)
-    return xr.Dataset({"CT": (("time", "y", "x"), ct.astype(float)),
-                       "SA": (("time", "y", "x"), sa),
-                       "land": (("time", "y", "x"), np.zeros(stage.shape, bool))},
-                      coords={"time": time, "y": dx * np.arange(rows)[::-1], "x": dx * np.arange(cols)})
+    return xr.Dataset(
+        {
+            "CT": (("time", "y", "x"), ct.astype(float)),
+            "SA": (("time", "y", "x"), sa),
+            "land": (("time", "y", "x"), np.zeros(stage.shape, bool)),
+        },
+        coords={"time": time, "y": dx * np.arange(rows)[::-1], "x": dx * np.arange(cols)},
+    )
 
 
 def table_hours(stage):
@@ -45,9 +49,16 @@ def planar_length(dx):
 
 
 # Seeds 1, 2 and 4 have optima that wait (3.2, 0.45 and 1.7 h); 3 and 5 do not.
-@pytest.mark.parametrize("seed,k,shape,waits", [(1, 3, (3, 4), True), (2, 3, (3, 4), True),
-                                                (3, 5, (3, 3), False), (4, 5, (3, 3), True),
-                                                (5, 3, (4, 3), False)])
+@pytest.mark.parametrize(
+    "seed,k,shape,waits",
+    [
+        (1, 3, (3, 4), True),
+        (2, 3, (3, 4), True),
+        (3, 5, (3, 3), False),
+        (4, 5, (3, 3), True),
+        (5, 3, (4, 3), False),
+    ],
+)
 def test_season_route_equals_brute_force_over_all_paths(seed, k, shape, waits):
     rng = np.random.default_rng(seed)
     frames = 4
@@ -60,16 +71,18 @@ def test_season_route_equals_brute_force_over_all_paths(seed, k, shape, waits):
     best = season_best_arrival(table_hours(stage), hours, start, end, k, planar_length(10.0))
     for method in ("dijkstra", "astar"):
         try:
-            r = route_season(ds, start, end, speed=TABLE, concentration_limit=False,
-                             neighbourhood=k, method=method)
+            r = route_season(
+                ds, start, end, speed=TABLE, concentration_limit=False, neighbourhood=k, method=method
+            )
             got = r.cost
         except seaway.NoRouteError:
             got = math.inf
         assert got == pytest.approx(best, rel=1e-9)
     if math.isfinite(best):  # the route's own path, simulated step by step, arrives then too
         path = [tuple(p) for p in r.pixels]
-        assert season_path_arrival(table_hours(stage), hours, path, planar_length(10.0)) == \
-            pytest.approx(r.cost, rel=1e-9)
+        assert season_path_arrival(table_hours(stage), hours, path, planar_length(10.0)) == pytest.approx(
+            r.cost, rel=1e-9
+        )
         assert r.stats.voyage.hours_under_way + r.stats.voyage.hours_waiting == pytest.approx(r.cost)
         assert (r.stats.voyage.hours_waiting > 0.1) == waits
 
@@ -90,8 +103,15 @@ def test_season_brute_force_on_lat_lon_with_interior_pixels(seed):
     best = season_best_arrival(table_hours(stage), hours, start, end, 3, length)
     for method in ("dijkstra", "astar"):
         try:
-            got = route_season(ds, (lat[3], lon[0]), (lat[0], lon[4]), speed=TABLE,
-                               concentration_limit=False, neighbourhood=3, method=method).cost
+            got = route_season(
+                ds,
+                (lat[3], lon[0]),
+                (lat[0], lon[4]),
+                speed=TABLE,
+                concentration_limit=False,
+                neighbourhood=3,
+                method=method,
+            ).cost
         except seaway.NoRouteError:
             got = math.inf
         assert got == pytest.approx(best, rel=1e-9)
@@ -108,8 +128,7 @@ def test_season_across_the_antimeridian_equals_the_rolled_season():
     ds = ds.assign_coords(lat=lat, lon=lon)
     rolled = ds.copy(data={k: np.roll(v.values, 18, axis=-1) for k, v in ds.data_vars.items()})
     a = route_season(ds, (lat[3], lon[34]), (lat[3], lon[2]), speed=TABLE, concentration_limit=False)
-    b = route_season(rolled, (lat[3], lon[16]), (lat[3], lon[20]), speed=TABLE,
-                     concentration_limit=False)
+    b = route_season(rolled, (lat[3], lon[16]), (lat[3], lon[20]), speed=TABLE, concentration_limit=False)
     assert a.cost == pytest.approx(b.cost, rel=1e-12)
     assert np.array_equal((a.pixels[:, 1] + 18) % 36, b.pixels[:, 1])
     assert a.length < 1000  # across the seam (4 columns of about 106 km), not round the world
@@ -127,7 +146,7 @@ def test_waiting_for_the_ice_to_clear_beats_the_detour():
     # (hours per km as the engine reads them, in float32).
     h = float(np.float32(1 / (12 * KN)))
     assert r.cost == pytest.approx(6.0 + 280 * h, rel=1e-12)
-    (pixel, coords, since, waited), = r.stats.voyage.waits
+    ((pixel, coords, since, waited),) = r.stats.voyage.waits
     assert pixel == (35, 1) and coords == (40.0, 10.0)
     assert waited == pytest.approx(6.0 - 10 * h, rel=1e-12)
     assert r.stats.voyage.hours_waiting == pytest.approx(waited)
@@ -136,10 +155,10 @@ def test_waiting_for_the_ice_to_clear_beats_the_detour():
     # through the first chart's hours per km (line integral, the engine's static model).
     shut = stage.copy()
     shut[:, 2:, 2:4] = 93
-    detour = route_season(planar_season(shut, hours=[0.0, 6.0, 30.0]), (35, 0), (35, 29),
-                          speed=TABLE, concentration_limit=False)
-    static = seaway.route(table_hours(shut[0]), (35, 0), (35, 29), dx=10.0, dy=10.0,
-                          edge_cost="integral")
+    detour = route_season(
+        planar_season(shut, hours=[0.0, 6.0, 30.0]), (35, 0), (35, 29), speed=TABLE, concentration_limit=False
+    )
+    static = seaway.route(table_hours(shut[0]), (35, 0), (35, 29), dx=10.0, dy=10.0, edge_cost="integral")
     assert detour.stats.voyage.hours_waiting == 0 and detour.pixels[:, 0].min() <= 1
     assert detour.cost == pytest.approx(static.cost, rel=1e-12)
     # The detour is at least the continuous shortest path round the band's corners (pixel
@@ -240,8 +259,11 @@ def test_bad_seasons_are_refused_with_the_fix():
     # Departures outside the season: before the first chart, after the last chart's validity
     # (the series' spacing, 24 h here).
     for day in ("2026-06-30", "2026-07-03T01"):
-        with pytest.raises(ValueError, match=r"outside the season \(2026-07-01T00:00:00 to "
-                           r"2026-07-03T00:00:00.*depart within the season or add charts"):
+        with pytest.raises(
+            ValueError,
+            match=r"outside the season \(2026-07-01T00:00:00 to "
+            r"2026-07-03T00:00:00.*depart within the season or add charts",
+        ):
             route_season(ds, (0, 0), (4, 5), departure=day)
     with pytest.raises(ValueError, match="sortby"):
         route_season(ds.isel(time=[1, 0]), (0, 0), (4, 5))
@@ -253,9 +275,12 @@ def test_bad_seasons_are_refused_with_the_fix():
         route_season(ds, (0, 0), (4, 5), speed="fast")
     with pytest.raises(ValueError, match="v0_kn"):
         route_season(ds, (0, 0), (4, 5), v0_kn=0)
-    with pytest.raises(ValueError, match=r"end pixel \(4, 5\) is in ice class Arc4 may not enter in any "
-                       r"chart from 2026-07-01T00:00:00 on \(last chart: CT 9, SA 91\); the nearest "
-                       r"pixel it may use is pixel \(3, 5\)"):
+    with pytest.raises(
+        ValueError,
+        match=r"end pixel \(4, 5\) is in ice class Arc4 may not enter in any "
+        r"chart from 2026-07-01T00:00:00 on \(last chart: CT 9, SA 91\); the nearest "
+        r"pixel it may use is pixel \(3, 5\)",
+    ):
         thick = stage.copy()
         thick[:, 4, 5] = 91
         route_season(planar_season(thick, hours=[0, 24]), (0, 0), (4, 5), ice_class="Arc4")
@@ -263,9 +288,12 @@ def test_bad_seasons_are_refused_with_the_fix():
     closed[:, :, 3] = 93
     # A column of thick first-year ice at 9/10 (over Arc7's 8/10): explained by the ice
     # (seaway.ice.seasonwhy), not the engine's bare "no route ... even waiting".
-    with pytest.raises(seaway.NoRouteError, match=r"ice closes the way in the season's most open chart "
-                       r"for Arc7, .*: thick first-year ice \(SA 93\) at 9/10 \(Arc9 and stronger may "
-                       r"enter\): 14 km; the weakest class that gets through the season is Arc9") as info:
+    with pytest.raises(
+        seaway.NoRouteError,
+        match=r"ice closes the way in the season's most open chart "
+        r"for Arc7, .*: thick first-year ice \(SA 93\) at 9/10 \(Arc9 and stronger may "
+        r"enter\): 14 km; the weakest class that gets through the season is Arc9",
+    ) as info:
         route_season(planar_season(closed, hours=[0, 24]), (0, 0), (4, 5))
     assert info.value.cause == "ice" and info.value.weakest_class == "Arc9"
     with pytest.warns(UserWarning, match="beyond the last chart"):
@@ -282,25 +310,40 @@ def test_sigrid3_files_with_their_dates(tmp_path):
 
     # A channel at 70-72 N between two coasts, closed by 9-10/10 medium first-year ice at
     # 13-16 E on the charts of 1 and 2 July; the chart of 3 July shows it open.
-    boxes = [shapely.box(5, 69, 25, 70), shapely.box(5, 72, 25, 73), shapely.box(5, 70, 13, 72),
-             shapely.box(16, 70, 25, 72), shapely.box(13, 70, 16, 72)]
+    boxes = [
+        shapely.box(5, 69, 25, 70),
+        shapely.box(5, 72, 25, 73),
+        shapely.box(5, 70, 13, 72),
+        shapely.box(16, 70, 25, 72),
+        shapely.box(13, 70, 16, 72),
+    ]
     fields = ["CT", "SA", "POLY_TYPE"]
     charts = {}
     for day, ice in (("2026-07-01", True), ("2026-07-02", True), ("2026-07-03", False)):
         path = tmp_path / f"aari_{day}.shp"
         last = ("92", "91", "I") if ice else ("00", None, "W")
-        data = [np.array(v, dtype=object) for v in zip(("-9", None, "L"), ("-9", None, "L"),
-                                                        ("00", None, "W"), ("00", None, "W"), last)]
-        pyogrio.raw.write(path, shapely.to_wkb(np.array(boxes)), data, fields, crs="EPSG:4326",
-                          geometry_type="Polygon", driver="ESRI Shapefile")
+        data = [
+            np.array(v, dtype=object)
+            for v in zip(("-9", None, "L"), ("-9", None, "L"), ("00", None, "W"), ("00", None, "W"), last)
+        ]
+        pyogrio.raw.write(
+            path,
+            shapely.to_wkb(np.array(boxes)),
+            data,
+            fields,
+            crs="EPSG:4326",
+            geometry_type="Polygon",
+            driver="ESRI Shapefile",
+        )
         charts[day] = path
     ds = read_season(charts, latlon_grid(69, 73, 5, 25, 0.1))
     assert ds.sizes["time"] == 3 and float(ds.CT.sel(lat=71, lon=14.5, method="nearest")[0]) == 10
     r = route_season(ds, (71.05, 6.05), (71.05, 24.05), ice_class="Arc7", v0_kn=12)
     # The ship sails to the ice edge and waits there for the chart of 3 July.
-    (pixel, (lat, lon), since, waited), = r.stats.voyage.waits
-    assert lon == pytest.approx(12.95) and since + np.timedelta64(int(round(waited * 3.6e6)), "ms") \
-        == np.datetime64("2026-07-03T00:00:00")
+    ((pixel, (lat, lon), since, waited),) = r.stats.voyage.waits
+    assert lon == pytest.approx(12.95) and since + np.timedelta64(
+        int(round(waited * 3.6e6)), "ms"
+    ) == np.datetime64("2026-07-03T00:00:00")
     assert [str(t)[:10] for t in r.stats.voyage.charts_used] == ["2026-07-01", "2026-07-03"]
     # From there it is the quickest route on the open chart: 48 h + that passage.
     rest = route_season(ds.isel(time=[2]), (lat, lon), (71.05, 24.05), ice_class="Arc7", v0_kn=12)
@@ -344,8 +387,9 @@ def test_season_with_waits_of_days_equals_brute_force(seed):
     best = season_best_arrival(table_hours(stage), hours, start, end, 3, planar_length(1.0))
     for method in ("dijkstra", "astar"):
         try:
-            got = route_season(ds, start, end, speed=TABLE, concentration_limit=False,
-                               neighbourhood=3, method=method).cost
+            got = route_season(
+                ds, start, end, speed=TABLE, concentration_limit=False, neighbourhood=3, method=method
+            ).cost
         except seaway.NoRouteError:
             got = math.inf
         assert got == pytest.approx(best, rel=1e-9)

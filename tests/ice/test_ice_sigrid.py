@@ -69,8 +69,7 @@ def test_cis_geopackage_on_polar_stereographic_grid(cis_polar):
     assert np.isnan(px.SC) and not bool(px.land) and not bool(px.off_chart)
     # Land (NULL attributes), ice shelf, and the water polygon (CT '00').
     for ptype, land, shelf in (("L", True, False), ("S", True, True)):
-        j = max((k for k in range(432) if fields["POLY_TYPE"][k] == ptype),
-                key=lambda k: geoms[k].area)
+        j = max((k for k in range(432) if fields["POLY_TYPE"][k] == ptype), key=lambda k: geoms[k].area)
         px = _inside_pixel(geoms[j], crs, grid, ds)
         assert (int(px.polygon), bool(px.land), bool(px.ice_shelf)) == (j, land, shelf)
         assert np.isnan(px.CT) and np.isnan(px.SA)
@@ -81,7 +80,9 @@ def test_cis_geopackage_on_polar_stereographic_grid(cis_polar):
     m = _first(fields, SA="97")
     assert int(_inside_pixel(geoms[m], crs, grid, ds).SA) == 97
     assert grid.dims() == ("y", "x") and ds.x.attrs["units"] == "km"
-    assert np.nanmax(ds.CT.values) == 10 and set(np.unique(ds.SA.values[~np.isnan(ds.SA.values)])) <= set(codes.STAGE_CODES)
+    assert np.nanmax(ds.CT.values) == 10 and set(np.unique(ds.SA.values[~np.isnan(ds.SA.values)])) <= set(
+        codes.STAGE_CODES
+    )
 
 
 def test_dmi_shapefiles_single_digit_codes_ranges_and_missing_partials():
@@ -93,12 +94,17 @@ def test_dmi_shapefiles_single_digit_codes_ranges_and_missing_partials():
     cases = [  # attributes as written in the file -> decoded values at a pixel inside
         ({"CT": "1", "SA": "98", "SB": "88"}, {"CT": 1.0, "CA": 1.0, "SA": 98.0, "CB": 0.0, "SB": 88.0}),
         ({"CT": "91", "SA": "91"}, {"CT": 10.0, "CA": 10.0, "SA": 91.0, "CB": np.nan, "SB": np.nan}),
-        ({"CT": "46", "SA": "87", "SB": "-9"}, {"CT": 6.0, "CA": 6.0, "SA": 87.0, "CB": np.nan, "SB": np.nan}),
+        (
+            {"CT": "46", "SA": "87", "SB": "-9"},
+            {"CT": 6.0, "CA": 6.0, "SA": 87.0, "CB": np.nan, "SB": np.nan},
+        ),
         ({"CT": "13", "SA": "88", "SB": "85"}, {"CT": 3.0, "CA": 3.0, "SA": 88.0, "CB": 0.0, "SB": 85.0}),
     ]
     for attrs, expected in cases:
-        i = max((k for k in range(len(geoms)) if all(fields[f][k] == v for f, v in attrs.items())),
-                key=lambda k: geoms[k].area)
+        i = max(
+            (k for k in range(len(geoms)) if all(fields[f][k] == v for f, v in attrs.items())),
+            key=lambda k: geoms[k].area,
+        )
         px = _inside_pixel(geoms[i], crs, grid, ds)
         assert int(px.polygon) == i
         got = {k: float(px[k]) for k in expected}
@@ -112,7 +118,12 @@ def test_dmi_shapefiles_single_digit_codes_ranges_and_missing_partials():
     i = max((k for k in range(len(g2)) if f2["CT"][k] == "12"), key=lambda k: g2[k].area)
     px = _inside_pixel(g2[i], crs2, latlon_grid(56, 64, -56, -37, (0.05, 0.1)), cf)
     assert {k: float(px[k]) for k in ("CT", "CA", "SA", "CB", "SB")} == {
-        "CT": 2.0, "CA": 2.0, "SA": 95.0, "CB": 0.0, "SB": 87.0}
+        "CT": 2.0,
+        "CA": 2.0,
+        "SA": 95.0,
+        "CB": 0.0,
+        "SB": 87.0,
+    }
     # POLARIS there: 8/10 open water (3) + 2/10 old ice (-> heavy MY: PC5 -2) = 20.
     assert float(polaris.polaris_chart(cf, "PC5").rio.sel(lat=px.lat, lon=px.lon)) == 20
 
@@ -129,11 +140,20 @@ def test_invalid_rings_and_text_codes_are_repaired(tmp_path):
     assert not bowtie.is_valid
     path = tmp_path / "chart.gpkg"
     fields = ["CT", "CA", "SA", "POLY_TYPE"]
-    data = [np.array(v, dtype=object) for v in (["57", " X ", None], ["-9", "-9", None],
-                                                ["3", "86", None], ["I", "I", "L"])]
+    data = [
+        np.array(v, dtype=object)
+        for v in (["57", " X ", None], ["-9", "-9", None], ["3", "86", None], ["I", "I", "L"])
+    ]
     land = shapely.box(6, 0, 7, 2)
-    pyogrio.raw.write(path, shapely.to_wkb(np.array([bowtie, square, land])), data, fields,
-                      crs="EPSG:4326", geometry_type="Polygon", driver="GPKG")
+    pyogrio.raw.write(
+        path,
+        shapely.to_wkb(np.array([bowtie, square, land])),
+        data,
+        fields,
+        crs="EPSG:4326",
+        geometry_type="Polygon",
+        driver="GPKG",
+    )
     ds = read_sigrid3(path, latlon_grid(0, 2, 0, 8, 0.1))
     assert ds.attrs["repaired_polygons"] == 1
     at = lambda lat, lon: ds.sel(lat=lat, lon=lon, method="nearest")  # noqa: E731

@@ -30,8 +30,10 @@ def band(stage, ct=10.0):
     ctv = np.where(inside, ct, 0.0)[None, :].repeat(lat.size, 0)
     sa = np.where(inside, float(stage), np.nan)[None, :].repeat(lat.size, 0)
     dims = ("lat", "lon")
-    return xr.Dataset({"CT": (dims, ctv), "CA": (dims, ctv), "SA": (dims, sa),
-                       "land": (dims, np.zeros(ctv.shape, bool))}, coords={"lat": lat, "lon": lon})
+    return xr.Dataset(
+        {"CT": (dims, ctv), "CA": (dims, ctv), "SA": (dims, sa), "land": (dims, np.zeros(ctv.shape, bool))},
+        coords={"lat": lat, "lon": lon},
+    )
 
 
 def straight(ds, cls):
@@ -51,11 +53,14 @@ def dense_km(route, inside, n=4000):
     return float(total)
 
 
-@pytest.mark.parametrize("stage, cls, knots", [
-    (87, "Arc7", 12 * (1 - 0.7 / 1.4)),   # thin first-year, upper end 0.7 m: F = 0.5
-    (87, "Arc5", 12 * (1 - 0.7 / 1.0)),   # Arc5's h_pass 1.0 m: F = 0.3
-    (91, "Arc7", 12 * (1 - 1.2 / 1.4)),   # medium first-year 1.2 m: F = 1/7
-])
+@pytest.mark.parametrize(
+    "stage, cls, knots",
+    [
+        (87, "Arc7", 12 * (1 - 0.7 / 1.4)),  # thin first-year, upper end 0.7 m: F = 0.5
+        (87, "Arc5", 12 * (1 - 0.7 / 1.0)),  # Arc5's h_pass 1.0 m: F = 0.3
+        (91, "Arc7", 12 * (1 - 1.2 / 1.4)),  # medium first-year 1.2 m: F = 1/7
+    ],
+)
 def test_andreeva_speed_across_a_band(stage, cls, knots):
     r, km_in, km_out = straight(band(stage), cls)
     timed = r.with_ice_speed(ice_speed(band(stage), cls, 12))
@@ -63,7 +68,9 @@ def test_andreeva_speed_across_a_band(stage, cls, knots):
     s = timed.summary()
     assert s["time_h"] == pytest.approx(expected, rel=0.01)
     assert s["time_h"] > r.length / (12 * KN) + 1  # never the open-water time
-    assert s["speed_model"].startswith("Andreeva 2021: V = F x V0, V0 12 kn") and f"({cls}," in s["speed_model"]
+    assert (
+        s["speed_model"].startswith("Andreeva 2021: V = F x V0, V0 12 kn") and f"({cls}," in s["speed_model"]
+    )
     assert "the upper end of the governing stage's WMO range" in s["speed_model"]
     assert sum(leg.time_h for leg in timed.legs()) == pytest.approx(s["time_h"], rel=1e-12)
 
@@ -75,8 +82,10 @@ def test_polaris_limits_a_polar_class_under_elevated_risk():
     r, km_in, km_out = straight(ds, "Arc7")
     pc7 = r.with_ice_speed(ice_speed(ds, "PC7", 12)).summary()
     assert pc7["time_h"] == pytest.approx(km_out / (12 * KN) + km_in / (3 * KN), rel=0.01)
-    assert pc7["speed_model"] == ("IMO POLARIS (MSC.1/Circ.1519), PC7 row: 12 kn in normal operation, "
-                                  "3 kn under elevated risk, none under special consideration")
+    assert pc7["speed_model"] == (
+        "IMO POLARIS (MSC.1/Circ.1519), PC7 row: 12 kn in normal operation, "
+        "3 kn under elevated risk, none under special consideration"
+    )
     pc5 = r.with_ice_speed(ice_speed(ds, "PC5", 12)).summary()
     assert pc5["time_h"] == pytest.approx(r.length / (12 * KN), rel=1e-9)
 
@@ -103,16 +112,21 @@ def test_cli_speed_on_an_ice_chart_uses_the_ice_model(tmp_path, capsys):
     ds.to_netcdf(path)
     r, km_in, km_out = straight(ds, "Arc7")
     outs = [tmp_path / "r.geojson", tmp_path / "r.rtz", tmp_path / "r.csv"]
-    code = main(["route", str(path), "--from", "73.05,61.05", "--to", "73.05,78.95", "--speed", "12",
-                 "-q"] + [a for o in outs for a in ("--out", str(o))])
+    code = main(
+        ["route", str(path), "--from", "73.05,61.05", "--to", "73.05,78.95", "--speed", "12", "-q"]
+        + [a for o in outs for a in ("--out", str(o))]
+    )
     out, err = capsys.readouterr()
     assert code == 0, err
     assert "times from the speed in the ice: Andreeva 2021: V = F x V0, V0 12 kn" in err
     props = json.loads(outs[0].read_text())["properties"]
     assert props["time_h"] == pytest.approx(km_out / (12 * KN) + km_in / (6 * KN), rel=0.01)
     assert props["speed_model"].startswith("Andreeva 2021")
-    speeds = [float(leg.get("speedMax")) for leg in ET.parse(outs[1]).getroot().iter(
-        "{http://www.cirm.org/RTZ/1/0}leg") if leg.get("speedMax")]
+    speeds = [
+        float(leg.get("speedMax"))
+        for leg in ET.parse(outs[1]).getroot().iter("{http://www.cirm.org/RTZ/1/0}leg")
+        if leg.get("speedMax")
+    ]
     assert min(speeds) < 12  # the legs through the band carry their mean speed
     assert outs[2].read_text().splitlines()[1].startswith("# speed in ice: Andreeva 2021")
     assert "time: " in out and "in ice Andreeva 2021" in out
@@ -128,6 +142,7 @@ def test_real_cis_chart_times_agree_with_dense_sampling(shared_data):
     from seaway.ice.impact import governing_stage
     from seaway.ice.polaris import polaris_chart
     from seaway.ice.sigrid import read_sigrid3
+
     ds = read_sigrid3(str(shared_data.joinpath(*CIS)), latlon_grid(62, 84, -113, -22, (0.1, 0.25)))
     r = seaway.route(chart_impact(ds, "Arc7"), (64, -57), (74, -75), land=ds.land).smoothed()
     stage = governing_stage(ds).values

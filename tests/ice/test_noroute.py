@@ -36,10 +36,14 @@ def fast_sea(tmp_path_factory):
     of unknown stage at 63-77 E (FA 08, SA 99, CT 92, as AARI codes it)."""
     box = shapely.box
     fast = {"POLY_TYPE": "I", "CT": "92", "SA": "99", "FA": "08"}
-    rows = [(box(60, 70, 80, 71), {"POLY_TYPE": "L"}), (box(60, 74, 80, 75), {"POLY_TYPE": "L"}),
-            (box(60, 71, 63, 74), {"POLY_TYPE": "W", "CT": "00"}),
-            (box(77, 71, 80, 74), {"POLY_TYPE": "W", "CT": "00"}),
-            (box(63, 71, 70, 74), fast), (box(70, 71, 77, 74), fast)]
+    rows = [
+        (box(60, 70, 80, 71), {"POLY_TYPE": "L"}),
+        (box(60, 74, 80, 75), {"POLY_TYPE": "L"}),
+        (box(60, 71, 63, 74), {"POLY_TYPE": "W", "CT": "00"}),
+        (box(77, 71, 80, 74), {"POLY_TYPE": "W", "CT": "00"}),
+        (box(63, 71, 70, 74), fast),
+        (box(70, 71, 77, 74), fast),
+    ]
     path = write_chart(tmp_path_factory.mktemp("fast") / "fast_sea.shp", rows)
     return str(path), read_sigrid3(str(path), latlon_grid(70, 75, 60, 80, 0.1))
 
@@ -64,7 +68,10 @@ def test_fast_ice_closes_the_sea_to_arc5_and_arc7_gets_through(fast_sea):
     ((kind, km),) = err.closing_ice
     # no first-year stage on the grid: the fast ice is assumed thick first-year (93), which
     # Grinyak et al.'s Table 3 closes to Arc5 and Table 2 opens to Arc7
-    assert kind == "fast ice of unknown stage, assumed thick first-year ice (SA 93) at 10/10 (Arc7 and stronger may enter)"
+    assert (
+        kind
+        == "fast ice of unknown stage, assumed thick first-year ice (SA 93) at 10/10 (Arc7 and stronger may enter)"
+    )
     # the way crosses it where it is narrowest: 63-77 E along the northern row of pixels
     north = float(ds.lat.values[ds.lat.values < 74].max())
     assert km == pytest.approx(GEOD.inv(63, north, 77, north)[2] / 1000, rel=0.02)
@@ -72,22 +79,42 @@ def test_fast_ice_closes_the_sea_to_arc5_and_arc7_gets_through(fast_sea):
     point, dist = reachable_reference(usable, ds.lat.values, ds.lon.values, START, END)
     assert err.reachable == pytest.approx(point) and err.reachable_km == pytest.approx(dist, abs=0.01)
     assert point[1] < 63  # the edge of the fast ice
-    assert str(err) == (f"no route for an Arc5 ship from 72.05,61.55 to 72.05,78.55: ice closes the "
-                        f"way: {kind}: {km:.0f} km; the weakest class that gets through is Arc7; the "
-                        f"ship can get as far as {point[0]:.4f},{point[1]:.4f}, {dist:.1f} km from the end")
+    assert str(err) == (
+        f"no route for an Arc5 ship from 72.05,61.55 to 72.05,78.55: ice closes the "
+        f"way: {kind}: {km:.0f} km; the weakest class that gets through is Arc7; the "
+        f"ship can get as far as {point[0]:.4f},{point[1]:.4f}, {dist:.1f} km from the end"
+    )
 
 
 def test_fast_ice_closed_by_the_rule_closes_it_to_every_class(fast_sea, capsys):
     path, ds = fast_sea
     err = explain_no_route(ds, "Arc7", START, END, fast_ice="closed")
     assert err.cause == "ice" and err.weakest_class is None
-    assert err.closing_ice[0][0] == "fast ice of unknown stage, closed by the fast_ice rule at 10/10 (no class may enter)"
-    code = main(["route", path, "--from", "72.05,61.55", "--to", "72.05,78.55", "--grid",
-                 "70,75,60,80,0.1", "--fast-ice", "closed", "-q"])
+    assert (
+        err.closing_ice[0][0]
+        == "fast ice of unknown stage, closed by the fast_ice rule at 10/10 (no class may enter)"
+    )
+    code = main(
+        [
+            "route",
+            path,
+            "--from",
+            "72.05,61.55",
+            "--to",
+            "72.05,78.55",
+            "--grid",
+            "70,75,60,80,0.1",
+            "--fast-ice",
+            "closed",
+            "-q",
+        ]
+    )
     err_text = capsys.readouterr().err
     assert code == 1 and "check the land mask" not in err_text
-    assert ("ice closes the way: fast ice of unknown stage, closed by the fast_ice rule at 10/10 (no "
-            "class may enter)") in err_text
+    assert (
+        "ice closes the way: fast ice of unknown stage, closed by the fast_ice rule at 10/10 (no "
+        "class may enter)"
+    ) in err_text
     assert "no class of seaway.ice.classes (up to Arc9 and the icebreakers) gets through" in err_text
     assert f"the ship can get as far as {err.reachable[0]:.4f},{err.reachable[1]:.4f}" in err_text
 
@@ -109,12 +136,15 @@ def test_nsidc_december_closes_the_northern_sea_route_to_arc5(shared_data, capsy
     Arc7 may. The reachable point is checked against the 4-connected open water of the Barents
     Sea, and its distance by Geod."""
     from seaway.cli.chartfile import open_chart
+
     path = str(shared_data.joinpath(*NSIDC))
     code = main(["route", path, "--vessel", "Arc5", "--from", "71.25,50.95", "--to", "60,-175", "-q"])
     err = capsys.readouterr().err
     assert code == 1 and "check the land mask" not in err
-    assert ("error: no route for an Arc5 ship from 71.25,50.95 to 60,-175: ice closes the way: thick "
-            "first-year ice (SA 93, assumed) at 2-10/10 (Arc7 and stronger may enter):") in err
+    assert (
+        "error: no route for an Arc5 ship from 71.25,50.95 to 60,-175: ice closes the way: thick "
+        "first-year ice (SA 93, assumed) at 2-10/10 (Arc7 and stronger may enter):"
+    ) in err
     assert "the weakest class that gets through is Arc7" in err
     data = open_chart(path, vessel="Arc5")
     usable = np.isfinite(data.cost.values) & ~data.land.values
@@ -158,11 +188,12 @@ def test_kara_size_chart_explains_arc4_quickly_enough():
     by medium first-year ice (Arc6 may enter) and first-year ice (Arc7); checked against the
     4-connected bodies. (Takes about 1.5 s here; no wall-clock assertion.)"""
     from seaway.samples import ice_impact, kara_sea
+
     ds = kara_sea()
     usable = np.isfinite(ice_impact(ds.stage_of_development, "Arc4").values) & ~ds.land.values
     labels, n = ndimage.label(usable)
     sizes = ndimage.sum(usable, labels, range(1, n + 1))
-    a, b = (np.argsort(-sizes)[:2] + 1)
+    a, b = np.argsort(-sizes)[:2] + 1
     pts = []
     for k in (a, b):
         rr, cc = np.nonzero(labels == k)
@@ -170,6 +201,8 @@ def test_kara_size_chart_explains_arc4_quickly_enough():
     err = explain_no_route(ds, "Arc4", pts[0], pts[1])
     assert err.cause == "ice" and err.weakest_class == "Arc7"
     kinds = [k for k, _ in err.closing_ice]
-    assert any(k.startswith("first-year ice (WMO 86)") and k.endswith("(Arc7 and stronger may enter)") for k in kinds)
+    assert any(
+        k.startswith("first-year ice (WMO 86)") and k.endswith("(Arc7 and stronger may enter)") for k in kinds
+    )
     point, dist = reachable_reference(usable, ds.lat.values, ds.lon.values, pts[0], pts[1])
     assert err.reachable == pytest.approx(point) and err.reachable_km == pytest.approx(dist, abs=0.01)

@@ -4,7 +4,6 @@ true polygons), or be off the chart where none does: on a synthetic pan-Arctic c
 across +-180, one around the pole, holes, multi-part, a bow-tie ring; tests/panarctic.py) and
 on every real chart in ../shared/data."""
 
-
 import numpy as np
 import pytest
 
@@ -18,7 +17,8 @@ from support.data import SHARED_DATA  # noqa: E402
 
 DATA = SHARED_DATA
 REAL = sorted((DATA / "ice_charts_sigrid3").glob("*/*.shp")) + sorted(
-    (DATA / "ice_charts_sigrid3").glob("*/*.gpkg"))
+    (DATA / "ice_charts_sigrid3").glob("*/*.gpkg")
+)
 GRIDS = {
     "Kara Sea 0.05 deg": lambda: latlon_grid(66, 82, 50, 110, 0.05),
     "Arctic lat/lon 0.25 deg": lambda: latlon_grid(60, 90, -180, 180, 0.25),
@@ -54,8 +54,9 @@ def _pixel(ds, grid, lat, lon):
         x, y = pyproj.Transformer.from_crs("EPSG:4326", grid.crs, always_xy=True).transform(lon, lat)
         x, y = x / 1000, y / 1000
     x = (x - grid.x[0]) % 360 + grid.x[0] if grid.geographic else x
-    return ds.isel({grid.dims()[0]: int(np.abs(grid.y - y).argmin()),
-                    grid.dims()[1]: int(np.abs(grid.x - x).argmin())})
+    return ds.isel(
+        {grid.dims()[0]: int(np.abs(grid.y - y).argmin()), grid.dims()[1]: int(np.abs(grid.x - x).argmin())}
+    )
 
 
 def test_pole_holes_antimeridian_and_bowtie_by_value(chart):
@@ -107,13 +108,20 @@ def test_real_charts_on_latlon_and_polar_grids(path):
     truth, _ = _real_truth(path)
     x0, y0, x1, y1 = shapely.total_bounds(truth) / 1000
     step = max(x1 - x0, y1 - y0) / 300
-    polar = projected_grid("EPSG:3413", np.floor(x0), np.floor(x0) + 300 * step,
-                           np.floor(y0), np.floor(y0) + 300 * step, step)
-    lon, lat = panarctic.TO_LONLAT.transform(*np.meshgrid(np.linspace(x0, x1, 50) * 1000,
-                                                          np.linspace(y0, y1, 50) * 1000))
+    polar = projected_grid(
+        "EPSG:3413", np.floor(x0), np.floor(x0) + 300 * step, np.floor(y0), np.floor(y0) + 300 * step, step
+    )
+    lon, lat = panarctic.TO_LONLAT.transform(
+        *np.meshgrid(np.linspace(x0, x1, 50) * 1000, np.linspace(y0, y1, 50) * 1000)
+    )
     s, w = np.floor(lat.min()), np.floor(lon.min())
-    geo = latlon_grid(s, s + 0.02 * np.ceil((lat.max() - s) / 0.02), w,
-                      w + 0.04 * np.ceil((lon.max() - w) / 0.04), (0.02, 0.04))
+    geo = latlon_grid(
+        s,
+        s + 0.02 * np.ceil((lat.max() - s) / 0.02),
+        w,
+        w + 0.04 * np.ceil((lon.max() - w) / 0.04),
+        (0.02, 0.04),
+    )
     for grid in (polar, geo):
         ds = read_sigrid3(path, grid)
         share, _ = panarctic.agreement(ds, grid, truth)

@@ -31,19 +31,27 @@ def test_an_end_on_land_moves_to_the_nearest_water_within_the_limit():
     km = haversine(70.645, 62.0, 70.6, 62.0)
     assert km == pytest.approx(5.004, abs=1e-3)
     assert r.requested == ((70.5, 60.5), (70.645, 62.0))
-    assert r.notes == (f"end 70.645,62 is on an impassable pixel (land): moved {km:.1f} km to 70.6000,62.0000",)
+    assert r.notes == (
+        f"end 70.645,62 is on an impassable pixel (land): moved {km:.1f} km to 70.6000,62.0000",
+    )
     # 50 km inland: refused, naming the distance and the limit; max_km=0 only reports.
-    with pytest.raises(SnapError, match=r"end 71.05,62 is on an impassable pixel \(land\); the nearest point "
-                       r"the ship may use is 70.6000,62.0000, 50.0 km away: farther than max_km=20"):
+    with pytest.raises(
+        SnapError,
+        match=r"end 71.05,62 is on an impassable pixel \(land\); the nearest point "
+        r"the ship may use is 70.6000,62.0000, 50.0 km away: farther than max_km=20",
+    ):
         route_season(ds, WEST, (71.05, 62.0), ice_class="Arc4", v0_kn=14, snap_km=20)
     model = IceSeasonTime(SeasonGrid(ds), "Arc4", 14)
     with pytest.raises(SnapError) as info:
         snap_season_ends(model, WEST, (70.645, 62.0), max_km=0)
     assert info.value.moves[0].distance == pytest.approx(km)
     # Without snap_km an end on land is refused as before, naming the nearest water.
-    with pytest.raises(ValueError, match=r"end is on an impassable pixel \(land, NaN or infinite cost\): "
-                       r"pixel \(28, 40\) at lat 70.6400, lon 62.0000; the nearest passable pixel is pixel "
-                       r"\(30, 40\) at lat 70.6000"):
+    with pytest.raises(
+        ValueError,
+        match=r"end is on an impassable pixel \(land, NaN or infinite cost\): "
+        r"pixel \(28, 40\) at lat 70.6400, lon 62.0000; the nearest passable pixel is pixel "
+        r"\(30, 40\) at lat 70.6000",
+    ):
         route_season(ds, WEST, (70.645, 62.0), ice_class="Arc4", v0_kn=14)
 
 
@@ -75,9 +83,11 @@ def test_a_strait_closed_by_first_year_ice_in_every_chart_is_explained_by_the_ic
     err = info.value
     text = str(err)
     assert "land mask" not in text and err.cause == "ice"
-    assert text.startswith("no route for an Arc4 ship from 70.5,60.5 to 70.5,65.5 through the season "
-                           "(charts of 2026-07-01T00:00 to 2026-07-03T00:00, waiting allowed): ice closes "
-                           "the way in the season's most open chart for Arc4, that of 2026-07-02T00:00")
+    assert text.startswith(
+        "no route for an Arc4 ship from 70.5,60.5 to 70.5,65.5 through the season "
+        "(charts of 2026-07-01T00:00 to 2026-07-03T00:00, waiting allowed): ice closes "
+        "the way in the season's most open chart for Arc4, that of 2026-07-02T00:00"
+    )
     ((ice, km),) = err.closing_ice
     assert ice == "medium first-year ice (SA 91) at 8/10 (Arc7 and stronger may enter)"
     # The way crosses the strait's eleven pixel columns, 62.975-63.525 E, within the channel.
@@ -121,8 +131,11 @@ def test_real_ocean_model_season_ends_and_a_way_closed_by_ice(shared_data):
     field = np.asarray(grid.prepare().cost_field(start, model=model))
     assert grid.dry[37, 90] and not grid.dry[37, 88] and not np.isfinite(field[37, 88])
     far = 20 * np.hypot(4, 2)
-    with pytest.raises(SnapError, match=rf"end 37,90 is on an impassable pixel \(land\); the nearest point "
-                       rf"the ship may use is 33.0000,88.0000, {far:.1f} chart units away: farther than max_km=20"):
+    with pytest.raises(
+        SnapError,
+        match=rf"end 37,90 is on an impassable pixel \(land\); the nearest point "
+        rf"the ship may use is 33.0000,88.0000, {far:.1f} chart units away: farther than max_km=20",
+    ):
         snap_season_ends(model, start, (37, 90))
     snapped = snap_season_ends(model, start, (37, 90), max_km=100)
     assert snapped.end == (33, 88) and snapped.moves[0].distance == pytest.approx(far)
@@ -132,7 +145,10 @@ def test_real_ocean_model_season_ends_and_a_way_closed_by_ice(shared_data):
     err = info.value
     assert err.cause == "ice" and "land mask" not in str(err) and err.weakest_class == "Arc7"
     assert "that of 2016-02-05T12:00" in str(err)  # the most open chart: the last
-    assert err.closing_ice[0][0].startswith("ice 0.2 m thick at 6.") and "(Arc7 and stronger" in err.closing_ice[0][0]
+    assert (
+        err.closing_ice[0][0].startswith("ice 0.2 m thick at 6.")
+        and "(Arc7 and stronger" in err.closing_ice[0][0]
+    )
     assert np.isfinite(route_season(grid, start, (36, 66), ice_class="Arc7", v0_kn=12).cost)
     with pytest.raises(NoRouteError):
         route_season(grid, start, (36, 66), ice_class="Arc6", v0_kn=12)

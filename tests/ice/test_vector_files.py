@@ -71,5 +71,7 @@ def test_empty_file_and_directory_are_named(tmp_path, capsys):
     assert main(["route", str(tmp_path / "empty.shp"), *ROUTE]) == 1
     assert "empty.shp is empty (0 bytes)" in capsys.readouterr().err
     assert main(["route", str(tmp_path / "charts.shp"), *ROUTE]) == 1
-    assert "is a directory, not a chart file; give the chart file (.shp or .gpkg) inside it; " \
-           "it holds a.shp" in capsys.readouterr().err
+    assert (
+        "is a directory, not a chart file; give the chart file (.shp or .gpkg) inside it; "
+        "it holds a.shp" in capsys.readouterr().err
+    )

@@ -22,10 +22,15 @@ from support.reference import reference_costs
 
 FLAGS = ("static", "symmetric", "turn_penalty", "time_dependent", "smoothable")
 # Python class -> the engine classes its engine() returns.
-PAIRS = [(EdgeCost, [EDGE_COSTS[name] for name in EDGE_COSTS]), (EnteredPixel, [_core.EnteredPixelCost]),
-         (TravelTime, [_core.TravelTimeModel, _core.ZonedTravelTimeModel]), (Fuel, [_core.FuelModel]),
-         (WaveDanger, [_core.WaveDangerModel]), (IceSeasonTime, [_core.IceSeasonModel]),
-         (IceWeatherTime, [_core.IceWeatherModel])]
+PAIRS = [
+    (EdgeCost, [EDGE_COSTS[name] for name in EDGE_COSTS]),
+    (EnteredPixel, [_core.EnteredPixelCost]),
+    (TravelTime, [_core.TravelTimeModel, _core.ZonedTravelTimeModel]),
+    (Fuel, [_core.FuelModel]),
+    (WaveDanger, [_core.WaveDangerModel]),
+    (IceSeasonTime, [_core.IceSeasonModel]),
+    (IceWeatherTime, [_core.IceWeatherModel]),
+]
 
 
 @pytest.mark.parametrize("model, engines", PAIRS, ids=[p[0].__name__ for p in PAIRS])
@@ -38,12 +43,15 @@ def _overloads(fn) -> str:
     return fn.__doc__ or ""
 
 
-@pytest.mark.parametrize("search, needs", [
-    (_core.Router.route_bidirectional, ("static",)),
-    (_core.Router.build_landmarks, ("static", "symmetric")),
-    (_core.route_turns, ("turn_penalty",)),
-    (_core.LegPricer.__init__, ("smoothable",)),
-])
+@pytest.mark.parametrize(
+    "search, needs",
+    [
+        (_core.Router.route_bidirectional, ("static",)),
+        (_core.Router.build_landmarks, ("static", "symmetric")),
+        (_core.route_turns, ("turn_penalty",)),
+        (_core.LegPricer.__init__, ("smoothable",)),
+    ],
+)
 def test_each_search_is_bound_for_exactly_the_models_that_can_take_it(search, needs):
     doc = _overloads(search)
     models = [c for c in vars(_core).values() if isinstance(c, type) and hasattr(c, "capabilities")]
@@ -61,8 +69,10 @@ def test_the_length_model_takes_every_search_and_smoothing():
     cost[10:50, 38:42] = np.inf  # a wall with a gap at the top and bottom
     cost[25:35, 10:30] = 7.0  # dear water the length model ignores
     chart = seaway.prepare(cost, neighbourhood=5, edge_cost="length", landmarks=2)
-    got = {m: chart.route((30, 2), (30, 77), method=m).cost
-           for m in ("dijkstra", "astar", "bidirectional", "landmarks", "auto")}
+    got = {
+        m: chart.route((30, 2), (30, 77), method=m).cost
+        for m in ("dijkstra", "astar", "bidirectional", "landmarks", "auto")
+    }
     brute = reference_costs(cost, (30, 2), k=5, edge_cost="length")[30, 77]  # Dijkstra over all edges
     assert got == pytest.approx(dict.fromkeys(got, brute), rel=1e-12)
     # The taut string around the nearer (bottom) end of the wall, whose pixels' squares end at

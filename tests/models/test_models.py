@@ -28,10 +28,14 @@ def test_one_chart_answers_every_edge_cost_as_separate_charts_do():
 
 def test_unknown_model_names_raise_with_the_list():
     cost = np.ones((5, 5))
-    for call in (lambda: seaway.route(cost, (0, 0), (4, 4), edge_cost="maximum"),
-                 lambda: seaway.prepare(cost).route((0, 0), (4, 4), model="time"),
-                 lambda: seaway.prepare(cost, edge_cost="entered")):
-        with pytest.raises(ValueError, match=r"edge_cost must be one of \('max', 'mean', 'integral', 'length'\)"):
+    for call in (
+        lambda: seaway.route(cost, (0, 0), (4, 4), edge_cost="maximum"),
+        lambda: seaway.prepare(cost).route((0, 0), (4, 4), model="time"),
+        lambda: seaway.prepare(cost, edge_cost="entered"),
+    ):
+        with pytest.raises(
+            ValueError, match=r"edge_cost must be one of \('max', 'mean', 'integral', 'length'\)"
+        ):
             call()
     with pytest.raises(TypeError, match="CostModel"):
         seaway.prepare(cost).route((0, 0), (4, 4), model=3)
@@ -45,8 +49,10 @@ def test_engine_model_on_another_grid_is_refused():
 
 def test_pair_costs_are_the_engines_step_costs():
     # one step of length 2 between pixels of cost 1 and 4: max 8, mean 5
-    r = {name: seaway.route(np.array([[1.0, 4.0]]), (0, 0), (0, 1), dx=2.0, edge_cost=name).cost
-         for name in ("max", "mean")}
+    r = {
+        name: seaway.route(np.array([[1.0, 4.0]]), (0, 0), (0, 1), dx=2.0, edge_cost=name).cost
+        for name in ("max", "mean")
+    }
     assert r == {"max": 8.0, "mean": 5.0}
     for name in ("max", "mean"):
         got = EdgeCost(name).pair_costs(np.array([1.0]), np.array([4.0]), np.array([2.0]))
@@ -56,8 +62,9 @@ def test_pair_costs_are_the_engines_step_costs():
 def test_routes_carry_model_and_unit():
     planar = seaway.route(np.ones((5, 5)), (0, 0), (4, 4), edge_cost="mean")
     assert planar.model == EdgeCost("mean") and planar.unit == "cost x grid unit"
-    geo = seaway.route(np.ones((5, 5)), (60.0, 0.0), (60.4, 0.4), lat=60 + 0.1 * np.arange(5),
-                       lon=0.1 * np.arange(5))
+    geo = seaway.route(
+        np.ones((5, 5)), (60.0, 0.0), (60.4, 0.4), lat=60 + 0.1 * np.arange(5), lon=0.1 * np.arange(5)
+    )
     assert geo.unit == "cost x km" and "cost x km" in str(geo)
     assert geo.to_geojson()["properties"]["cost_unit"] == "cost x km"
 

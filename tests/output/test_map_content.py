@@ -40,6 +40,7 @@ def legends(monkeypatch):
     def spy(m, dpi):
         seen.append([t.get_text() for lg in m.fig.legends for t in lg.get_texts()])
         return real(m, dpi)
+
     monkeypatch.setattr(mapframe.MapFrame, "png", spy)
     return seen
 
@@ -55,12 +56,17 @@ def png_rgb(path):
 def overlay(page, k=1):
     """The k-th image layer of the page (0: the land around, 1: the chart), as RGB."""
     found = re.findall(r'L\.imageOverlay\(\s*"data:image/png;base64,([^"]+)"', page)
-    return np.rint(image.imread(io.BytesIO(base64.b64decode(found[k])), format="png")[..., :3] * 255).astype(int)
+    return np.rint(image.imread(io.BytesIO(base64.b64decode(found[k])), format="png")[..., :3] * 255).astype(
+        int
+    )
 
 
 def legend_html(page):
-    m = re.search(r'L\.control\(\{position: "(\w+)"\}\);\s*\w+\.onAdd = function \(\) \{ var div = '
-                  r'L\.DomUtil\.create\(.div.\); div\.innerHTML = ("(?:[^"\\]|\\.)*")', page)
+    m = re.search(
+        r'L\.control\(\{position: "(\w+)"\}\);\s*\w+\.onAdd = function \(\) \{ var div = '
+        r'L\.DomUtil\.create\(.div.\); div\.innerHTML = ("(?:[^"\\]|\\.)*")',
+        page,
+    )
     assert m, "no legend control"
     return m.group(1), json.loads(m.group(2))
 
@@ -71,16 +77,35 @@ def fast_sea(tmp_path_factory):
     ice of unknown stage (FA 08, SA 99, CT 92) between."""
     box = shapely.box
     fast = {"POLY_TYPE": "I", "CT": "92", "SA": "99", "FA": "08"}
-    rows = [(box(60, 70, 80, 71), {"POLY_TYPE": "L"}), (box(60, 74, 80, 75), {"POLY_TYPE": "L"}),
-            (box(60, 71, 63, 74), {"POLY_TYPE": "W", "CT": "00"}),
-            (box(77, 71, 80, 74), {"POLY_TYPE": "W", "CT": "00"}), (box(63, 71, 77, 74), fast)]
+    rows = [
+        (box(60, 70, 80, 71), {"POLY_TYPE": "L"}),
+        (box(60, 74, 80, 75), {"POLY_TYPE": "L"}),
+        (box(60, 71, 63, 74), {"POLY_TYPE": "W", "CT": "00"}),
+        (box(77, 71, 80, 74), {"POLY_TYPE": "W", "CT": "00"}),
+        (box(63, 71, 77, 74), fast),
+    ]
     return str(write_chart(tmp_path_factory.mktemp("fastmap") / "fast.shp", rows))
 
 
 def test_fast_ice_open_water_and_land_on_both_maps(fast_sea, tmp_path, legends, capsys):
     png, page_path = tmp_path / "m.png", tmp_path / "m.html"
-    code = main(["route", fast_sea, "--from", "72.05,61.55", "--to", "72.05,78.55", "--grid",
-                 "70,75,60,80,0.1", "--plot", str(png), "--out", str(page_path), "-q"])
+    code = main(
+        [
+            "route",
+            fast_sea,
+            "--from",
+            "72.05,61.55",
+            "--to",
+            "72.05,78.55",
+            "--grid",
+            "70,75,60,80,0.1",
+            "--plot",
+            str(png),
+            "--out",
+            str(page_path),
+            "-q",
+        ]
+    )
     assert code == 0, capsys.readouterr().err
     (labels,) = legends
     assert {"fast ice", "ice free", "land", "start", "end"} <= set(labels)
@@ -92,20 +117,43 @@ def test_fast_ice_open_water_and_land_on_both_maps(fast_sea, tmp_path, legends, 
     assert count(chart, ICE_FREE) > 0 and count(chart, LAND) > 0
     corner, box = legend_html(page)
     assert corner == "bottomright" and "L.control.scale" in page  # the scale bar: bottom left
-    for label in ("ice: WMO colour code by stage of development", "fast ice", "ice free", "land",
-                  "start", "end"):
+    for label in (
+        "ice: WMO colour code by stage of development",
+        "fast ice",
+        "ice free",
+        "land",
+        "start",
+        "end",
+    ):
         assert label in box
     assert "position:fixed" not in page  # no box laid over the map's own controls
-    assert 'bindTooltip(\n' in page or ".bindTooltip(" in page
-    assert re.search(r'L\.divIcon\(.*?background:#ff00ff;border:2px solid black', page, flags=re.S)  # the end: a square
+    assert "bindTooltip(\n" in page or ".bindTooltip(" in page
+    assert re.search(
+        r"L\.divIcon\(.*?background:#ff00ff;border:2px solid black", page, flags=re.S
+    )  # the end: a square
     assert re.search(r'"start"', page) and re.search(r'"end"', page)  # their tooltips
 
 
 @pytest.mark.needs_data(*DMI)
 def test_real_dmi_fast_ice_is_grey_on_the_stage_map(shared_data, tmp_path, legends, capsys):
     png, page_path = tmp_path / "d.png", tmp_path / "d.html"
-    code = main(["route", str(shared_data.joinpath(*DMI)), "--from", "68.9,-53.0", "--to", "66.3,-54.5",
-                 "--grid", "65,71,-64,-50,0.1", "--plot", str(png), "--out", str(page_path), "-q"])
+    code = main(
+        [
+            "route",
+            str(shared_data.joinpath(*DMI)),
+            "--from",
+            "68.9,-53.0",
+            "--to",
+            "66.3,-54.5",
+            "--grid",
+            "65,71,-64,-50,0.1",
+            "--plot",
+            str(png),
+            "--out",
+            str(page_path),
+            "-q",
+        ]
+    )
     assert code == 0, capsys.readouterr().err
     (labels,) = legends
     assert "fast ice" in labels and "thin first-year ice" in labels and "ice free" in labels
@@ -122,11 +170,31 @@ def test_shoals_and_the_least_depth_are_drawn(tmp_path, legends, capsys):
     8.8 m is cyan on both maps, with its legend entry, and the least depth of the route marked."""
     lat, lon = np.round(np.arange(68.025, 76, 0.05), 3), np.round(np.arange(64.08, 80, 0.16), 2)
     chart = tmp_path / "open.nc"
-    xr.Dataset({"cost": (("lat", "lon"), np.ones((lat.size, lon.size)))},
-               coords={"lat": lat, "lon": lon}).to_netcdf(chart)
+    xr.Dataset(
+        {"cost": (("lat", "lon"), np.ones((lat.size, lon.size)))}, coords={"lat": lat, "lon": lon}
+    ).to_netcdf(chart)
     png, page_path, out = tmp_path / "o.png", tmp_path / "o.html", tmp_path / "o.geojson"
-    code = main(["route", str(chart), "--from", "74.5,72", "--to", "69,73.5", "--depth", str(ETOPO),
-                 "--draft", "8", "--plot", str(png), "--out", str(page_path), "--out", str(out), "-q"])
+    code = main(
+        [
+            "route",
+            str(chart),
+            "--from",
+            "74.5,72",
+            "--to",
+            "69,73.5",
+            "--depth",
+            str(ETOPO),
+            "--draft",
+            "8",
+            "--plot",
+            str(png),
+            "--out",
+            str(page_path),
+            "--out",
+            str(out),
+            "-q",
+        ]
+    )
     assert code == 0, capsys.readouterr().err
     least = json.loads(out.read_text())["properties"]["least_depth_m"]
     (labels,) = legends

@@ -52,12 +52,14 @@ def test_cost_field_picture(chart, tmp_path):
 
 def test_missing_matplotlib_names_the_extra(monkeypatch):
     import builtins
+
     real = builtins.__import__
 
     def fake(name, *args, **kwargs):
         if name == "matplotlib" or name.startswith("matplotlib."):
             raise ImportError("no matplotlib")
         return real(name, *args, **kwargs)
+
     monkeypatch.setattr(builtins, "__import__", fake)
     with pytest.raises(ImportError, match=r'pip install "seaway\[plot\]"'):
         mapframe.pyplot()
@@ -74,15 +76,20 @@ def test_wmo_colour_classes():
     conc = np.array([[0.0, 0.5, 1.0, 3.9], [4.0, 7.0, 8.9, 10.0], [np.nan, 9.0, 6.9, 0.0]])
     index, table = classes(conc, "concentration")
     np.testing.assert_array_equal(index, [[0, 1, 2, 2], [3, 4, 4, 5], [-1, 5, 3, 0]])
-    assert [rgb for _, rgb in table] == [(0, 100, 255), (150, 200, 255), (140, 255, 160),
-                                        (255, 255, 0), (255, 125, 7), (255, 0, 0)]
+    assert [rgb for _, rgb in table] == [
+        (0, 100, 255),
+        (150, 200, 255),
+        (140, 255, 160),
+        (255, 255, 0),
+        (255, 125, 7),
+        (255, 0, 0),
+    ]
     np.testing.assert_allclose(tenths([0, 50, 100]), [0, 5, 10])  # percent
     np.testing.assert_allclose(tenths([0, 0.5, 1.0]), [0, 5, 10])  # fraction
     stage = np.array([[55, 81, 93], [97, 99, np.nan]])
     index, table = classes(stage, "stage")
     names = [table[k][0] if k >= 0 else None for k in index.ravel()]
-    assert names == ["ice free", "new ice", "thick first-year ice", "multi-year ice",
-                     "undefined ice", None]
+    assert names == ["ice free", "new ice", "thick first-year ice", "multi-year ice", "undefined ice", None]
     assert table[index[0, 2]][1] == (0, 120, 0) and table[index[1, 0]][1] == (200, 0, 0)
     assert guess_code(stage) == "stage" and guess_code(conc) == "concentration"
     with pytest.raises(ValueError, match="'concentration' or 'stage'"):
@@ -98,8 +105,7 @@ def ice_chart():
     conc = np.where(lon[None, :] < 40, 9.0, 5.0) + np.zeros((51, 1))
     land = np.zeros(stage.shape, bool)
     land[20:30, 70:90] = True
-    cost = xr.DataArray(np.where(stage == 93, 1.0, 3.0), dims=("lat", "lon"),
-                        coords={"lat": lat, "lon": lon})
+    cost = xr.DataArray(np.where(stage == 93, 1.0, 3.0), dims=("lat", "lon"), coords={"lat": lat, "lon": lon})
     return cost, land, stage, conc
 
 
@@ -108,6 +114,7 @@ def test_polar_map_in_wmo_colours_offline(ice_chart, tmp_path, monkeypatch):
 
     def no_network(*args, **kwargs):
         raise AssertionError("the map tried to use the network")
+
     monkeypatch.setattr(socket.socket, "connect", no_network)  # no Natural Earth download
     cost, land, stage, conc = ice_chart
     r = seaway.route(cost, (78, 22), (77, 58), land=land).smoothed()

@@ -40,7 +40,8 @@ def test_legs_course_distance_time_cost(equator):
     assert east.cost + north.cost == pytest.approx(r.cost, rel=1e-12)
     s = r.summary()
     assert s["length_nm"] == pytest.approx(3 * deg_km / 1.852) and s["time_h"] == pytest.approx(
-        3 * deg_km / 1.852 / 10)
+        3 * deg_km / 1.852 / 10
+    )
 
 
 def test_str_prints_a_table(equator):
@@ -138,6 +139,7 @@ def test_write_is_atomic(tmp_path, monkeypatch):
 
     def fail(*_):
         raise OSError("disk full")
+
     monkeypatch.setattr(os, "replace", fail)
     with pytest.raises(OSError, match="disk full"):
         export.write_atomically(target, "new")
@@ -145,6 +147,7 @@ def test_write_is_atomic(tmp_path, monkeypatch):
 
 
 # --- atomic exports ------------------------------------------------------------------------
+
 
 def _route():
     return seaway.route(_dataset().cost, (71.0, 61.0), (73.0, 69.0), neighbourhood=5)

@@ -64,7 +64,9 @@ def test_rtz_carries_the_calculated_schedule(voyage):
     t, legs = _times(voyage), voyage.legs()
     assert elems[0].get("etd") == "2026-01-01T03:00:00Z" and elems[0].get("eta") is None
     for e, i, leg in zip(elems[1:], voyage.waypoint_index[1:], legs):
-        assert e.get("eta") == str(_at(t[i])) + "Z" and float(e.get("speed")) == pytest.approx(leg.speed_kn, abs=0.005)
+        assert e.get("eta") == str(_at(t[i])) + "Z" and float(e.get("speed")) == pytest.approx(
+            leg.speed_kn, abs=0.005
+        )
     assert elems[-1].get("etd") is None
 
 
@@ -81,7 +83,9 @@ def test_geojson_gpx_and_csv_carry_the_times(voyage):
     comments = [line for line in text.splitlines() if line.startswith("#")]
     assert f"# departure 2026-01-01T03:00:00Z, arrival {props['arrival']}" in comments
     assert any(c.startswith("# forecast forecast in memory (2026-01-01T00:00") for c in comments)
-    rows = list(csv.DictReader(io.StringIO("\n".join(line for line in text.splitlines() if not line.startswith("#")))))
+    rows = list(
+        csv.DictReader(io.StringIO("\n".join(line for line in text.splitlines() if not line.startswith("#"))))
+    )
     assert rows[0]["etd"] == "2026-01-01T03:00:00Z" and rows[-1]["eta"] == props["arrival"]
     assert float(rows[1]["time_h"]) == pytest.approx(voyage.legs()[0].time_h, abs=5e-4)
 
@@ -111,8 +115,15 @@ def test_a_fuel_route_has_its_schedule_from_its_hours_not_its_tonnes():
 
     fc = forecast(frames=6, ce=0.5, cn=0.0)
     fuel = FuelCurve.cubic(12.0, 1.0, 8.0, 14.0)
-    r = route_fuel(fc, (60.2, 0.2), (61.8, 2.8), vessel=Vessel(speed_kn=12.0, speed_loss="none"), fuel=fuel,
-                   time_value_t_per_h=0.5, at_hours=6.0)
+    r = route_fuel(
+        fc,
+        (60.2, 0.2),
+        (61.8, 2.8),
+        vessel=Vessel(speed_kn=12.0, speed_loss="none"),
+        fuel=fuel,
+        time_value_t_per_h=0.5,
+        at_hours=6.0,
+    )
     v = r.stats.voyage
     assert v.hours == pytest.approx(r.stats.fuel.hours, rel=1e-12) and r.unit.startswith("t")
     assert v.departure == np.datetime64("2026-01-01T06:00") and "one forecast frame" in v.assumptions[0]

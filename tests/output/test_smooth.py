@@ -37,8 +37,9 @@ def test_long_geographic_leg_follows_the_great_circle():
     c, km = seg.leg(np.array([10.0, 2.0]), np.array([10.0, 190.0]))
     assert c == pytest.approx(seaway._core.haversine_km(69, 170.2, 69, 189.0), rel=1e-12)
     assert km == pytest.approx(c)
-    path = NumpySegments(r.chart, "integral", 5)._path(np.array([10.0, 2.0]), np.array([10.0, 190.0]),
-                                                       straight=False)
+    path = NumpySegments(r.chart, "integral", 5)._path(
+        np.array([10.0, 2.0]), np.array([10.0, 190.0]), straight=False
+    )
     assert path[:, 0].min() == pytest.approx(7.42, abs=0.02)  # 0.26 degrees north of 69 N
 
 
@@ -55,8 +56,11 @@ def test_uniform_chart_becomes_the_straight_line():
     # A route of one step has nothing to smooth, and says so (the CLI prints these figures).
     one = seaway.route(np.ones((5, 5)), (0, 0), (1, 1)).smoothed()
     assert one.cost == pytest.approx(np.sqrt(2)) and len(one.points) == 2
-    assert (one.stats.smoothing.cost_before, one.stats.smoothing.course_changes_after,
-            one.stats.smoothing.shortcut_legs) == (one.cost, 0, 1)
+    assert (
+        one.stats.smoothing.cost_before,
+        one.stats.smoothing.course_changes_after,
+        one.stats.smoothing.shortcut_legs,
+    ) == (one.cost, 0, 1)
 
 
 def test_island_is_rounded_at_its_corners_without_touching_it():

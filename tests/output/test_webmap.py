@@ -33,8 +33,7 @@ def ice_route():
     stage = np.where(lon[None, :] < 40, 93.0, 97.0) + np.zeros((51, 1))
     land = np.zeros(stage.shape, bool)
     land[20:30, 70:90] = True
-    cost = xr.DataArray(np.where(stage == 93, 1.0, 3.0), dims=("lat", "lon"),
-                        coords={"lat": lat, "lon": lon})
+    cost = xr.DataArray(np.where(stage == 93, 1.0, 3.0), dims=("lat", "lon"), coords={"lat": lat, "lon": lon})
     r = seaway.route(cost, (78, 22), (77, 58), land=land).smoothed()
     r = r.with_environment({"stage_of_development": stage})
     r.speed_kn = 12.0
@@ -44,10 +43,12 @@ def ice_route():
 def _overlays(page):
     """[(PNG image, [[south, west], [north, east]])] of the page's image layers, in order."""
     out = []
-    for m in re.finditer(r'L\.imageOverlay\(\s*"data:image/png;base64,([^"]+)",\s*(\[\[.*?\]\])',
-                         page, flags=re.S):
-        out.append((image.imread(io.BytesIO(base64.b64decode(m.group(1))), format="png"),
-                    json.loads(m.group(2))))
+    for m in re.finditer(
+        r'L\.imageOverlay\(\s*"data:image/png;base64,([^"]+)",\s*(\[\[.*?\]\])', page, flags=re.S
+    ):
+        out.append(
+            (image.imread(io.BytesIO(base64.b64decode(m.group(1))), format="png"), json.loads(m.group(2)))
+        )
     return out
 
 
@@ -74,15 +75,16 @@ def test_the_page_holds_the_route_its_waypoints_and_the_ice(ice_route):
     rgb = np.rint(chart[..., :3] * 255).astype(int)
     west, east = rgb[5, 10], rgb[5, -10]
     assert tuple(west) == (0, 120, 0) and tuple(east) == (200, 0, 0)  # thick FY, multi-year
+
     # The island (rows 20-29: 78.05-77.05 N) lands on the rows of Web Mercator that cover it:
     # image row i (centre at i + 0.5 of 51) is land iff its centre's y lies within the island's.
     def merc(lat):
         return np.degrees(np.arcsinh(np.tan(np.radians(lat))))
+
     top, bottom = ((merc(80.05) - merc(v)) / (merc(80.05) - merc(74.95)) * 51 for v in (78.05, 77.05))
     island = np.flatnonzero((np.abs(rgb - [200, 185, 150]).max(axis=-1) == 0).any(axis=1))  # tan
     np.testing.assert_array_equal(island, [i for i in range(51) if top < i + 0.5 < bottom])
-    for name in ("land (global-land-mask)", "ice: WMO colour code by stage of development",
-                 '"route"'):
+    for name in ("land (global-land-mask)", "ice: WMO colour code by stage of development", '"route"'):
         assert name in page
     assert "multi-year ice" in page and "thick first-year ice" in page  # the legend
 
@@ -103,8 +105,7 @@ def test_a_route_across_the_antimeridian_stays_continuous():
     cost = xr.DataArray(np.ones((41, 81)), dims=("lat", "lon"), coords={"lat": lat, "lon": lon})
     r = seaway.route(cost, (65, 172), (65, -172))
     page = webmap.html_text(r)
-    line = np.array(json.loads(re.search(r"L\.polyline\(\s*(\[\[.*?\]\])", page,
-                                         flags=re.S).group(1)))
+    line = np.array(json.loads(re.search(r"L\.polyline\(\s*(\[\[.*?\]\])", page, flags=re.S).group(1)))
     assert line[0, 1] == pytest.approx(172) and line[-1, 1] == pytest.approx(188)
     assert np.all(np.abs(np.diff(line[:, 1])) < 1)
     (_, _), (_, bounds) = _overlays(page)
@@ -154,8 +155,9 @@ def test_a_chart_in_any_row_and_column_order_gives_the_same_image(ice_route):
 def test_a_cost_map_without_ice_shows_the_cost():
     lat, lon = np.linspace(70, 60, 21), np.linspace(10, 30, 41)
     u = np.tile(np.linspace(1, 5, 41), (21, 1))
-    r = seaway.route(xr.DataArray(u, dims=("lat", "lon"), coords={"lat": lat, "lon": lon}),
-                     (65, 11), (65, 29))
+    r = seaway.route(
+        xr.DataArray(u, dims=("lat", "lon"), coords={"lat": lat, "lon": lon}), (65, 11), (65, 29)
+    )
     page = webmap.html_text(r)
     assert "cost per unit length (1 dark to 5 light)" in page
     (_, _), (chart, _) = _overlays(page)
@@ -191,13 +193,21 @@ def test_leaflet_builds_the_map_in_a_headless_dom(ice_route, tmp_path):
     layers, the route, a marker with a popup per waypoint, the three overlay switches."""
     path = tmp_path / "route.html"
     ice_route.to_html(path)
-    done = subprocess.run(["node", str(Path(__file__).parents[1] / "support" / "webmap_check.js"), str(path)],
-                          capture_output=True, text=True, env={"NODE_PATH": _jsdom()}, timeout=120)
+    done = subprocess.run(
+        ["node", str(Path(__file__).parents[1] / "support" / "webmap_check.js"), str(path)],
+        capture_output=True,
+        text=True,
+        env={"NODE_PATH": _jsdom()},
+        timeout=120,
+    )
     assert done.returncode == 0, done.stderr
     seen = json.loads(done.stdout)
     n = len(ice_route.waypoint_index)
     assert seen["errors"] == [] and seen["leaflet"] == "1.9.4"
     assert seen["layers"]["image"] == 2 and seen["layers"]["polyline"] == 1
     assert seen["layers"]["circle"] == n and seen["popups"] == n
-    assert seen["controls"] == ["land (global-land-mask)",
-                                "ice: WMO colour code by stage of development", "route"]
+    assert seen["controls"] == [
+        "land (global-land-mask)",
+        "ice: WMO colour code by stage of development",
+        "route",
+    ]

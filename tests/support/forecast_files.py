@@ -31,19 +31,27 @@ def gale():
     cur_e = np.full(hs.shape, 0.3, np.float32) * np.cos(np.radians(la))[None].astype(np.float32)
     cur_n = np.full(hs.shape, 0.1, np.float32)
     times = T0 + np.arange(FRAMES) * np.timedelta64(STEP_H, "h")
-    return dict(hs=hs, wdir=wdir, per=per, wind_e=wind_e, wind_n=wind_n, cur_e=cur_e,
-                cur_n=cur_n, times=times)
+    return dict(
+        hs=hs, wdir=wdir, per=per, wind_e=wind_e, wind_n=wind_n, cur_e=cur_e, cur_n=cur_n, times=times
+    )
 
 
 def in_memory(keys=("hs", "wdir", "per", "wind_e", "wind_n", "cur_e", "cur_n")):
     """The gale as a CF Dataset with standard names (the twin the files are checked against)."""
     g = gale()
-    names = {"hs": "sea_surface_wave_significant_height", "wdir": "sea_surface_wave_from_direction",
-             "per": "sea_surface_wave_mean_period", "wind_e": "eastward_wind",
-             "wind_n": "northward_wind", "cur_e": "eastward_sea_water_velocity",
-             "cur_n": "northward_sea_water_velocity"}
-    return xr.Dataset({k: (("time", "lat", "lon"), g[k], {"standard_name": names[k]}) for k in keys},
-                      coords={"time": g["times"], "lat": LAT, "lon": LON})
+    names = {
+        "hs": "sea_surface_wave_significant_height",
+        "wdir": "sea_surface_wave_from_direction",
+        "per": "sea_surface_wave_mean_period",
+        "wind_e": "eastward_wind",
+        "wind_n": "northward_wind",
+        "cur_e": "eastward_sea_water_velocity",
+        "cur_n": "northward_sea_water_velocity",
+    }
+    return xr.Dataset(
+        {k: (("time", "lat", "lon"), g[k], {"standard_name": names[k]}) for k in keys},
+        coords={"time": g["times"], "lat": LAT, "lon": LON},
+    )
 
 
 def write_cdo_waves(path):
@@ -54,17 +62,46 @@ def write_cdo_waves(path):
     day = g["times"].astype("datetime64[D]")
     frac = (g["times"] - day) / np.timedelta64(1, "D")
     ymd = np.array([int(str(d).replace("-", "")) for d in day], float) + frac
-    data = {f"var{code}": (("time", "lat", "lon"), g[key], {"table": np.int32(140), "code": np.int32(code)})
-            for code, key in ((229, "hs"), (230, "wdir"), (232, "per"))}
-    ds = xr.Dataset(data, coords={
-        "time": ("time", ymd, {"standard_name": "time", "units": "day as %Y%m%d.%f",
-                               "calendar": "proleptic_gregorian", "axis": "T"}),
-        "lat": ("lat", LAT, {"standard_name": "latitude", "long_name": "latitude",
-                             "units": "degrees_north", "axis": "Y"}),
-        "lon": ("lon", LON, {"standard_name": "longitude", "long_name": "longitude",
-                             "units": "degrees_east", "axis": "X"})},
-        attrs={"CDI": "Climate Data Interface version 2.0.5", "Conventions": "CF-1.6",
-               "history": "cdo -a -f nc copy waves.grib waves.nc", "CDO": "Climate Data Operators version 2.0.5"})
+    data = {
+        f"var{code}": (("time", "lat", "lon"), g[key], {"table": np.int32(140), "code": np.int32(code)})
+        for code, key in ((229, "hs"), (230, "wdir"), (232, "per"))
+    }
+    ds = xr.Dataset(
+        data,
+        coords={
+            "time": (
+                "time",
+                ymd,
+                {
+                    "standard_name": "time",
+                    "units": "day as %Y%m%d.%f",
+                    "calendar": "proleptic_gregorian",
+                    "axis": "T",
+                },
+            ),
+            "lat": (
+                "lat",
+                LAT,
+                {"standard_name": "latitude", "long_name": "latitude", "units": "degrees_north", "axis": "Y"},
+            ),
+            "lon": (
+                "lon",
+                LON,
+                {
+                    "standard_name": "longitude",
+                    "long_name": "longitude",
+                    "units": "degrees_east",
+                    "axis": "X",
+                },
+            ),
+        },
+        attrs={
+            "CDI": "Climate Data Interface version 2.0.5",
+            "Conventions": "CF-1.6",
+            "history": "cdo -a -f nc copy waves.grib waves.nc",
+            "CDO": "Climate Data Operators version 2.0.5",
+        },
+    )
     ds.to_netcdf(path, encoding={"time": {"dtype": "float64"}})
     return path
 
@@ -74,8 +111,11 @@ def write_cf_per_variable(folder, step_h=STEP_H):
     'hours since' time units; the currents file every `step_h` hours."""
     full = in_memory()
     paths = []
-    for name, keys in (("waves", ["hs", "wdir", "per"]), ("winds", ["wind_e", "wind_n"]),
-                       ("currents", ["cur_e", "cur_n"])):
+    for name, keys in (
+        ("waves", ["hs", "wdir", "per"]),
+        ("winds", ["wind_e", "wind_n"]),
+        ("currents", ["cur_e", "cur_n"]),
+    ):
         ds = full[keys]
         if name == "currents" and step_h != STEP_H:
             ds = ds.isel(time=slice(None, None, step_h // STEP_H))
@@ -91,15 +131,28 @@ def write_grib(path, eccodes):
     g = gale()
     with open(path, "wb") as f:
         for k in range(FRAMES):
-            for short, key in (("swh", "hs"), ("mwd", "wdir"), ("mwp", "per"), ("10u", "wind_e"), ("10v", "wind_n")):
+            for short, key in (
+                ("swh", "hs"),
+                ("mwd", "wdir"),
+                ("mwp", "per"),
+                ("10u", "wind_e"),
+                ("10v", "wind_n"),
+            ):
                 h = eccodes.codes_grib_new_from_samples("regular_ll_sfc_grib2")
-                for name, value in dict(Ni=LON.size, Nj=LAT.size, latitudeOfFirstGridPointInDegrees=float(LAT[0]),
-                                        longitudeOfFirstGridPointInDegrees=float(LON[0]),
-                                        latitudeOfLastGridPointInDegrees=float(LAT[-1]),
-                                        longitudeOfLastGridPointInDegrees=float(LON[-1]),
-                                        iDirectionIncrementInDegrees=0.25, jDirectionIncrementInDegrees=0.25,
-                                        dataDate=20261001, dataTime=0, stepRange=str(k * STEP_H),
-                                        shortName=short).items():
+                for name, value in dict(
+                    Ni=LON.size,
+                    Nj=LAT.size,
+                    latitudeOfFirstGridPointInDegrees=float(LAT[0]),
+                    longitudeOfFirstGridPointInDegrees=float(LON[0]),
+                    latitudeOfLastGridPointInDegrees=float(LAT[-1]),
+                    longitudeOfLastGridPointInDegrees=float(LON[-1]),
+                    iDirectionIncrementInDegrees=0.25,
+                    jDirectionIncrementInDegrees=0.25,
+                    dataDate=20261001,
+                    dataTime=0,
+                    stepRange=str(k * STEP_H),
+                    shortName=short,
+                ).items():
                     eccodes.codes_set(h, name, value)
                 eccodes.codes_set_values(h, g[key][k].astype(np.float64).ravel())
                 eccodes.codes_write(h, f)

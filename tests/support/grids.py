@@ -51,7 +51,9 @@ def make_chart(seed: int, grid: str, zeros: bool):
     else:
         if grid == "geo_wrap":
             dlat, dlon = 4.0 * (1 if seed % 2 else -1), (360.0 / cols) * (1 if seed % 4 < 2 else -1)
-            lat0 = float(rng.uniform(-60, 60 - 4 * rows)) if dlat > 0 else float(rng.uniform(-60 + 4 * rows, 60))
+            lat0 = (
+                float(rng.uniform(-60, 60 - 4 * rows)) if dlat > 0 else float(rng.uniform(-60 + 4 * rows, 60))
+            )
             lon0 = float(rng.uniform(-180, 180))
         else:
             sign = 1 if grid == "geo_asc" else -1
@@ -84,5 +86,7 @@ def check_path(ref: RefGraph, r, start_rc, end_rc, geo):
         lat, lon = geo["lat"], geo["lon"]
         legs = [haversine(lat[p[0]], lon[p[1]], lat[q[0]], lon[q[1]]) for p, q in zip(px[:-1], px[1:])]
     else:
-        legs = [math.hypot((q[0] - p[0]) * geo["dy"], (q[1] - p[1]) * geo["dx"]) for p, q in zip(px[:-1], px[1:])]
+        legs = [
+            math.hypot((q[0] - p[0]) * geo["dy"], (q[1] - p[1]) * geo["dx"]) for p, q in zip(px[:-1], px[1:])
+        ]
     assert r.length == pytest.approx(float(np.sum(legs)), rel=RTOL, abs=1e-12)

@@ -93,8 +93,9 @@ def haversine(lat1, lon1, lat2, lon2):
 class RefGraph:
     """The explicit edge list of a chart under the contract, and Dijkstra over it."""
 
-    def __init__(self, cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, k=5,
-                 directions="full", edge_cost="max"):
+    def __init__(
+        self, cost, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, k=5, directions="full", edge_cost="max"
+    ):
         u = np.array(cost, dtype=np.float64)
         self.rows, self.cols = R, C = u.shape
         ok = np.isfinite(u)
@@ -189,20 +190,25 @@ class RefGraph:
         return np.array(dist).reshape(self.rows, self.cols)
 
 
-def reference_costs(cost, start_rc, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, k=5,
-                    directions="full", edge_cost="max") -> np.ndarray:
+def reference_costs(
+    cost, start_rc, *, lat=None, lon=None, dx=1.0, dy=1.0, land=None, k=5, directions="full", edge_cost="max"
+) -> np.ndarray:
     """(rows, cols) least cost from start_rc (row, col) under the contract; inf if unreachable."""
-    g = RefGraph(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, k=k, directions=directions,
-                 edge_cost=edge_cost)
+    g = RefGraph(
+        cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, k=k, directions=directions, edge_cost=edge_cost
+    )
     return g.costs(start_rc)
 
 
 def refraction_optimum(u1, u2, a, b, y0):
     """(cost, x): the exact least cost from a to b ((y, x)) across the straight interface y = y0
     between media of cost u1 (a's side) and u2, and where it crosses (bisection on Snell's law)."""
+
     def slope(x):
-        return (u1 * (x - a[1]) / np.hypot(x - a[1], y0 - a[0])
-                - u2 * (b[1] - x) / np.hypot(b[1] - x, b[0] - y0))
+        return u1 * (x - a[1]) / np.hypot(x - a[1], y0 - a[0]) - u2 * (b[1] - x) / np.hypot(
+            b[1] - x, b[0] - y0
+        )
+
     lo, hi = a[1], b[1]
     for _ in range(200):
         mid = (lo + hi) / 2

@@ -119,8 +119,12 @@ class Segments:
 
     def _lengths(self, a, b) -> np.ndarray:
         if self.geographic:
-            return geo.distance_km(self.lat0 + a[:, 0] * self.dlat, self.lon0 + a[:, 1] * self.dlon,
-                                   self.lat0 + b[:, 0] * self.dlat, self.lon0 + b[:, 1] * self.dlon)
+            return geo.distance_km(
+                self.lat0 + a[:, 0] * self.dlat,
+                self.lon0 + a[:, 1] * self.dlon,
+                self.lat0 + b[:, 0] * self.dlat,
+                self.lon0 + b[:, 1] * self.dlon,
+            )
         return np.hypot((b[:, 0] - a[:, 0]) * self.dy, (b[:, 1] - a[:, 1]) * self.dx)
 
     # -- legs --------------------------------------------------------------------------------

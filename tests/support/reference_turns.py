@@ -28,8 +28,7 @@ def turn_angle(g: RefGraph, v: int, a, b, dx=1.0, dy=1.0) -> float:
     return math.degrees(math.acos(min(1.0, max(-1.0, cos))))
 
 
-def turn_route_cost(g: RefGraph, start_rc, end_rc, angles, costs, dx=1.0, dy=1.0,
-                    incoming=None) -> float:
+def turn_route_cost(g: RefGraph, start_rc, end_rc, angles, costs, dx=1.0, dy=1.0, incoming=None) -> float:
     """Least cost from start to end where each course change at a pixel costs
     np.interp(angle, angles, costs); the first step is free of penalty unless `incoming` (the
     (di, dj) that reached the start) is given."""
@@ -41,7 +40,11 @@ def turn_route_cost(g: RefGraph, start_rc, end_rc, angles, costs, dx=1.0, dy=1.0
         out.setdefault(a, []).append((b, w, g.offset(divmod(a, g.cols), divmod(b, g.cols))))
     heap = []
     for w, c, o in out.get(s, []):
-        pen = 0.0 if incoming is None else float(np.interp(turn_angle(g, s, incoming, o, dx, dy), angles, costs))
+        pen = (
+            0.0
+            if incoming is None
+            else float(np.interp(turn_angle(g, s, incoming, o, dx, dy), angles, costs))
+        )
         heapq.heappush(heap, (c + pen, w, o))
     done = set()
     while heap:

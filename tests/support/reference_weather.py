@@ -21,8 +21,19 @@ class Weather:
     (m/s); frame k valid first_h + k step_h hours after departure, linear in between, held
     outside. ship: speed loss 'khokhlov' or 'none', displacement_t, max_wind_ms, max_wave_m."""
 
-    def __init__(self, fields, lat, lon, *, first_h=0.0, step_h=6.0, displacement_t=15000.0,
-                 khokhlov=True, max_wind_ms=25.0, max_wave_m=5.0):
+    def __init__(
+        self,
+        fields,
+        lat,
+        lon,
+        *,
+        first_h=0.0,
+        step_h=6.0,
+        displacement_t=15000.0,
+        khokhlov=True,
+        max_wind_ms=25.0,
+        max_wave_m=5.0,
+    ):
         self.f = {k: np.asarray(v, dtype=np.float64) for k, v in fields.items()}
         self.lat, self.lon = np.asarray(lat, float), np.asarray(lon, float)
         self.first_h, self.step_h = first_h, step_h
@@ -40,8 +51,10 @@ class Weather:
     def course(self, p, q):
         p1, p2 = math.radians(self.lat[p[0]]), math.radians(self.lat[q[0]])
         dl = math.radians(self.lon[q[1]] - self.lon[p[1]])
-        return math.atan2(math.sin(dl) * math.cos(p2),
-                          math.cos(p1) * math.sin(p2) - math.sin(p1) * math.cos(p2) * math.cos(dl))
+        return math.atan2(
+            math.sin(dl) * math.cos(p2),
+            math.cos(p1) * math.sin(p2) - math.sin(p1) * math.cos(p2) * math.cos(dl),
+        )
 
     def speed(self, p, q, t, v0):
         """Speed over ground (kn) on the step p -> q started at t, from the speed v0 through

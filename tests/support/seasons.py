@@ -23,10 +23,14 @@ def retreating_edge(days=7, edge0=72.0, per_day=0.6):
         sa.append(s)
     land = (lo <= 62.0) & (la >= 73.0)
     time = DAY0 + np.arange(days) * np.timedelta64(1, "D")
-    return xr.Dataset({"CT": (("time", "lat", "lon"), np.array(ct)),
-                       "SA": (("time", "lat", "lon"), np.array(sa)),
-                       "land": (("time", "lat", "lon"), np.broadcast_to(land, (days,) + land.shape))},
-                      coords={"time": time, "lat": lat, "lon": lon})
+    return xr.Dataset(
+        {
+            "CT": (("time", "lat", "lon"), np.array(ct)),
+            "SA": (("time", "lat", "lon"), np.array(sa)),
+            "land": (("time", "lat", "lon"), np.broadcast_to(land, (days,) + land.shape)),
+        },
+        coords={"time": time, "lat": lat, "lon": lon},
+    )
 
 
 CHANNEL_LAT = np.round(np.arange(71.2, 69.99, -0.02), 6)  # 61 rows, 2.22 km apart
@@ -49,6 +53,11 @@ def channel_season(ice, days=3, wall=None):
         ct[day][box], sa[day][box] = conc, stage
     ct[:, land] = np.nan
     time = DAY0 + np.arange(days) * np.timedelta64(1, "D")
-    return xr.Dataset({"CT": (("time", "lat", "lon"), ct), "SA": (("time", "lat", "lon"), sa),
-                       "land": (("time", "lat", "lon"), np.broadcast_to(land, ct.shape))},
-                      coords={"time": time, "lat": CHANNEL_LAT, "lon": CHANNEL_LON})
+    return xr.Dataset(
+        {
+            "CT": (("time", "lat", "lon"), ct),
+            "SA": (("time", "lat", "lon"), sa),
+            "land": (("time", "lat", "lon"), np.broadcast_to(land, ct.shape)),
+        },
+        coords={"time": time, "lat": CHANNEL_LAT, "lon": CHANNEL_LON},
+    )

@@ -18,6 +18,13 @@ def write_chart(path, rows):
     fields = [np.array([attrs.get(n, "-9") for _, attrs in rows], dtype=object) for n in FIELDS]
     with warnings.catch_warnings():
         warnings.filterwarnings("ignore", message=".*winding", category=RuntimeWarning)
-        pyogrio.raw.write(str(path), geoms, fields, fields=FIELDS, geometry_type="Polygon",
-                          crs="EPSG:4326", driver="ESRI Shapefile")
+        pyogrio.raw.write(
+            str(path),
+            geoms,
+            fields,
+            fields=FIELDS,
+            geometry_type="Polygon",
+            crs="EPSG:4326",
+            driver="ESRI Shapefile",
+        )
     return path

@@ -56,15 +56,22 @@ def test_least_danger_matches_lexicographic_brute_force(seed):
     start, end = (int(rng.integers(0, 7)), 0), (int(rng.integers(0, 7)), 8)
     want_d, want_t = lexicographic_reference(lat, lon, w32, start, end, 12.0, 11.0)
     for method in ("dijkstra", "astar"):
-        r = route_time(fc, (lat[start[0]], lon[0]), (lat[end[0]], lon[8]), vessel=SHIP,
-                       neighbourhood=3, method=method)
+        r = route_time(
+            fc, (lat[start[0]], lon[0]), (lat[end[0]], lon[8]), vessel=SHIP, neighbourhood=3, method=method
+        )
         assert r.stats.through_danger is True
         assert r.stats.danger.hours == pytest.approx(want_d, rel=1e-9)
         assert r.cost == pytest.approx(want_t, rel=1e-9)
         assert sum(leg.hours for leg in r.stats.danger.legs) == pytest.approx(want_d, rel=1e-9)
     with pytest.raises(seaway.NoRouteError):
-        route_time(fc, (lat[start[0]], lon[0]), (lat[end[0]], lon[8]), vessel=SHIP,
-                   neighbourhood=3, if_no_safe_route="raise")
+        route_time(
+            fc,
+            (lat[start[0]], lon[0]),
+            (lat[end[0]], lon[8]),
+            vessel=SHIP,
+            neighbourhood=3,
+            if_no_safe_route="raise",
+        )
 
 
 def test_storm_wall_crossed_where_it_is_narrowest_in_time():
@@ -81,7 +88,7 @@ def test_storm_wall_crossed_where_it_is_narrowest_in_time():
     (leg,) = r.stats.danger.legs
     assert leg.start == pytest.approx((lat_top, 1.4)) and leg.end == pytest.approx((lat_top, 1.6))
     assert leg.hours == pytest.approx(2 * step, rel=1e-9)
-    assert leg.start_h == pytest.approx(float(np.sum(r.step_costs[:leg.steps[0]])), rel=1e-12)
+    assert leg.start_h == pytest.approx(float(np.sum(r.step_costs[: leg.steps[0]])), rel=1e-12)
     assert "through danger" in r.name
     assert r.stats.voyage.hours == r.cost and r.stats.voyage.wait_h.tolist() == [0.0] * len(r.step_costs)
 
@@ -115,8 +122,7 @@ def test_moving_storm_danger_hours_re_walked():
     strong = np.interp(elapsed[:-1], [0, 6, 12, 18], [20, 20, 0, 0]) > 11.0
     np.testing.assert_array_equal(r.stats.danger.step_h > 0, strong)
     assert r.stats.danger.hours == pytest.approx(float(np.sum(r.step_costs[strong])), rel=1e-12)
-    calm = route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=SHIP, neighbourhood=5,
-                      departure="2026-01-01T12")
+    calm = route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=SHIP, neighbourhood=5, departure="2026-01-01T12")
     assert not calm.stats.through_danger and calm.stats.danger is None
 
 
@@ -144,6 +150,11 @@ def test_wave_danger_zone_fallback():
     assert r.stats.danger.hours == pytest.approx(2 * step, rel=1e-9)
     (leg,) = r.stats.danger.legs
     assert leg.start == pytest.approx((62.0, 1.4)) and leg.end == pytest.approx((62.0, 1.6))
-    calm = route_time(forecast(hs=np.full((21, 31), 2.0), ce=0.0, cn=0.0), (61.0, 0.2),
-                      (61.0, 2.8), vessel=ship, neighbourhood=3)
+    calm = route_time(
+        forecast(hs=np.full((21, 31), 2.0), ce=0.0, cn=0.0),
+        (61.0, 0.2),
+        (61.0, 2.8),
+        vessel=ship,
+        neighbourhood=3,
+    )
     assert not calm.stats.through_danger and calm.stats.danger is None

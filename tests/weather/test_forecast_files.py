@@ -17,8 +17,11 @@ from support.netcdf import truncated_netcdf as _truncated
 def test_truncated_classic_netcdf_forecast_is_an_error_not_zeros(tmp_path, keep):
     """netCDF-C reads the missing tail of a classic file as zeros; seaway checks the size."""
     bad, size = _truncated(tmp_path, "NETCDF3_64BIT", keep)
-    with pytest.raises(ValueError, match=rf"{bad.name}: the file is truncated: it has "
-                                         rf"{bad.stat().st_size} bytes .* up to byte {size}"):
+    with pytest.raises(
+        ValueError,
+        match=rf"{bad.name}: the file is truncated: it has "
+        rf"{bad.stat().st_size} bytes .* up to byte {size}",
+    ):
         open_forecast(bad)
 
 
@@ -29,8 +32,10 @@ def test_truncated_netcdf_forecasts_name_the_file(tmp_path, fmt, keep):
         open_forecast(bad)
 
 
-@pytest.mark.parametrize("content", [b"", b"CDF", b"CDF\x01\x00\x00", b"not a netcdf file" * 9,
-                                     b"\x89HDF\r\n\x1a\n" + b"\x00" * 40])
+@pytest.mark.parametrize(
+    "content",
+    [b"", b"CDF", b"CDF\x01\x00\x00", b"not a netcdf file" * 9, b"\x89HDF\r\n\x1a\n" + b"\x00" * 40],
+)
 def test_malformed_netcdf_forecasts_name_the_file(tmp_path, content):
     bad = tmp_path / "bad.nc"
     bad.write_bytes(content)
@@ -50,5 +55,7 @@ def test_grib_without_cfgrib_names_the_fix(tmp_path, monkeypatch):
     monkeypatch.setitem(sys.modules, "cfgrib", None)  # as if cfgrib were not installed
     path = tmp_path / "gfs.grib2"
     path.write_bytes(b"GRIB" + b"\x00" * 100)
-    with pytest.raises(ImportError, match=r'gfs.grib2: reading GRIB needs cfgrib: pip install "seaway\[grib\]"'):
+    with pytest.raises(
+        ImportError, match=r'gfs.grib2: reading GRIB needs cfgrib: pip install "seaway\[grib\]"'
+    ):
         open_forecast(path)

@@ -29,8 +29,7 @@ def test_each_step_takes_the_cheapest_setting(time_value):
     # for every step, found here by hand over the settings.
     v, q = np.array(CURVE.speeds_kn), np.array(CURVE.rates_t_per_h)
     best = v[np.argmin((q + time_value) / v)]
-    r = route_fuel(forecast(), A, B, vessel=SHIP, fuel=CURVE, time_value_t_per_h=time_value,
-                   neighbourhood=3)
+    r = route_fuel(forecast(), A, B, vessel=SHIP, fuel=CURVE, time_value_t_per_h=time_value, neighbourhood=3)
     assert np.all(r.stats.fuel.speeds_kn == best)
     hours = KM / 1.852 / best
     assert r.stats.fuel.hours == pytest.approx(hours, rel=1e-9)
@@ -53,8 +52,7 @@ def test_least_fuel_within_a_deadline():
     full = KM / 1.852 / 24.0
     fuels = []
     for deadline in (1.1 * full, 1.5 * full, 2.2 * full):
-        r = route_min_fuel(forecast(), A, B, deadline_h=deadline, vessel=SHIP, fuel=CURVE,
-                           neighbourhood=3)
+        r = route_min_fuel(forecast(), A, B, deadline_h=deadline, vessel=SHIP, fuel=CURVE, neighbourhood=3)
         assert r.stats.fuel.hours <= deadline
         # No setting slower than the one chosen would still arrive in time.
         slower = [v for v in CURVE.speeds_kn if v < r.stats.fuel.speeds_kn[0]]
@@ -78,5 +76,4 @@ def test_a_deadline_no_speed_meets_is_a_no_route_error():
 
     full = KM / 1.852 / 24.0  # the quickest passage, at full speed
     with pytest.raises(NoRouteError, match="no route arrives within"):  # was a NameError
-        route_min_fuel(forecast(), A, B, deadline_h=0.9 * full, vessel=SHIP, fuel=CURVE,
-                       neighbourhood=3)
+        route_min_fuel(forecast(), A, B, deadline_h=0.9 * full, vessel=SHIP, fuel=CURVE, neighbourhood=3)

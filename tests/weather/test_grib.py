@@ -25,12 +25,20 @@ def _write_grib(path):
         for step, east in WIND.items():
             for short, value in (("10u", east), ("10v", 0.0)):
                 h = eccodes.codes_grib_new_from_samples("regular_ll_sfc_grib2")
-                keys = dict(Ni=LON.size, Nj=LAT.size, latitudeOfFirstGridPointInDegrees=75.0,
-                            longitudeOfFirstGridPointInDegrees=20.0,
-                            latitudeOfLastGridPointInDegrees=70.0,
-                            longitudeOfLastGridPointInDegrees=30.0, iDirectionIncrementInDegrees=0.5,
-                            jDirectionIncrementInDegrees=0.5, dataDate=20160201, dataTime=1200,
-                            stepRange=str(step), shortName=short)
+                keys = dict(
+                    Ni=LON.size,
+                    Nj=LAT.size,
+                    latitudeOfFirstGridPointInDegrees=75.0,
+                    longitudeOfFirstGridPointInDegrees=20.0,
+                    latitudeOfLastGridPointInDegrees=70.0,
+                    longitudeOfLastGridPointInDegrees=30.0,
+                    iDirectionIncrementInDegrees=0.5,
+                    jDirectionIncrementInDegrees=0.5,
+                    dataDate=20160201,
+                    dataTime=1200,
+                    stepRange=str(step),
+                    shortName=short,
+                )
                 for k, v in keys.items():
                     eccodes.codes_set(h, k, v)
                 eccodes.codes_set_values(h, np.full(LAT.size * LON.size, value))
@@ -41,9 +49,13 @@ def _write_grib(path):
 def _in_memory():
     shape = (len(WIND), LAT.size, LON.size)
     east = np.broadcast_to(np.array(list(WIND.values()))[:, None, None], shape)
-    return xr.Dataset({"u10": (("time", "lat", "lon"), east, {"standard_name": "eastward_wind"}),
-                       "v10": (("time", "lat", "lon"), np.zeros(shape), {"standard_name": "northward_wind"})},
-                      coords={"time": VALID, "lat": LAT, "lon": LON})
+    return xr.Dataset(
+        {
+            "u10": (("time", "lat", "lon"), east, {"standard_name": "eastward_wind"}),
+            "v10": (("time", "lat", "lon"), np.zeros(shape), {"standard_name": "northward_wind"}),
+        },
+        coords={"time": VALID, "lat": LAT, "lon": LON},
+    )
 
 
 def test_grib_forecast_reads_valid_times_and_routes_as_the_same_forecast_in_memory(tmp_path):
@@ -66,8 +78,13 @@ def test_grib_forecast_reads_valid_times_and_routes_as_the_same_forecast_in_memo
 
 
 def test_grib_with_several_analyses_is_refused():
-    two = xr.Dataset({"u10": (("time", "step", "lat"), np.zeros((2, 3, 4)))},
-                     coords={"time": VALID[:2], "step": np.arange(3) * np.timedelta64(6, "h"),
-                             "valid_time": (("time", "step"), np.zeros((2, 3), "datetime64[ns]"))})
+    two = xr.Dataset(
+        {"u10": (("time", "step", "lat"), np.zeros((2, 3, 4)))},
+        coords={
+            "time": VALID[:2],
+            "step": np.arange(3) * np.timedelta64(6, "h"),
+            "valid_time": (("time", "step"), np.zeros((2, 3), "datetime64[ns]")),
+        },
+    )
     with pytest.raises(ValueError, match=r"holds 2 analyses of 3 steps; route on one: .*isel\(time=0\)"):
         grib_times(two, "gfs.grib2")

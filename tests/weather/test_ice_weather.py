@@ -23,14 +23,23 @@ SHIP = Vessel(speed_kn=12.0, displacement_t=15000.0)
 
 def _forecast_on(ds, frames=1, hours=6, **fields):
     """A CF forecast on the grid of the season `ds` (fields (frames, rows, cols) or scalars)."""
-    names = {"ce": "eastward_sea_water_velocity", "cn": "northward_sea_water_velocity",
-             "hs": "sea_surface_wave_significant_height", "wdir": "sea_surface_wave_from_direction",
-             "wind": "wind_speed"}
+    names = {
+        "ce": "eastward_sea_water_velocity",
+        "cn": "northward_sea_water_velocity",
+        "hs": "sea_surface_wave_significant_height",
+        "wdir": "sea_surface_wave_from_direction",
+        "wind": "wind_speed",
+    }
     shape = (frames, ds.sizes["lat"], ds.sizes["lon"])
     time = ds["time"].values[0] + np.arange(frames) * np.timedelta64(hours, "h")
-    data = {k: xr.DataArray(np.broadcast_to(np.asarray(v, np.float32), shape).astype(float),
-                            dims=("time", "lat", "lon"), attrs={"standard_name": names[k]})
-            for k, v in fields.items()}
+    data = {
+        k: xr.DataArray(
+            np.broadcast_to(np.asarray(v, np.float32), shape).astype(float),
+            dims=("time", "lat", "lon"),
+            attrs={"standard_name": names[k]},
+        )
+        for k, v in fields.items()
+    }
     return xr.Dataset(data, coords={"time": time, "lat": ds["lat"].values, "lon": ds["lon"].values})
 
 
@@ -46,7 +55,9 @@ def test_calm_weather_gives_the_ice_season_route_exactly():
     assert v.departure == DAY0 and v.ice_class == "Arc7" and v.charts_used == ice.stats.voyage.charts_used
     assert "2026-07-01T00:00 to 2026-07-04T00:00, every 24 h" in v.forecast
     # The voyage outlasts the forecast's last frame: persistence, said.
-    assert any("after the forecast's last time" in s for s in both.assumptions) == (v.arrival > calm.time.values[-1])
+    assert any("after the forecast's last time" in s for s in both.assumptions) == (
+        v.arrival > calm.time.values[-1]
+    )
 
 
 def test_current_along_a_meridian_adds_to_the_speed_in_ice_by_hand():
@@ -55,14 +66,20 @@ def test_current_along_a_meridian_adds_to_the_speed_in_ice_by_hand():
     # a route due north.
     lat, lon = np.arange(72.0, 74.01, 0.1), np.arange(60.0, 61.01, 0.1)
     shape = (1, lat.size, lon.size)
-    ds = xr.Dataset({"CT": (("time", "lat", "lon"), np.full(shape, 5.0)),
-                     "thickness": (("time", "lat", "lon"), np.full(shape, 0.7))},
-                    coords={"time": [DAY0], "lat": lat, "lon": lon})
+    ds = xr.Dataset(
+        {
+            "CT": (("time", "lat", "lon"), np.full(shape, 5.0)),
+            "thickness": (("time", "lat", "lon"), np.full(shape, 0.7)),
+        },
+        coords={"time": [DAY0], "lat": lat, "lon": lon},
+    )
     a, b = (72.0, 60.5), (74.0, 60.5)
-    north = route_ice_weather(ds, _forecast_on(ds, ce=0.0, cn=1.0), a, b, ice_class="Arc7",
-                              vessel=SHIP, neighbourhood=3)
-    south = route_ice_weather(ds, _forecast_on(ds, ce=0.0, cn=1.0), b, a, ice_class="Arc7",
-                              vessel=SHIP, neighbourhood=3)
+    north = route_ice_weather(
+        ds, _forecast_on(ds, ce=0.0, cn=1.0), a, b, ice_class="Arc7", vessel=SHIP, neighbourhood=3
+    )
+    south = route_ice_weather(
+        ds, _forecast_on(ds, ce=0.0, cn=1.0), b, a, ice_class="Arc7", vessel=SHIP, neighbourhood=3
+    )
     nm = float(haversine(72.0, 60.5, 74.0, 60.5)) / KM_PER_NM
     v_ice = 1.0 / (float(np.float32(1.0 / (6.0 * KM_PER_NM))) * KM_PER_NM)  # hours per km in float32
     assert v_ice == pytest.approx(6.0, rel=1e-7)
@@ -84,8 +101,10 @@ def test_the_class_limits_still_close_the_ice_a_following_current_crosses():
     ct, sa = np.zeros(shape), np.full(shape, np.nan)
     band = (lat[:, None] > 72.85) & (lat[:, None] < 73.15) & (lon[None, :] > 60.45)
     ct[0][band], sa[0][band] = 8.0, 87.0
-    ds = xr.Dataset({"CT": (("time", "lat", "lon"), ct), "SA": (("time", "lat", "lon"), sa)},
-                    coords={"time": [DAY0], "lat": lat, "lon": lon})
+    ds = xr.Dataset(
+        {"CT": (("time", "lat", "lon"), ct), "SA": (("time", "lat", "lon"), sa)},
+        coords={"time": [DAY0], "lat": lat, "lon": lon},
+    )
     fc = _forecast_on(ds, ce=0.0, cn=1.5)
     a, b = (72.0, 63.5), (74.0, 63.5)
     arc7 = route_ice_weather(ds, fc, a, b, ice_class="Arc7", vessel=SHIP)
@@ -94,7 +113,9 @@ def test_the_class_limits_still_close_the_ice_a_following_current_crosses():
     assert crossed.any() and not band[tuple(arc4.pixels.T)].any()
     assert arc4.pixels[:, 1].min() <= 4 and arc4.cost > arc7.cost  # round the band's west end
     across = np.broadcast_to((lat[:, None] > 72.85) & (lat[:, None] < 73.15), band.shape)
-    narrow = ds.assign(CT=(ds.CT.dims, np.where(across, 8.0, ct)), SA=(ds.SA.dims, np.where(across, 87.0, sa)))
+    narrow = ds.assign(
+        CT=(ds.CT.dims, np.where(across, 8.0, ct)), SA=(ds.SA.dims, np.where(across, 87.0, sa))
+    )
     with pytest.raises(seaway.NoRouteError, match="class Arc4"):
         route_ice_weather(narrow, fc, a, b, ice_class="Arc4", vessel=SHIP)
 
@@ -108,22 +129,31 @@ def test_ice_and_weather_equal_the_brute_force_over_all_paths(seed):
     # class's 8/10 (closed) in some charts; the ship may wait for a later chart.
     ct = rng.choice([0.0, 3.0, 6.0, 9.0], size=(charts, rows, cols), p=[0.3, 0.3, 0.25, 0.15])
     ct[:, 0, 0] = ct[:, -1, -1] = 3.0
-    ice = xr.Dataset({"CT": (("time", "lat", "lon"), ct),
-                      "thickness": (("time", "lat", "lon"), rng.uniform(0.0, 0.8, (charts, rows, cols)))},
-                     coords={"time": DAY0 + np.arange(charts) * np.timedelta64(12, "h"), "lat": lat, "lon": lon})
+    ice = xr.Dataset(
+        {
+            "CT": (("time", "lat", "lon"), ct),
+            "thickness": (("time", "lat", "lon"), rng.uniform(0.0, 0.8, (charts, rows, cols))),
+        },
+        coords={"time": DAY0 + np.arange(charts) * np.timedelta64(12, "h"), "lat": lat, "lon": lon},
+    )
     # Mild currents and waves changing every 6 h (FIFO), and a storm above 20 m/s fixed in time.
     wind = np.where(rng.random((rows, cols)) < 0.15, 24.0, 8.0)
     wind[0, 0] = wind[-1, -1] = 8.0
-    fields = dict(ce=rng.uniform(-0.8, 0.8, (frames, rows, cols)), cn=rng.uniform(-0.8, 0.8, (frames, rows, cols)),
-                  hs=rng.uniform(0.0, 1.5, (frames, rows, cols)), wdir=rng.uniform(0, 360, (frames, rows, cols)),
-                  wind=np.broadcast_to(wind, (frames, rows, cols)))
+    fields = dict(
+        ce=rng.uniform(-0.8, 0.8, (frames, rows, cols)),
+        cn=rng.uniform(-0.8, 0.8, (frames, rows, cols)),
+        hs=rng.uniform(0.0, 1.5, (frames, rows, cols)),
+        wdir=rng.uniform(0, 360, (frames, rows, cols)),
+        wind=np.broadcast_to(wind, (frames, rows, cols)),
+    )
     fc = _forecast_on(ice, frames=frames, hours=6, **fields)
     ship = Vessel(speed_kn=12.0, displacement_t=15000.0, max_wind_ms=20.0)
     grid = SeasonGrid(ice)
     model = IceWeatherTime(grid, ForecastGrid(fc), "Arc7", ship)
     weather = Weather({k: fc[k].values for k in fields}, lat, lon, max_wind_ms=20.0)
-    best = ice_weather_best_arrival(model.hours_per_km, list(model.valid_from_h), weather,
-                                    (0, 0), (rows - 1, cols - 1), k=3)
+    best = ice_weather_best_arrival(
+        model.hours_per_km, list(model.valid_from_h), weather, (0, 0), (rows - 1, cols - 1), k=3
+    )
     chart = grid.prepare(3)
     for method in ("dijkstra", "astar"):
         try:
@@ -179,15 +209,19 @@ def test_the_readme_kara_sea_autumn_example():
     ice, gale = kara_autumn()
     ship = load("pc6-general-cargo")
     a, b = (70.5, 58.0), (73.5, 80.0)
-    r = route_ice_weather(ice, gale, a, b, ice_class=ship.ice_class, vessel=ship.vessel,
-                          departure="2026-10-01T06:00")
+    r = route_ice_weather(
+        ice, gale, a, b, ice_class=ship.ice_class, vessel=ship.vessel, departure="2026-10-01T06:00"
+    )
     alone = route_season(ice, a, b, ice_class="PC6", v0_kn=ship.vessel.speed_kn, departure="2026-10-01T06:00")
     # Eastbound the westerly sea follows the ship (Khokhlov's small gain) and the coastal current
     # carries it: quicker than through the ice alone; westbound, into the sea, slower.
     assert r.cost < alone.cost
-    back = route_ice_weather(ice, gale, b, a, ice_class=ship.ice_class, vessel=ship.vessel,
-                             departure="2026-10-01T06:00")
-    back_alone = route_season(ice, b, a, ice_class="PC6", v0_kn=ship.vessel.speed_kn, departure="2026-10-01T06:00")
+    back = route_ice_weather(
+        ice, gale, b, a, ice_class=ship.ice_class, vessel=ship.vessel, departure="2026-10-01T06:00"
+    )
+    back_alone = route_season(
+        ice, b, a, ice_class="PC6", v0_kn=ship.vessel.speed_kn, departure="2026-10-01T06:00"
+    )
     assert back.cost > back_alone.cost
     readme = (Path(__file__).parents[2] / "README.md").read_text()
     eta = str(r.stats.voyage.arrival)[:16].replace("T", " ")
@@ -200,10 +234,14 @@ def test_a_polar_class_takes_the_polaris_speed_limit_in_ice_by_hand():
     # 1.944 kn on a route due north. A Register Arc4 (h_pass 0.8 m) may not enter 2 m ice at all.
     lat, lon = np.arange(72.0, 73.01, 0.1), np.arange(60.0, 61.01, 0.1)
     shape = (1, lat.size, lon.size)
-    ds = xr.Dataset({"CT": (("time", "lat", "lon"), np.full(shape, 10.0)),
-                     "CA": (("time", "lat", "lon"), np.full(shape, 10.0)),  # POLARIS reads partials
-                     "SA": (("time", "lat", "lon"), np.full(shape, 93.0))},
-                    coords={"time": [DAY0], "lat": lat, "lon": lon})
+    ds = xr.Dataset(
+        {
+            "CT": (("time", "lat", "lon"), np.full(shape, 10.0)),
+            "CA": (("time", "lat", "lon"), np.full(shape, 10.0)),  # POLARIS reads partials
+            "SA": (("time", "lat", "lon"), np.full(shape, 93.0)),
+        },
+        coords={"time": [DAY0], "lat": lat, "lon": lon},
+    )
     fc = _forecast_on(ds, ce=0.0, cn=1.0)
     a, b = (72.0, 60.5), (73.0, 60.5)
     pc6 = route_ice_weather(ds, fc, a, b, ice_class="PC6", vessel=SHIP, neighbourhood=3, speed="class")

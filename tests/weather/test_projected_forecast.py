@@ -24,14 +24,21 @@ def _polar(u=1.0, v=0.0, std=("sea_water_x_velocity", "sea_water_y_velocity"), l
     for a, s in zip(attrs, std):
         if s:
             a["standard_name"] = s
-    coords = {"X": ("X", X, {"standard_name": "projection_x_coordinate", "units": "km"}),
-              "Y": ("Y", Y, {"standard_name": "projection_y_coordinate", "units": "km"}),
-              "time": np.array(["2016-02-01T12", "2016-02-02T12"], "datetime64[ns]")}
+    coords = {
+        "X": ("X", X, {"standard_name": "projection_x_coordinate", "units": "km"}),
+        "Y": ("Y", Y, {"standard_name": "projection_y_coordinate", "units": "km"}),
+        "time": np.array(["2016-02-01T12", "2016-02-02T12"], "datetime64[ns]"),
+    }
     if levels:
         coords["depth"] = ("depth", np.arange(levels) * 10.0, {"standard_name": "depth"})
-    return xr.Dataset({"uu": (dims, np.full(shape, u), attrs[0]), "vv": (dims, np.full(shape, v), attrs[1]),
-                       "gm": ((), 0, {"grid_mapping_name": "polar_stereographic", "proj4_string": CRS})},
-                      coords=coords)
+    return xr.Dataset(
+        {
+            "uu": (dims, np.full(shape, u), attrs[0]),
+            "vv": (dims, np.full(shape, v), attrs[1]),
+            "gm": ((), 0, {"grid_mapping_name": "polar_stereographic", "proj4_string": CRS}),
+        },
+        coords=coords,
+    )
 
 
 def test_a_current_along_grid_x_points_east_at_lon_0_and_turns_with_longitude():
@@ -64,7 +71,9 @@ def test_pixels_outside_the_model_grid_are_calm_and_said():
     out, notes = on_grid(ds, lat, lon, source="polar.nc")
     assert out["uu"].isel(time=0).values[:, 0] == pytest.approx([0.0, 0.0], abs=1e-9)
     assert out["vv"].isel(time=0).values[:, 0] == pytest.approx([0.0, 2.0], abs=1e-6)  # north at 58 E
-    assert "50 % of the grid lies outside polar.nc's model grid: no weather (calm, no current)" in " ".join(notes)
+    assert "50 % of the grid lies outside polar.nc's model grid: no weather (calm, no current)" in " ".join(
+        notes
+    )
 
 
 def test_files_found_by_grid_relative_names_or_mapped_and_said(tmp_path):
@@ -79,7 +88,9 @@ def test_files_found_by_grid_relative_names_or_mapped_and_said(tmp_path):
     bare = tmp_path / "bare.nc"
     _polar(std=(None, None)).to_netcdf(bare)
     ds, notes = open_forecasts(bare, {"current_east": "uu", "current_north": "vv"})
-    assert any("no standard name, neither east/north nor grid x/y: taken as grid-relative" in n for n in notes)
+    assert any(
+        "no standard name, neither east/north nor grid x/y: taken as grid-relative" in n for n in notes
+    )
     out, _ = on_grid(ds, [74.0], [88.0])
     assert float(out["current_east"].isel(time=0).squeeze()) == pytest.approx(np.sqrt(3) / 2, abs=1e-6)
 
@@ -87,22 +98,31 @@ def test_files_found_by_grid_relative_names_or_mapped_and_said(tmp_path):
 def test_what_cannot_be_routed_is_refused_naming_the_fix(tmp_path):
     deep = tmp_path / "deep.nc"
     _polar(levels=3).to_netcdf(deep)
-    with pytest.raises(ValueError, match=r"deep.nc: uu \(current_east\) has a vertical axis 'depth' "
-                                         r"\(3 levels\).*ncks -d depth,0"):
+    with pytest.raises(
+        ValueError,
+        match=r"deep.nc: uu \(current_east\) has a vertical axis 'depth' "
+        r"\(3 levels\).*ncks -d depth,0",
+    ):
         open_forecasts(deep)
     mixed = tmp_path / "mixed.nc"
     ds = _polar(std=("sea_water_x_velocity", "northward_sea_water_velocity"))
     ds.to_netcdf(mixed)
-    with pytest.raises(ValueError, match=r"uu \(current_east\) is grid-relative but vv \(current_north\) is not"):
+    with pytest.raises(
+        ValueError, match=r"uu \(current_east\) is grid-relative but vv \(current_north\) is not"
+    ):
         open_forecasts(mixed)
     stag = tmp_path / "stag.nc"
     ds = _polar()
     ds["vv"] = ds["vv"].rename(Y="Yv")
     ds.to_netcdf(stag)
-    with pytest.raises(ValueError, match=r"stag.nc: .* lies on the grid .* the fields of one file must share one grid"):
+    with pytest.raises(
+        ValueError, match=r"stag.nc: .* lies on the grid .* the fields of one file must share one grid"
+    ):
         open_forecasts(stag)
     nomap = _polar().drop_vars("gm")
-    with pytest.raises(ValueError, match=r"nomap.nc is on a projected grid but names no grid mapping .*--forecast-crs"):
+    with pytest.raises(
+        ValueError, match=r"nomap.nc is on a projected grid but names no grid mapping .*--forecast-crs"
+    ):
         on_grid(nomap, [74.0], [58.0], source="nomap.nc")
     out, _ = on_grid(nomap, [74.0], [88.0], crs=CRS)  # the projection given instead
     assert float(out["uu"].isel(time=0).squeeze()) == pytest.approx(np.sqrt(3) / 2, abs=1e-6)

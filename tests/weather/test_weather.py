@@ -67,14 +67,14 @@ def test_storm_is_avoided_only_while_forecast():
     ship = Vessel(speed_kn=12.0, speed_loss="none", danger_wind_ms=11.0)
     straight = route_time(forecast(), (61.0, 0.2), (61.0, 2.8), vessel=CALM, neighbourhood=5)
     early = route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=ship, neighbourhood=5)
-    late = route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=ship, neighbourhood=5,
-                      departure="2026-01-01T18")
+    late = route_time(fc, (61.0, 0.2), (61.0, 2.8), vessel=ship, neighbourhood=5, departure="2026-01-01T18")
     assert early.cost > straight.cost * 1.02  # a detour around the storm
     inside = [(6 <= r <= 14) and (10 <= c <= 19) for r, c in early.pixels]
     assert not any(inside)
     assert late.cost == pytest.approx(straight.cost, rel=1e-12)
     assert late.stats.voyage.arrival == np.datetime64("2026-01-01T18") + np.timedelta64(
-        int(round(late.cost * 3600)), "s")
+        int(round(late.cost * 3600)), "s"
+    )
 
 
 def _simulate(fc, pixels, ship):
@@ -90,11 +90,13 @@ def _simulate(fc, pixels, ship):
         def at(name, r, c):
             v = fc[name].values
             return (1 - a) * v[i0, r, c] + a * v[i1, r, c]
+
         if max(at("wind", r1, c1), at("wind", r2, c2)) > ship.danger_wind_ms:
             return np.inf
         p1, p2, dl = np.radians(lat[r1]), np.radians(lat[r2]), np.radians(lon[c2] - lon[c1])
-        course = np.arctan2(np.sin(dl) * np.cos(p2),
-                            np.cos(p1) * np.sin(p2) - np.sin(p1) * np.cos(p2) * np.cos(dl))
+        course = np.arctan2(
+            np.sin(dl) * np.cos(p2), np.cos(p1) * np.sin(p2) - np.sin(p1) * np.cos(p2) * np.cos(dl)
+        )
         ce = 0.5 * (at("ce", r1, c1) + at("ce", r2, c2)) * KNOTS_PER_MS
         cn = 0.5 * (at("cn", r1, c1) + at("cn", r2, c2)) * KNOTS_PER_MS
         vt, q = np.hypot(ce, cn), np.arctan2(ce, cn) - course
@@ -112,9 +114,15 @@ def _simulate(fc, pixels, ship):
 def test_time_dependent_search_equals_brute_force_over_all_paths():
     rng = np.random.default_rng(7)
     shape, frames = (3, 4), 4
-    fc = forecast(shape=shape, frames=frames, step=0.5, hours=6,
-                  ce=rng.uniform(-3, 3, (frames,) + shape), cn=rng.uniform(-3, 3, (frames,) + shape),
-                  wind=rng.uniform(0, 14, (frames,) + shape))
+    fc = forecast(
+        shape=shape,
+        frames=frames,
+        step=0.5,
+        hours=6,
+        ce=rng.uniform(-3, 3, (frames,) + shape),
+        cn=rng.uniform(-3, 3, (frames,) + shape),
+        wind=rng.uniform(0, 14, (frames,) + shape),
+    )
     ship = Vessel(speed_kn=9.0, speed_loss="none", danger_wind_ms=12.0)
     start, end = (0, 0), (2, 3)
     # Every simple path of 8-neighbour steps from start to end, simulated step by step.
@@ -128,8 +136,9 @@ def test_time_dependent_search_equals_brute_force_over_all_paths():
     lat, lon = fc.lat.values, fc.lon.values
     for method in ("dijkstra", "astar"):
         try:
-            got = route_time(fc, (lat[0], lon[0]), (lat[2], lon[3]), vessel=ship,
-                             neighbourhood=3, method=method).cost
+            got = route_time(
+                fc, (lat[0], lon[0]), (lat[2], lon[3]), vessel=ship, neighbourhood=3, method=method
+            ).cost
         except seaway.NoRouteError:
             got = np.inf
         assert got == pytest.approx(best, rel=1e-9)
@@ -148,8 +157,12 @@ def test_khokhlov_outside_its_range_is_refused_or_warned():
     with pytest.raises(ValueError, match="speed_loss='stawave1' covers other ships"):
         route_time(forecast(hs=1.0), (61.0, 0.5), (61.0, 2.5), vessel=Vessel(displacement_t=40000))
     with pytest.warns(UserWarning, match="5000-25000 t"):
-        route_time(forecast(hs=1.0), (61.0, 0.5), (61.0, 2.5),
-                   vessel=Vessel(displacement_t=40000, outside_validity="warn"))
+        route_time(
+            forecast(hs=1.0),
+            (61.0, 0.5),
+            (61.0, 2.5),
+            vessel=Vessel(displacement_t=40000, outside_validity="warn"),
+        )
 
 
 def test_waves_above_the_limit_are_impassable():
@@ -174,11 +187,16 @@ def test_to_latlon_turns_grid_vectors_to_east_and_north():
     lon, _ = pyproj.Transformer.from_crs(crs, "EPSG:4326", always_xy=True).transform(xx * 1e3, yy * 1e3)
     t = np.radians(lon - 58.0)
     ds = xr.Dataset(
-        {"u": (("Y", "X"), -np.sin(t), {"standard_name": "x_sea_water_velocity", "grid_mapping": "gm"}),
-         "v": (("Y", "X"), np.cos(t), {"standard_name": "y_sea_water_velocity", "grid_mapping": "gm"}),
-         "gm": ((), 0, {"proj4_string": crs})},
-        coords={"X": ("X", X, {"standard_name": "projection_x_coordinate", "units": "km"}),
-                "Y": ("Y", Y, {"standard_name": "projection_y_coordinate", "units": "km"})})
+        {
+            "u": (("Y", "X"), -np.sin(t), {"standard_name": "x_sea_water_velocity", "grid_mapping": "gm"}),
+            "v": (("Y", "X"), np.cos(t), {"standard_name": "y_sea_water_velocity", "grid_mapping": "gm"}),
+            "gm": ((), 0, {"proj4_string": crs}),
+        },
+        coords={
+            "X": ("X", X, {"standard_name": "projection_x_coordinate", "units": "km"}),
+            "Y": ("Y", Y, {"standard_name": "projection_y_coordinate", "units": "km"}),
+        },
+    )
     out = to_latlon(ds, np.arange(70.0, 76.0, 0.5), np.arange(10.0, 40.0, 1.0))
     assert out["u"].attrs["standard_name"] == "eastward_sea_water_velocity"
     u, v = out["u"].values, out["v"].values
@@ -218,13 +236,13 @@ def test_replanning_with_the_same_forecast_keeps_the_tail():
 
     r = route_time(fc, (60.2, 0.2), (61.8, 2.8), vessel=CALM, neighbourhood=5)
     i, here = position_at(r, 3.0)
-    assert 0 < i < len(r.pixels) - 1 and np.sum(r.costs()[:i]) <= 3.0 < np.sum(r.costs()[:i + 1])
+    assert 0 < i < len(r.pixels) - 1 and np.sum(r.costs()[:i]) <= 3.0 < np.sum(r.costs()[: i + 1])
     again = replan(r, 3.0, fc, (61.8, 2.8), vessel=CALM, neighbourhood=5)
     # The tail of a time-optimal route is optimal from the same pixel at the same time (FIFO).
     assert np.sum(r.costs()[:i]) + again.cost == pytest.approx(r.cost, rel=1e-9)
     # A newer forecast with a storm on the old tail changes the rest of the route.
     wind = np.zeros((6, 21, 31))
-    rows, cols = zip(*r.pixels[i + 2:-2])
+    rows, cols = zip(*r.pixels[i + 2 : -2])
     wind[:, list(rows), list(cols)] = 30.0
     stormy = forecast(frames=6, wind=wind, ce=fc["ce"].values, cn=fc["cn"].values)
     detour = replan(r, 3.0, stormy, (61.8, 2.8), vessel=CALM, neighbourhood=5)
@@ -253,10 +271,8 @@ def test_safest_route_keeps_out_of_following_seas():
     period = np.sqrt(100.0 * 2 * np.pi / 9.80665)  # 100 m waves
     waves = forecast(shape=shape, lat0=-1.0, step=0.1, hs=5.0, wdir=270.0, ce=0.0, cn=0.0)
     waves["tp"] = xr.full_like(waves["hs"], period).assign_attrs(standard_name="sea_surface_wave_mean_period")
-    east = route_safest(waves, (0.0, 0.2), (0.0, 3.8), ship_length_m=100.0, speed_kn=12.0,
-                        neighbourhood=5)
-    west = route_safest(waves, (0.0, 3.8), (0.0, 0.2), ship_length_m=100.0, speed_kn=12.0,
-                        neighbourhood=5)
+    east = route_safest(waves, (0.0, 0.2), (0.0, 3.8), ship_length_m=100.0, speed_kn=12.0, neighbourhood=5)
+    west = route_safest(waves, (0.0, 3.8), (0.0, 0.2), ship_length_m=100.0, speed_kn=12.0, neighbourhood=5)
     # Into the waves (head seas) the straight line is safe: cost = length (u = 1).
     assert west.cost == pytest.approx(west.length, rel=1e-9)
     assert west.length == pytest.approx(_core.haversine_km(0.0, 0.2, 0.0, 3.8), rel=1e-6)
@@ -273,8 +289,7 @@ def test_safest_route_names_missing_wave_fields():
     from seaway.weather import route_safest
 
     with pytest.raises(ValueError, match="sea_surface_wave_mean_period"):
-        route_safest(forecast(hs=2.0, wdir=0.0), (61.0, 0.5), (61.0, 2.5), ship_length_m=100,
-                     speed_kn=12)
+        route_safest(forecast(hs=2.0, wdir=0.0), (61.0, 0.5), (61.0, 2.5), ship_length_m=100, speed_kn=12)
 
 
 def test_stawave1_speed_loss_by_hand_and_on_a_route():
@@ -286,13 +301,21 @@ def test_stawave1_speed_loss_by_hand_and_on_a_route():
     assert x == pytest.approx(0.97856, abs=1e-5)  # 0.97856^3 + 0.064332 x 0.97856 = 1.00000
     assert _core.stawave1_speed_kn(14, 2.0, 32, 200, 500) == pytest.approx(14 * x, rel=1e-12)
     # A large ship outside Khokhlov's range, heading into 2 m head seas (waves from the east).
-    ship = Vessel(speed_kn=14.0, displacement_t=90000, speed_loss="stawave1", beam_m=32,
-                  length_m=200, calm_resistance_kn=500)
+    ship = Vessel(
+        speed_kn=14.0,
+        displacement_t=90000,
+        speed_loss="stawave1",
+        beam_m=32,
+        length_m=200,
+        calm_resistance_kn=500,
+    )
     calm = route_time(forecast(), (61.0, 0.5), (61.0, 2.5), vessel=CALM, neighbourhood=3).cost
-    head = route_time(forecast(hs=2.0, wdir=90.0), (61.0, 0.5), (61.0, 2.5), vessel=ship,
-                      neighbourhood=3).cost
-    follow = route_time(forecast(hs=2.0, wdir=270.0), (61.0, 0.5), (61.0, 2.5), vessel=ship,
-                        neighbourhood=3).cost
+    head = route_time(
+        forecast(hs=2.0, wdir=90.0), (61.0, 0.5), (61.0, 2.5), vessel=ship, neighbourhood=3
+    ).cost
+    follow = route_time(
+        forecast(hs=2.0, wdir=270.0), (61.0, 0.5), (61.0, 2.5), vessel=ship, neighbourhood=3
+    ).cost
     assert head == pytest.approx(calm * 12 / (14 * x), rel=1e-6)  # CALM sails at 12 kn
     assert follow == pytest.approx(calm * 12 / 14, rel=1e-9)  # no added resistance from astern
     with pytest.raises(ValueError, match="2.25 sqrt"):  # 2.25 sqrt(2) = 3.18 m
