@@ -22,6 +22,9 @@ pixels; IceSeasonTime puts them on every route (Route.assumptions, hence the Geo
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from .forms import (
@@ -37,6 +40,9 @@ from .forms import (
 )
 from .impact import governing_stage
 
+if TYPE_CHECKING:
+    import xarray as xr
+
 #: The layers of a SIGRID-3 chart (seaway.ice.sigrid.read_sigrid3) a season keeps, when present.
 SEASON_LAYERS = ("CT", "CA", "SA", "SB", "SC", "FA", "FB", "FC", "free_water", "land", "off_chart")
 
@@ -48,7 +54,7 @@ def season_layers(chart) -> list[str]:
     return [name for name in SEASON_LAYERS if name in chart]
 
 
-def season_rule(ds, fast_ice=None):
+def season_rule(ds: xr.Dataset, fast_ice: str | float | None = None) -> str | float:
     """The fast-ice rule for a season (or one of its charts): `fast_ice` when given, else the
     rule recorded on it (``ds.attrs["fast_ice"]``, read_season's), else "nearby"; checked
     (seaway.ice.forms.check_fast_ice: "nearby", "closed" or a WMO stage code as a float)."""
@@ -77,7 +83,9 @@ def _charts(items) -> str:
     return f"the charts of {', '.join(each[:-1])} and {each[-1]}"
 
 
-def season_assumptions(ds, first=0, fast_ice=None) -> tuple[str, ...]:
+def season_assumptions(
+    ds: xr.Dataset, first: int = 0, fast_ice: str | float | None = None
+) -> tuple[str, ...]:
     """What the season's charts from index `first` on assume, one sentence per kind: fast ice of
     unknown stage (the stage per chart under the rule, the charts and pixels it applied to),
     then open and bergy water (seaway.ice.forms.FREE_RULE); () when neither is on any chart."""
@@ -103,7 +111,7 @@ def season_assumptions(ds, first=0, fast_ice=None) -> tuple[str, ...]:
     return tuple(out)
 
 
-def describer(ds, fast_ice=None):
+def describer(ds: xr.Dataset, fast_ice: str | float | None = None) -> Callable[..., str]:
     """(row, col[, concentration]) -> the ice of that pixel of one chart of a season in words:
     its governing stage under the fast-ice rule, fast ice named as seaway.ice.noroute names it
     (seaway.ice.forms.ice_words), or its thickness; and its total concentration."""
