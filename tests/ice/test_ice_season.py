@@ -278,7 +278,7 @@ def test_bad_seasons_are_refused_with_the_fix():
     with pytest.raises(
         ValueError,
         match=r"end pixel \(4, 5\) is in ice class Arc4 may not enter in any "
-        r"chart from 2026-07-01T00:00:00 on \(last chart: CT 9, SA 91\); the nearest "
+        r"chart from 2026-07-01T00:00:00 on \(last chart: medium first-year ice \(SA 91\) at 9/10\); the nearest "
         r"pixel it may use is pixel \(3, 5\)",
     ):
         thick = stage.copy()

@@ -16,6 +16,7 @@ from ..ice.season import SeasonGrid, read_season
 from ..ice.seasonwhy import closed_reason, explain_season_no_route, usable
 from ..models import IceSeasonTime
 from ..output import export
+from .chartfile import fast_ice
 from .common import EPILOG, Progress, add_ends, add_snap_options, grid, neighbourhood, tell
 from .ends import check_ends
 from .vectorchart import in_degrees
@@ -120,7 +121,11 @@ def run_season(args) -> int:
     say(f"{t.size} charts from {t[0]} to {t[-1]} on {season.shape[0]} x {season.shape[1]} pixels")
     speed = "andreeva" if args.speed_table is None else args.speed_table
     limit = {"concentration_limit": not args.no_concentration_limit}
-    model = IceSeasonTime(season, args.vessel, args.speed, departure=args.depart, speed=speed, **limit)
+    model = IceSeasonTime(
+        season, args.vessel, args.speed, departure=args.depart, speed=speed, fast_ice=args.fast_ice, **limit
+    )
+    for said in model.assumptions:  # fast ice of unknown stage, open and bergy water: once, every chart
+        tell(f"assumed: {said}", "season")
     # Only an end no chart opens moves (an end closed at departure may open later: the ship waits).
     (start, end), moved = check_ends(
         season.template.copy(data=np.where(usable(model), 1.0, np.inf)),
@@ -179,7 +184,9 @@ def add_season_command(commands) -> None:
         "of the season lets the class use it (land, or ice closed in every chart): one closed "
         "at departure but open later stays, and the ship waits. No route: the message names "
         "the ice that closes the way in the season's most open chart and the weakest class "
-        "that gets through the season.",
+        "that gets through the season. Fast ice (SIGRID-3 FA 08) takes its stage from each "
+        "chart, or where a chart gives none (AARI's winter charts: FA 08, SA 99) the --fast-ice "
+        "rule's, chart by chart, said once on stderr and in every output.",
         epilog=EPILOG,
     )
     sp.add_argument(
@@ -201,6 +208,18 @@ def add_season_command(commands) -> None:
         type=speed_table,
         metavar="STAGE:KN,...",
         help="speeds per WMO stage instead of Andreeva 2021 (55 is open water)",
+    )
+    sp.add_argument(
+        "--fast-ice",
+        type=fast_ice,
+        default="nearby",
+        metavar="RULE",
+        help="stage of fast ice (SIGRID-3 FA 08) a chart gives no stage for, chart by chart: "
+        "nearby (default: the thickest first-year stage that chart shows on the grid, else "
+        "thick first-year 93), closed (impassable), or a WMO stage code, e.g. 91; the "
+        "assumption is printed with the charts and pixels it applies to (seaway.ice.seasonfast). "
+        "Fast ice is 10/10: the concentration limit keeps classes below Arc9 out of it (see "
+        "--no-concentration-limit)",
     )
     sp.add_argument(
         "--no-concentration-limit",

@@ -75,20 +75,23 @@ def unknown_stage(sa):
     return np.isnan(sa) | (sa == 80) | (sa == UNKNOWN_STAGE)
 
 
-def fast_ice_stage(ds, fast_ice=DEFAULT_FAST_ICE):
-    """(stage code or None for closed, the sentence saying so, the pixels it applies to) for
-    the fast ice of unknown stage on `ds`; the sentence is "" when there is no such fast ice."""
+FAST_HEAD = "fast ice of unknown stage (FA 08, SA 99)"
+FAST_HOW = "set it with fast_ice= (API) or --fast-ice (CLI): closed, a WMO stage code, or nearby"
+FREE_RULE = "freely navigable water (WMO-No. 259), costed as ice free; icebergs may be present"
+
+
+def fast_ice_rule(ds, fast_ice=DEFAULT_FAST_ICE):
+    """(stage code or None for closed, what is assumed in words, the pixels it applies to) for
+    the fast ice of unknown stage on `ds`: the parts of fast_ice_stage's sentence (a season of
+    charts says them once for all its charts, seaway.ice.seasonfast); "" when there is none."""
     rule = check_fast_ice(fast_ice)
     fast = fast_ice_mask(ds)
     land = np.asarray(ds["land"].values, bool) if "land" in ds else np.zeros(fast.shape, bool)
     where = fast & unknown_stage(ds["SA"].values) & ~land
-    n = int(where.sum())
-    if not n:
+    if not where.any():
         return None, "", where
-    how = "set it with fast_ice= (API) or --fast-ice (CLI): closed, a WMO stage code, or nearby"
-    head = f"fast ice of unknown stage (FA 08, SA 99) on {n} pixels: ASSUMED"
     if rule == "closed":
-        return None, f"{head} closed to every class ({how})", where
+        return None, "closed to every class", where
     if rule == "nearby":
         codes = [ds[s].values[~land] for s in ("SA", "SB", "SC") if s in ds]
         code = thickest_first_year(np.concatenate(codes)) if codes else None
@@ -101,19 +104,42 @@ def fast_ice_stage(ds, fast_ice=DEFAULT_FAST_ICE):
         code = DEFAULT_FAST_STAGE if code is None else code
     else:
         code, why = rule, "as you chose"
-    return code, f"{head} {stage_name(code)} (WMO {int(code)}), {why} ({how})", where
+    return code, f"{stage_name(code)} (WMO {int(code)}), {why}", where
 
 
-def free_water_rule(ds):
-    """(mask of open and bergy water pixels, the sentence naming the rule, "" if none)."""
+def fast_ice_stage(ds, fast_ice=DEFAULT_FAST_ICE):
+    """(stage code or None for closed, the sentence saying so, the pixels it applies to) for
+    the fast ice of unknown stage on `ds`; the sentence is "" when there is no such fast ice."""
+    code, said, where = fast_ice_rule(ds, fast_ice)
+    if not said:
+        return code, "", where
+    return code, f"{FAST_HEAD} on {int(where.sum())} pixels: ASSUMED {said} ({FAST_HOW})", where
+
+
+def ice_words(code, fast=False, assumed=False, label="SA", guessed=False) -> str:
+    """The words messages use for one pixel's ice (seaway.ice.noroute, seaway.ice.seasonwhy): its
+    governing stage `code` (NaN: unknown, or fast ice closed by the rule) named with `label` and
+    its code, ", assumed" when the whole stage layer is (`guessed`); fast ice (`fast`) is named
+    so, "of unknown stage, assumed" where its stage is the fast_ice assumption (`assumed`)."""
+    if not np.isfinite(code):
+        return "fast ice of unknown stage, closed by the fast_ice rule" if fast else "ice of unknown stage"
+    text = f"{stage_name(code)} ({label} {int(code)}{', assumed' if guessed else ''})"
+    if fast:
+        text = ("fast ice of unknown stage, assumed " if assumed else "fast ice, ") + text
+    return text
+
+
+def free_water_counts(ds):
+    """(mask of open and bergy water pixels, "open water on n pixels and bergy water on m
+    pixels", "" if none)."""
     if "free_water" not in ds:
         return np.zeros(ds["CT"].shape, bool), ""
     kind = np.asarray(ds["free_water"].values)
     counts = {name: int((kind == k).sum()) for k, name in FREE_WATER.items()}
-    said = [f"{name} on {n} pixels" for name, n in counts.items() if n]
-    if not said:
-        return kind > 0, ""
-    return kind > 0, (
-        f"{' and '.join(said)} (CT 01/02): freely navigable water (WMO-No. 259), "
-        "costed as ice free; icebergs may be present"
-    )
+    return kind > 0, " and ".join(f"{name} on {n} pixels" for name, n in counts.items() if n)
+
+
+def free_water_rule(ds):
+    """(mask of open and bergy water pixels, the sentence naming the rule, "" if none)."""
+    free, said = free_water_counts(ds)
+    return free, (f"{said} (CT 01/02): {FREE_RULE}" if said else "")

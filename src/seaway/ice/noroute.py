@@ -32,8 +32,7 @@ from ..errors import NoRouteError
 from ..models.base import EdgeCost
 from ..result.environment import weighted_samples
 from .classes import get_class
-from .codes import stage_name
-from .forms import DEFAULT_FAST_ICE, fast_ice_mask, fast_ice_stage
+from .forms import DEFAULT_FAST_ICE, fast_ice_mask, fast_ice_stage, ice_words
 from .impact import chart_impact, governing_stage, ice_impact, table_for
 
 #: The classes asked, weakest first (Russian Register; IACS and FSICR classes use these tables).
@@ -153,17 +152,9 @@ class _Kinds:
             return self.blocked_name
         if self.off is not None and self.off[r, c]:
             return "no chart polygon (unknown ice)"
-        code = self.stage[r, c]
-        fast = self.fast is not None and self.fast[r, c]
-        if not np.isfinite(code):
-            return (
-                "fast ice of unknown stage, closed by the fast_ice rule" if fast else "ice of unknown stage"
-            )
-        text = f"{stage_name(code)} ({self.label} {int(code)}{', assumed' if self.guessed else ''})"
-        if fast:
-            assumed = self.assumed is not None and self.assumed[r, c]
-            text = ("fast ice of unknown stage, assumed " if assumed else "fast ice, ") + text
-        return text
+        fast = self.fast is not None and bool(self.fast[r, c])
+        assumed = self.assumed is not None and bool(self.assumed[r, c])
+        return ice_words(self.stage[r, c], fast, assumed, self.label, self.guessed)
 
     def who(self, r, c) -> str:
         level = self.levels[r, c]

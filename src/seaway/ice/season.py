@@ -33,8 +33,10 @@ Speed of a class in a chart's ice (knots), `speed=`:
   the circular's limit under elevated risk, closed under special consideration: POLARIS's
   levels are then the class's limits, the concentration limit is not applied).
 Either way, unknown ice (NaN CT, stage 99, old ice without a thickness), land and pixels off the
-chart are closed, and with `concentration_limit=True` (default) so is ice above the class's
-independent-navigation concentration (Grinyak et al. 2022 Table 1: Arc4-Arc6 6/10, Arc7-Arc8 8/10).
+chart are closed (fast ice of unknown stage takes the `fast_ice` rule's stage chart by chart, open
+and bergy water are ice free: seaway.ice.seasonfast, as seaway.ice.forms for one chart), and with
+`concentration_limit=True` (default) so is ice above the class's independent-navigation
+concentration (Grinyak et al. 2022 Table 1: Arc4-Arc6 6/10, Arc7-Arc8 8/10; fast ice is 10/10).
 """
 
 from __future__ import annotations
@@ -53,6 +55,7 @@ from ..engine.prepared import PreparedChart
 from ..errors import NoRouteError
 from ..models import EdgeCost, IceSeasonTime
 from . import andreeva
+from .seasonfast import record_rule, season_layers
 from .seasonspeed import andreeva_speed_kn, class_speed_kn, table_speed_kn
 from .sigrid import read_sigrid3
 
@@ -69,22 +72,17 @@ if TYPE_CHECKING:
     #: Speeds by WMO stage: {stage: knots} or {stage: {max CT tenths: knots}}.
     SpeedTable = Mapping[float, float | Mapping[float, float]]
 
-__all__ = [
-    "read_season",
-    "as_season",
-    "SeasonGrid",
-    "andreeva_speed_kn",
-    "table_speed_kn",
-    "class_speed_kn",
-    "route_season",
-    "arrival_field",
-]
+__all__ = ["read_season", "as_season", "SeasonGrid", "route_season", "arrival_field"]
+__all__ += ["andreeva_speed_kn", "table_speed_kn", "class_speed_kn"]  # of seaway.ice.seasonspeed
 
 
-def read_season(charts, grid, **read_kwargs) -> xr.Dataset:
-    """SIGRID-3 files with their dates -> a season Dataset on `grid` (seaway.ice.grids).
+def read_season(charts, grid, *, fast_ice=None, **read_kwargs) -> xr.Dataset:
+    """SIGRID-3 files with their dates -> a season Dataset on `grid` (seaway.ice.grids), with
+    each chart's form of ice (FA-FC) and free_water (seaway.ice.seasonfast.SEASON_LAYERS).
     charts: {date: path} or [(date, path), ...] in date order; each chart is valid from its
-    date (any form numpy.datetime64 takes) until the next one's. read_kwargs go to read_sigrid3."""
+    date (any form numpy.datetime64 takes) until the next one's. fast_ice: the rule for fast ice
+    of unknown stage its routes take unless they give one (attribute ``fast_ice``; None: "nearby"
+    then, seaway.ice.forms). read_kwargs go to read_sigrid3."""
     items = list(charts.items()) if isinstance(charts, dict) else list(charts)
     if not items:
         raise ValueError("give at least one (date, path) chart")
@@ -94,9 +92,8 @@ def read_season(charts, grid, **read_kwargs) -> xr.Dataset:
         raise ValueError(f"chart dates must be dates such as '2026-07-01' or datetime64: {exc}") from None
     _check_increasing(np.array(dates), "sorted(charts)")
     frames = [read_sigrid3(p, grid, **read_kwargs) for _, p in items]
-    keep = ["CT", "CA", "SA", "land", "off_chart"]
-    ds = xr.concat([f[keep] for f in frames], dim="time", coords="minimal", compat="override")
-    return ds.assign_coords(time=dates)
+    ds = xr.concat([f[season_layers(f)] for f in frames], dim="time", coords="minimal", compat="override")
+    return record_rule(ds.assign_coords(time=dates), fast_ice)
 
 
 def _check_increasing(t, fix):
@@ -247,7 +244,8 @@ def route_season(
         SeasonGrid. ice_class: any class of seaway.ice.classes; v0_kn: its open-water speed (kn).
     departure: a date within the season (default its first chart's time).
     speed: "andreeva" (Andreeva 2021) or a speed table; speed_options go to andreeva_speed_kn
-        (h_pass_m, stage_thickness, other_factor, concentration_limit) or table_speed_kn.
+        (h_pass_m, stage_thickness, other_factor, concentration_limit) or table_speed_kn, and
+        fast_ice (the stage of fast ice of unknown stage, chart by chart: seaway.ice.seasonfast).
     snap_km: None (default): an end no chart opens raises ValueError; a distance: such an end
         moves at most that far (seaway.ice.seasonwhy.snap_season_ends; the route records it).
     Waiting is allowed (the module docstring says why). Returns a Route whose cost is the

@@ -1,7 +1,8 @@
 """The speed of an ice class (knots) on one chart of a season, for seaway.ice.season (whose
 docstring describes the three models and what is closed): Andreeva 2021's V = F * V0, a user's
 table by WMO stage and concentration, or the class's own model (seaway.ice.speed); 0 where the
-class may not go (land, off the chart, unknown ice, over its concentration limit)."""
+class may not go (land, off the chart, unknown ice, over its concentration limit). Fast ice of
+unknown stage takes the stage `fast_ice` says, chart by chart (seaway.ice.seasonfast)."""
 
 from __future__ import annotations
 
@@ -11,6 +12,7 @@ from . import andreeva
 from .classes import get_class
 from .codes import ICE_FREE
 from .impact import governing_stage
+from .seasonfast import season_rule
 from .speed import ice_speed
 
 
@@ -34,8 +36,10 @@ def andreeva_speed_kn(
     stage_thickness="upper",
     other_factor=1.0,
     concentration_limit=True,
+    fast_ice=None,
 ) -> np.ndarray:
-    """Andreeva 2021's V = F * V0 (knots) on one chart of a season; 0 where closed."""
+    """Andreeva 2021's V = F * V0 (knots) on one chart of a season; 0 where closed. fast_ice:
+    the rule for fast ice of unknown stage (None: the season's, seaway.ice.seasonfast)."""
     ct = np.asarray(frame["CT"].values, dtype=float)
     h_pass = get_class(ice_class).h_pass if h_pass_m is None else float(h_pass_m)
     if not h_pass > 0:
@@ -45,16 +49,19 @@ def andreeva_speed_kn(
     else:
         if stage_thickness not in ("upper", "mid"):
             raise ValueError(f"stage_thickness must be 'upper' or 'mid', got {stage_thickness!r}")
-        h = andreeva.stage_thickness(governing_stage(frame), stage_thickness)
+        h = andreeva.stage_thickness(
+            governing_stage(frame, fast_ice=season_rule(frame, fast_ice)), stage_thickness
+        )
     h = np.where(ct == 0, 0.0, h)
     speed = andreeva.f2(h, h_pass) * np.asarray(other_factor, dtype=float) * v0_kn
     return np.where(_closed(frame, ct, ice_class, concentration_limit), 0.0, speed)
 
 
-def table_speed_kn(frame, ice_class, table, *, concentration_limit=True) -> np.ndarray:
-    """Speeds (knots) from a user table on one chart: {stage: kn} or {stage: {max CT: kn}}."""
+def table_speed_kn(frame, ice_class, table, *, concentration_limit=True, fast_ice=None) -> np.ndarray:
+    """Speeds (knots) from a user table on one chart: {stage: kn} or {stage: {max CT: kn}},
+    read on the governing stage (fast ice of unknown stage: the `fast_ice` rule's stage)."""
     ct = np.asarray(frame["CT"].values, dtype=float)
-    stage = governing_stage(frame).values
+    stage = governing_stage(frame, fast_ice=season_rule(frame, fast_ice)).values
     speed = np.zeros(ct.shape)
     known = np.isnan(stage)
     for code, entry in table.items():
@@ -79,15 +86,19 @@ def table_speed_kn(frame, ice_class, table, *, concentration_limit=True) -> np.n
     return np.where(_closed(frame, ct, ice_class, concentration_limit), 0.0, speed)
 
 
-def class_speed_kn(frame, ice_class, v0_kn, *, concentration_limit=True, **options) -> np.ndarray:
+def class_speed_kn(
+    frame, ice_class, v0_kn, *, concentration_limit=True, fast_ice=None, **options
+) -> np.ndarray:
     """The class's own model on one chart (knots; 0 where closed): seaway.ice.speed's Andreeva
     2021 for Register classes (with the concentration limit), IMO POLARIS for the others."""
     if get_class(ice_class).system in ("RS", "none"):
-        return andreeva_speed_kn(frame, ice_class, v0_kn, concentration_limit=concentration_limit, **options)
+        return andreeva_speed_kn(
+            frame, ice_class, v0_kn, concentration_limit=concentration_limit, fast_ice=fast_ice, **options
+        )
     if "SA" not in frame:
         raise ValueError(
             f"POLARIS ({get_class(ice_class).name}) reads the stages of the ice (SA); "
             "the season has none: give a Register class, or speed='andreeva'"
         )
-    v = np.asarray(ice_speed(frame, ice_class, v0_kn).values, float)
+    v = np.asarray(ice_speed(frame, ice_class, v0_kn, fast_ice=season_rule(frame, fast_ice)).values, float)
     return np.where(_closed(frame, np.asarray(frame["CT"].values, float), ice_class, False), 0.0, v)

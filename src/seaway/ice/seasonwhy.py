@@ -17,7 +17,9 @@ on it the class may not enter (stage, concentration or thickness; km). The weake
 ladder that gets through the season is found by routing the season for the classes around the
 one that way needs (one search each). How far the ship gets is read from its arrival field
 through the season. Only when no way joins the ends with all ice open does the message say to
-check the land mask."""
+check the land mask. Ice is named as seaway.ice.noroute names it on one chart, fast ice included
+("fast ice of unknown stage, assumed thin first-year ice (SA 87)", "..., closed by the fast_ice
+rule"): the model's fast-ice rule (IceSeasonTime.fast_ice) decides, chart by chart."""
 
 from __future__ import annotations
 
@@ -32,9 +34,8 @@ from ..errors import NoRouteError
 from ..models import IceSeasonTime
 from ..result.environment import weighted_samples
 from .classes import get_class
-from .codes import stage_name
-from .impact import governing_stage
 from .noroute import LADDER, NO_CLASS, SHOWN
+from .seasonfast import describer
 from .seasonspeed import andreeva_speed_kn, class_speed_kn, table_speed_kn
 
 if TYPE_CHECKING:
@@ -51,7 +52,7 @@ def usable(model: IceSeasonTime) -> np.ndarray:
 def closed_reason(model: IceSeasonTime):
     """(row, col) -> what keeps the class off a pixel in every chart from the departure on."""
     grid, first = model.season, model.season.times.size - model.valid_from_h.size
-    ice = _describer(grid.ds.isel(time=first))
+    ice = describer(grid.ds.isel(time=first), model.fast_ice)
 
     def why(r, c) -> str:
         if grid.dry[r, c]:
@@ -68,27 +69,6 @@ def closed_reason(model: IceSeasonTime):
 
 def _who(model) -> str:
     return f"{'an' if model.ice_class[0] in 'AaIi' else 'a'} {model.ice_class} ship"
-
-
-def _describer(ds):
-    """(row, col) -> the ice of that pixel of one chart: its governing stage (or thickness) and
-    total concentration."""
-    ct = np.round(np.asarray(ds["CT"].values, float), 1)  # a model's 6.48207/10 reads 6.5/10
-    stage = np.asarray(governing_stage(ds).values, float) if "SA" in ds else None
-    thick = np.asarray(ds["thickness"].values, float) if "thickness" in ds else None
-
-    def ice(r, c, concentration=True) -> str:
-        text = "ice"
-        if stage is not None:
-            code = stage[r, c]
-            text = f"{stage_name(code)} (SA {int(code)})" if np.isfinite(code) else "ice of unknown stage"
-        elif thick is not None:
-            text = f"ice {thick[r, c]:.1f} m thick"  # to 0.1 m: kinds, not every pixel
-        if not concentration:
-            return text
-        return text + (f" at {ct[r, c]:g}/10" if np.isfinite(ct[r, c]) else ", concentration unknown")
-
-    return ice
 
 
 def snap_season_ends(
@@ -144,7 +124,9 @@ def explain_season_no_route(
     """The NoRouteError saying why `model` (an IceSeasonTime on `grid`) finds no route from
     `start` to `end` (see the module): cause, closing_ice, weakest_class, reachable and
     reachable_km as in seaway.errors.NoRouteError. speed and speed_options: as the model was
-    built with (the other classes are routed with them); asked: the ends as the user gave them."""
+    built with (the other classes are routed with them, and with the model's fast-ice rule);
+    asked: the ends as the user gave them. Fast ice is named as seaway.ice.noroute names it."""
+    speed_options = {**speed_options, "fast_ice": model.fast_ice}
     prepared = grid.prepare(neighbourhood)
     chart = prepared.chart
     first = grid.times.size - model.valid_from_h.size
@@ -174,7 +156,7 @@ def explain_season_no_route(
             cause="land",
         )
         return with_reach(err, _reach(prepared, model, start, end))
-    closing = _closing(grid.ds.isel(time=k), levels, way, chart.shape[1])
+    closing = _closing(describer(grid.ds.isel(time=k), model.fast_ice), grid.ds.isel(time=k), levels, way)
     px = weighted_samples(way)[0]
     top = int(levels[px[:, 0], px[:, 1] % chart.shape[1]].max())
     weakest = _weakest(grid, model, prepared, start, end, top, speed, speed_options)
@@ -196,12 +178,13 @@ def explain_season_no_route(
     return with_reach(err, _reach(prepared, model, start, end))
 
 
-def _closing(ds, levels, way, cols) -> list:
-    """[(the ice at its concentrations (who may enter), km)] the way crosses closed, most first."""
+def _closing(ice, ds, levels, way) -> list:
+    """[(the ice at its concentrations (who may enter), km)] the way crosses closed, most first;
+    ice: seaway.ice.seasonfast.describer of the chart `ds`."""
     px, km, _ = weighted_samples(way)
-    r, c = px[:, 0], px[:, 1] % cols
+    r, c = px[:, 0], px[:, 1] % levels.shape[1]
     found: dict = {}
-    ct, ice = np.round(np.asarray(ds["CT"].values, float), 1), _describer(ds)
+    ct = np.round(np.asarray(ds["CT"].values, float), 1)
     for j in np.flatnonzero(levels[r, c] > 0):
         level = int(levels[r[j], c[j]])
         who = "no class may enter" if level >= NO_CLASS else f"{LADDER[level - 1]} and stronger may enter"

@@ -14,6 +14,7 @@ from ..base.units import KM_PER_NM
 from ..base.validate import number
 from ..chart.locate import describe
 from ..ice.classes import get_class
+from ..ice.seasonfast import describer, season_assumptions, season_rule
 from ..vessel import Vessel
 from .base import CostModel, Prepared, RouteT
 from .results import StepValues, Voyage
@@ -31,6 +32,10 @@ class IceSeasonTime(CostModel):
     everywhere (without it the graph is not FIFO and no label-setting search is exact); routes
     list their waits. `season` is a seaway.ice.season.SeasonGrid (or what it takes); departure
     a date within the season (default its first chart); see seaway.ice.season for the speeds.
+    fast_ice: the stage of fast ice of unknown stage (FA 08, SA 99), chart by chart, as
+    seaway.ice.forms says for one chart: "nearby", "closed" or a WMO stage code (None: the one
+    read_season recorded, else "nearby"); `.fast_ice` is the rule and `.assumptions` what the
+    charts assume, in words (seaway.ice.seasonfast), which every route carries.
 
     Route.stats.voyage (seaway.models.results.Voyage): hours, departure, arrival, wait_h per
     step, hours_under_way, hours_waiting, waits (pixel, (lat, lon) or (y, x), arrival there,
@@ -49,6 +54,7 @@ class IceSeasonTime(CostModel):
         *,
         departure: Departure = None,
         speed: str | SpeedTable = "andreeva",
+        fast_ice: str | float | None = None,
         **speed_options: Any,
     ) -> None:
         from ..ice.season import SeasonGrid  # the season's own grid type (a convenience)
@@ -56,9 +62,13 @@ class IceSeasonTime(CostModel):
         self.v0_kn = number(v0_kn, "v0_kn", above=0, example=12.0)
         self.season = season if isinstance(season, SeasonGrid) else SeasonGrid(season)
         self.ice_class = get_class(ice_class).name
+        self.fast_ice: str | float = season_rule(self.season.ds, fast_ice)
         self.hours_per_km, self.valid_from_h, self.departure = self.season.hours_per_km(
-            ice_class, v0_kn, departure, speed, **speed_options
+            ice_class, v0_kn, departure, speed, fast_ice=self.fast_ice, **speed_options
         )
+        first = self.season.times.size - self.valid_from_h.size
+        #: What the charts from the departure on assume (fast ice, open and bergy water), in words.
+        self.assumptions = season_assumptions(self.season.ds, first, self.fast_ice)
         # where some chart lets the class go; numpy types any(axis=0) as "bool or array"
         self._open = cast("npt.NDArray[np.bool_]", np.isfinite(self.hours_per_km).any(axis=0))
         if not self._open.any():
@@ -94,10 +104,7 @@ class IceSeasonTime(CostModel):
                 if open_.size
                 else "it may use no pixel of the chart"
             )
-            last = self.season.ds.isel(time=-1)
-            ice = ", ".join(
-                f"{k} {float(last[k].values[rc]):g}" for k in ("CT", "SA", "thickness") if k in last
-            )
+            ice = describer(self.season.ds.isel(time=-1), self.fast_ice)(*rc)
             raise ValueError(
                 f"{name} {describe(prepared.chart, rc)} is in ice class {self.ice_class} "
                 f"may not enter in any chart from {self.departure} on (last chart: {ice}); "
@@ -124,6 +131,7 @@ class IceSeasonTime(CostModel):
             tick="ms",
             charts_used=tuple(times[k] for k in used),
             ice_class=self.ice_class,
+            assumptions=self.assumptions,
         )
         # No route.speed_kn: legs at one speed would contradict the per-step times and waits.
         if hours > self.valid_from_h[-1] + self.season.last_valid_h:
