@@ -56,7 +56,7 @@ from ..errors import NoRouteError
 from ..models import EdgeCost, IceSeasonTime
 from . import andreeva
 from .seasonfast import record_rule, season_layers
-from .seasonspeed import andreeva_speed_kn, class_speed_kn, table_speed_kn
+from .seasonspeed import andreeva_speed_kn, class_speed_kn, frame_speed_kn, table_speed_kn
 from .sigrid import read_sigrid3
 
 if TYPE_CHECKING:
@@ -211,13 +211,7 @@ class SeasonGrid:
             raise ValueError(f"speed must be 'andreeva', 'class' or a table {{stage: knots}}, got {speed!r}")
         hours = np.empty((self.times.size - k0,) + self.shape, np.float32)
         for i, k in enumerate(range(k0, self.times.size)):  # frame by frame: no 7-frame float64 copies
-            frame = self.ds.isel(time=k)
-            if speed == "class":
-                v = class_speed_kn(frame, ice_class, v0_kn, **speed_options)
-            elif isinstance(speed, str):
-                v = andreeva_speed_kn(frame, ice_class, v0_kn, **speed_options)
-            else:
-                v = table_speed_kn(frame, ice_class, speed, **speed_options)
+            v = frame_speed_kn(self.ds.isel(time=k), ice_class, v0_kn, speed, **speed_options)
             hours[i] = andreeva.time_cost(v / v0_kn, v0_kn)
         valid_from_h = (self.times[k0:] - dep) / np.timedelta64(1, "h")
         return hours, valid_from_h.astype(float), dep

@@ -102,3 +102,13 @@ def class_speed_kn(
         )
     v = np.asarray(ice_speed(frame, ice_class, v0_kn, fast_ice=season_rule(frame, fast_ice)).values, float)
     return np.where(_closed(frame, np.asarray(frame["CT"].values, float), ice_class, False), 0.0, v)
+
+
+def frame_speed_kn(frame, ice_class, v0_kn, speed, **options) -> np.ndarray:
+    """The speed (knots; 0 where closed) on one chart by the season's speed model: speed
+    'class' (class_speed_kn), 'andreeva' (andreeva_speed_kn) or a table (table_speed_kn)."""
+    if speed == "class":
+        return class_speed_kn(frame, ice_class, v0_kn, **options)
+    if isinstance(speed, str):
+        return andreeva_speed_kn(frame, ice_class, v0_kn, **options)
+    return table_speed_kn(frame, ice_class, speed, **options)

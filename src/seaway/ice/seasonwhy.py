@@ -36,7 +36,7 @@ from ..result.environment import weighted_samples
 from .classes import get_class
 from .noroute import LADDER, NO_CLASS, SHOWN
 from .seasonfast import describer
-from .seasonspeed import andreeva_speed_kn, class_speed_kn, table_speed_kn
+from .seasonspeed import frame_speed_kn
 
 if TYPE_CHECKING:
     from .season import SeasonGrid
@@ -88,13 +88,7 @@ def snap_season_ends(
 
 def _frame_open(grid, k, ice_class, v0_kn, speed, speed_options) -> np.ndarray:
     """Where chart k lets `ice_class` go (the season's speed model)."""
-    frame = grid.ds.isel(time=k)
-    if speed == "class":
-        v = class_speed_kn(frame, ice_class, v0_kn, **speed_options)
-    elif isinstance(speed, str):
-        v = andreeva_speed_kn(frame, ice_class, v0_kn, **speed_options)
-    else:
-        v = table_speed_kn(frame, ice_class, speed, **speed_options)
+    v = frame_speed_kn(grid.ds.isel(time=k), ice_class, v0_kn, speed, **speed_options)
     return (np.asarray(v, float) > 0) & ~grid.dry
 
 
