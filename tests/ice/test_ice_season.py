@@ -12,29 +12,12 @@ import seaway
 from seaway.ice.season import arrival_field, as_season, route_season
 from support.data import SHARED_DATA
 from support.reference import haversine, season_best_arrival, season_path_arrival
-from support.seasons import DAY0, retreating_edge
+from support.seasons import DAY0, planar_season, retreating_edge
 
 DATA = SHARED_DATA
 KN = 1.852  # km per nautical mile
 #: Speeds for the table tests (knots), by WMO stage; 0 closes a stage.
 TABLE = {55: 12.0, 87: 6.0, 91: 3.0, 93: 0.0}
-
-
-def planar_season(stage, ct=None, hours=None, dx=10.0):
-    """A season Dataset on a planar grid of dx-km pixels: stage (K, R, C), charts at `hours`."""
-    k, rows, cols = stage.shape
-    ct = np.where(stage == 55, 0.0, 9.0) if ct is None else ct
-    hours = np.arange(k) * 24.0 if hours is None else np.asarray(hours, float)
-    time = DAY0 + (hours * 3600).astype("timedelta64[s]")
-    sa = np.where(stage == 55, np.nan, stage).astype(float)
-    return xr.Dataset(
-        {
-            "CT": (("time", "y", "x"), ct.astype(float)),
-            "SA": (("time", "y", "x"), sa),
-            "land": (("time", "y", "x"), np.zeros(stage.shape, bool)),
-        },
-        coords={"time": time, "y": dx * np.arange(rows)[::-1], "x": dx * np.arange(cols)},
-    )
 
 
 def table_hours(stage):

@@ -1,4 +1,5 @@
-"""A week of daily ice charts with a retreating edge (moved from ice/test_ice_season.py)."""
+"""Synthetic seasons: a week of daily ice charts with a retreating edge, and planar seasons
+by WMO stage (moved from ice/test_ice_season.py)."""
 
 import numpy as np
 import xarray as xr
@@ -60,4 +61,21 @@ def channel_season(ice, days=3, wall=None):
             "land": (("time", "lat", "lon"), np.broadcast_to(land, ct.shape)),
         },
         coords={"time": time, "lat": CHANNEL_LAT, "lon": CHANNEL_LON},
+    )
+
+
+def planar_season(stage, ct=None, hours=None, dx=10.0):
+    """A season Dataset on a planar grid of dx-km pixels: stage (K, R, C), charts at `hours`."""
+    k, rows, cols = stage.shape
+    ct = np.where(stage == 55, 0.0, 9.0) if ct is None else ct
+    hours = np.arange(k) * 24.0 if hours is None else np.asarray(hours, float)
+    time = DAY0 + (hours * 3600).astype("timedelta64[s]")
+    sa = np.where(stage == 55, np.nan, stage).astype(float)
+    return xr.Dataset(
+        {
+            "CT": (("time", "y", "x"), ct.astype(float)),
+            "SA": (("time", "y", "x"), sa),
+            "land": (("time", "y", "x"), np.zeros(stage.shape, bool)),
+        },
+        coords={"time": time, "y": dx * np.arange(rows)[::-1], "x": dx * np.arange(cols)},
     )

@@ -6,6 +6,9 @@ from __future__ import annotations
 from collections.abc import Hashable, Mapping
 from typing import Any
 
+import numpy as np
+import xarray as xr
+
 LAT_NAMES = ("lat", "latitude", "nav_lat")
 LON_NAMES = ("lon", "longitude", "long", "nav_lon")
 Y_NAMES = ("y", "yc", "northing")
@@ -95,3 +98,51 @@ def coord_role(name: Hashable, attrs: Mapping[Any, Any]) -> str | None:
     if lname in X_NAMES or std == "projection_x_coordinate" or axis == "X":
         return "x"
     return None
+
+
+#: CF / UDUNITS spellings of the length units a planar chart's y/x coordinates come in, in km.
+KM_PER_UNIT = {
+    "m": 1e-3,
+    "meter": 1e-3,
+    "meters": 1e-3,
+    "metre": 1e-3,
+    "metres": 1e-3,
+    "km": 1.0,
+    "kilometer": 1.0,
+    "kilometers": 1.0,
+    "kilometre": 1.0,
+    "kilometres": 1.0,
+}
+
+
+def planar_in_km(da: xr.DataArray, what: str = "the chart") -> tuple[xr.DataArray, tuple[str, ...]]:
+    """(da with its planar y/x coordinates in km, what was assumed or converted, in words) for
+    models that price steps per km. A lat/lon grid is returned as it is; coordinates in metres
+    are divided by 1000; coordinates without units are taken as km (said); no coordinate
+    values: each pixel is taken as 1 km (said); other units raise ValueError naming the fix."""
+    roles = {coord_role(d, da[d].attrs if d in da.coords else {}): d for d in da.dims}
+    if "lat" in roles and "lon" in roles:
+        return da, ()
+    bare, none = [], []
+    for d in da.dims:
+        if d not in da.coords:
+            none.append(str(d))
+            continue
+        units = str(da[d].attrs.get("units", "")).strip().lower()
+        if not units:
+            bare.append(str(d))
+        elif units not in KM_PER_UNIT:
+            raise ValueError(
+                f"{what}'s {d} coordinate is in {units!r}: give planar coordinates in 'm' or 'km' "
+                "(a lat/lon grid needs latitude/longitude coordinates)"
+            )
+        elif KM_PER_UNIT[units] != 1.0:
+            km = np.asarray(da[d].values, float) * KM_PER_UNIT[units]
+            da = da.assign_coords({d: (d, km, {**da[d].attrs, "units": "km"})})
+    said = []
+    if bare:
+        have = " and ".join(bare) + (" coordinates have" if len(bare) > 1 else " coordinate has")
+        said.append(f"{what}'s {have} no units: taken as km (set the units attribute to 'm' or 'km')")
+    if none:
+        said.append(f"{what} has no values on its {' and '.join(none)} axis: each pixel taken as 1 km")
+    return da, tuple(said)

@@ -49,6 +49,7 @@ import numpy.typing as npt
 import xarray as xr
 
 from ..base.files import open_netcdf
+from ..chart.cf import planar_in_km
 from ..chart.raster import as_chart
 from ..engine.methods import check_options
 from ..engine.prepared import PreparedChart
@@ -144,7 +145,9 @@ class SeasonGrid:
         self.times = self.ds["time"].values
         ct = self.ds["CT"]
         template = ct.isel(time=0, drop=True)
-        self.template = template.drop_vars([c for c in template.coords if c not in template.dims])
+        template = template.drop_vars([c for c in template.coords if c not in template.dims])
+        #: What the grid's step lengths assume (planar coordinates without units: km), in words.
+        self.template, self.assumptions = planar_in_km(template, "the season")
         self.shape = self.template.shape
         dry = np.zeros(self.shape, bool)
         for name in ("land", "off_chart"):

@@ -68,7 +68,7 @@ class IceSeasonTime(CostModel):
         )
         first = self.season.times.size - self.valid_from_h.size
         #: What the charts from the departure on assume (fast ice, open and bergy water), in words.
-        self.assumptions = season_assumptions(self.season.ds, first, self.fast_ice)
+        self.assumptions = self.season.assumptions + season_assumptions(self.season.ds, first, self.fast_ice)
         # where some chart lets the class go; numpy types any(axis=0) as "bool or array"
         self._open = cast("npt.NDArray[np.bool_]", np.isfinite(self.hours_per_km).any(axis=0))
         if not self._open.any():
