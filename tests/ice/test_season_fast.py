@@ -236,3 +236,12 @@ def test_real_cis_chart_as_a_season_keeps_fast_ice_stages_and_bergy_water(shared
     hours = andreeva.time_cost(ice_speed(ds, "Arc7", 12) / 12, 12).astype(np.float32).astype(float)
     static = seaway.route(hours, (64, -57), (75, -70), land=SeasonGrid(season).dry, edge_cost="integral")
     assert route.cost == pytest.approx(static.cost, rel=1e-9) and route.assumptions == (said,)
+
+
+def test_a_bad_fast_ice_rule_is_refused_before_the_charts_are_read(tmp_path):
+    # The files do not exist: the rule is checked first, so the message is about the rule.
+    missing = {d: str(tmp_path / f"{d}.shp") for d in DAYS}
+    with pytest.raises(
+        ValueError, match=r"fast_ice must be 'nearby', 'closed' or a WMO stage code .* got 'thick'"
+    ):
+        read_season(missing, latlon_grid(*GRID), fast_ice="thick")

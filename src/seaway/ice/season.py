@@ -56,6 +56,7 @@ from ..engine.prepared import PreparedChart
 from ..errors import NoRouteError
 from ..models import EdgeCost, IceSeasonTime
 from . import andreeva
+from .forms import check_fast_ice
 from .seasonfast import record_rule, season_layers
 from .seasonspeed import andreeva_speed_kn, class_speed_kn, frame_speed_kn, table_speed_kn
 from .sigrid import read_sigrid3
@@ -92,9 +93,10 @@ def read_season(charts, grid, *, fast_ice=None, **read_kwargs) -> xr.Dataset:
     except (TypeError, ValueError) as exc:
         raise ValueError(f"chart dates must be dates such as '2026-07-01' or datetime64: {exc}") from None
     _check_increasing(np.array(dates), "sorted(charts)")
+    rule = None if fast_ice is None else check_fast_ice(fast_ice)  # refused before any file is read
     frames = [read_sigrid3(p, grid, **read_kwargs) for _, p in items]
     ds = xr.concat([f[season_layers(f)] for f in frames], dim="time", coords="minimal", compat="override")
-    return record_rule(ds.assign_coords(time=dates), fast_ice)
+    return record_rule(ds.assign_coords(time=dates), rule)
 
 
 def _check_increasing(t, fix):
