@@ -22,7 +22,7 @@ from seaway.ice import chart_impact  # noqa: E402
 from seaway.ice.grids import latlon_grid  # noqa: E402
 from seaway.ice.noroute import explain_no_route  # noqa: E402
 from seaway.ice.sigrid import read_sigrid3  # noqa: E402
-from support.sigrid import write_chart  # noqa: E402
+from support.sigrid import write_fast_channel  # noqa: E402
 
 GEOD = pyproj.Geod(a=6371008.8, b=6371008.8)
 NSIDC = ("sea_ice_concentration", "seaice_conc_daily_nh_20211231_f17_v04r00.nc")
@@ -32,19 +32,8 @@ START, END = (72.05, 61.55), (72.05, 78.55)
 
 @pytest.fixture(scope="module")
 def fast_sea(tmp_path_factory):
-    """Land at 70-71 N and 74-75 N; between them open water at 60-63 E and 77-80 E and fast ice
-    of unknown stage at 63-77 E (FA 08, SA 99, CT 92, as AARI codes it)."""
-    box = shapely.box
-    fast = {"POLY_TYPE": "I", "CT": "92", "SA": "99", "FA": "08"}
-    rows = [
-        (box(60, 70, 80, 71), {"POLY_TYPE": "L"}),
-        (box(60, 74, 80, 75), {"POLY_TYPE": "L"}),
-        (box(60, 71, 63, 74), {"POLY_TYPE": "W", "CT": "00"}),
-        (box(77, 71, 80, 74), {"POLY_TYPE": "W", "CT": "00"}),
-        (box(63, 71, 70, 74), fast),
-        (box(70, 71, 77, 74), fast),
-    ]
-    path = write_chart(tmp_path_factory.mktemp("fast") / "fast_sea.shp", rows)
+    """AARI's winter shape (support.sigrid.write_fast_channel), its fast ice in two polygons."""
+    path = write_fast_channel(tmp_path_factory.mktemp("fast") / "fast_sea.shp", fast_cuts=(70,))
     return str(path), read_sigrid3(str(path), latlon_grid(70, 75, 60, 80, 0.1))
 
 

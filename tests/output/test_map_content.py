@@ -23,7 +23,7 @@ from matplotlib import image  # noqa: E402
 
 from seaway.output import mapframe  # noqa: E402
 from support.data import SHARED_DATA  # noqa: E402
-from support.sigrid import write_chart  # noqa: E402
+from support.sigrid import write_fast_channel  # noqa: E402
 
 pytestmark = pytest.mark.cli
 DMI = ("ice_charts_sigrid3", "dmi_greenland", "201405011000_SouthWest_RIC.shp")
@@ -73,18 +73,8 @@ def legend_html(page):
 
 @pytest.fixture(scope="module")
 def fast_sea(tmp_path_factory):
-    """AARI's winter shape: land at 70-71 N and 74-75 N, open water at 60-63 E and 77-80 E, fast
-    ice of unknown stage (FA 08, SA 99, CT 92) between."""
-    box = shapely.box
-    fast = {"POLY_TYPE": "I", "CT": "92", "SA": "99", "FA": "08"}
-    rows = [
-        (box(60, 70, 80, 71), {"POLY_TYPE": "L"}),
-        (box(60, 74, 80, 75), {"POLY_TYPE": "L"}),
-        (box(60, 71, 63, 74), {"POLY_TYPE": "W", "CT": "00"}),
-        (box(77, 71, 80, 74), {"POLY_TYPE": "W", "CT": "00"}),
-        (box(63, 71, 77, 74), fast),
-    ]
-    return str(write_chart(tmp_path_factory.mktemp("fastmap") / "fast.shp", rows))
+    """AARI's winter shape (support.sigrid.write_fast_channel)."""
+    return str(write_fast_channel(tmp_path_factory.mktemp("fastmap") / "fast.shp"))
 
 
 def test_fast_ice_open_water_and_land_on_both_maps(fast_sea, tmp_path, legends, capsys):

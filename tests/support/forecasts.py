@@ -5,12 +5,17 @@ import numpy as np
 import xarray as xr
 
 
-def forecast(shape=(21, 31), frames=1, lat0=60.0, lon0=0.0, step=0.1, hours=6, **fields):
-    """A Dataset on a regular lat/lon grid with CF standard names; fields are arrays of shape
-    (frames, rows, cols) or (rows, cols), or scalars."""
-    lat = lat0 + step * np.arange(shape[0])
-    lon = lon0 + step * np.arange(shape[1])
-    time = np.datetime64("2026-01-01T00") + np.arange(frames) * np.timedelta64(hours, "h")
+def forecast(
+    shape=(21, 31), frames=1, lat0=60.0, lon0=0.0, step=0.1, hours=6, lat=None, lon=None, start=None, **fields
+):
+    """A Dataset on a regular lat/lon grid with CF standard names (the grid from shape, lat0,
+    lon0 and step, or the axes lat and lon); frames every `hours` from `start` (default
+    2026-01-01); fields are arrays of shape (frames, rows, cols) or (rows, cols), or scalars."""
+    lat = lat0 + step * np.arange(shape[0]) if lat is None else np.asarray(lat)
+    lon = lon0 + step * np.arange(shape[1]) if lon is None else np.asarray(lon)
+    shape = (lat.size, lon.size)
+    start = np.datetime64("2026-01-01T00") if start is None else start
+    time = start + np.arange(frames) * np.timedelta64(hours, "h")
     names = {
         "ce": "eastward_sea_water_velocity",
         "cn": "northward_sea_water_velocity",

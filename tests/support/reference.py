@@ -245,10 +245,11 @@ def season_path_arrival(hours_per_km, valid_from_h, path, length_of):
     return t
 
 
-def season_best_arrival(hours_per_km, valid_from_h, start, end, k, length_of):
-    """The earliest arrival over every simple path of k x k stencil steps (depth-first): with
-    waiting allowed no path needs to revisit a pixel, since waiting there dominates the loop."""
-    _, rows, cols = hours_per_km.shape
+def best_arrival_over_paths(shape, start, end, k, step_arrival):
+    """The earliest arrival over every simple path of k x k stencil steps from time 0
+    (depth-first), step_arrival(p, q, t) the arrival at q leaving p at t: with waiting allowed no
+    path needs to revisit a pixel, since waiting there dominates the loop."""
+    rows, cols = shape
     offsets = stencil_offsets(k, "full")
     best = math.inf
 
@@ -261,9 +262,20 @@ def season_best_arrival(hours_per_km, valid_from_h, start, end, k, length_of):
             q = (p[0] + di, p[1] + dj)
             if not (0 <= q[0] < rows and 0 <= q[1] < cols) or q in seen:
                 continue
-            a = season_step_arrival(hours_per_km, valid_from_h, p, q, t, length_of(p, q))
+            a = step_arrival(p, q, t)
             if a < best:  # arrival times only grow along a path
                 walk(q, a, seen | {q})
 
     walk(start, 0.0, {start})
     return best
+
+
+def season_best_arrival(hours_per_km, valid_from_h, start, end, k, length_of):
+    """The earliest arrival through a season over every simple path (best_arrival_over_paths)."""
+    return best_arrival_over_paths(
+        hours_per_km.shape[1:],
+        start,
+        end,
+        k,
+        lambda p, q, t: season_step_arrival(hours_per_km, valid_from_h, p, q, t, length_of(p, q)),
+    )

@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from support.reference import haversine, pieces, stencil_offsets, touched
+from support.reference import best_arrival_over_paths, haversine, pieces, touched
 
 KNOTS_PER_MS = 3600.0 / 1852.0
 KM_PER_NM = 1.852
@@ -108,24 +108,12 @@ def ice_weather_step_arrival(hours_per_km, valid_from_h, weather, p, q, t):
 
 
 def ice_weather_best_arrival(hours_per_km, valid_from_h, weather, start, end, k=3):
-    """The earliest arrival over every simple path of k x k stencil steps from time 0 (waiting
-    where the ship is dominates any loop, so no path needs to revisit a pixel)."""
-    _, rows, cols = hours_per_km.shape
-    offsets = stencil_offsets(k, "full")
-    best = math.inf
-
-    def walk(p, t, seen):
-        nonlocal best
-        if p == end:
-            best = min(best, t)
-            return
-        for di, dj in offsets:
-            q = (p[0] + di, p[1] + dj)
-            if not (0 <= q[0] < rows and 0 <= q[1] < cols) or q in seen:
-                continue
-            a = ice_weather_step_arrival(hours_per_km, valid_from_h, weather, p, q, t)
-            if a < best:  # arrival times only grow along a path
-                walk(q, a, seen | {q})
-
-    walk(start, 0.0, {start})
-    return best
+    """The earliest arrival through ice and weather over every simple path
+    (support.reference.best_arrival_over_paths)."""
+    return best_arrival_over_paths(
+        hours_per_km.shape[1:],
+        start,
+        end,
+        k,
+        lambda p, q, t: ice_weather_step_arrival(hours_per_km, valid_from_h, weather, p, q, t),
+    )

@@ -13,6 +13,7 @@ from seaway.base.units import KM_PER_NM, KNOTS_PER_MS
 from seaway.ice.season import SeasonGrid, route_season
 from seaway.models import IceWeatherTime
 from seaway.weather import ForecastGrid, Vessel, route_ice_weather
+from support.forecasts import forecast
 from support.reference import haversine
 from support.reference_weather import Weather, ice_weather_best_arrival
 from support.seasons import DAY0, retreating_edge
@@ -22,25 +23,15 @@ SHIP = Vessel(speed_kn=12.0, displacement_t=15000.0)
 
 
 def _forecast_on(ds, frames=1, hours=6, **fields):
-    """A CF forecast on the grid of the season `ds` (fields (frames, rows, cols) or scalars)."""
-    names = {
-        "ce": "eastward_sea_water_velocity",
-        "cn": "northward_sea_water_velocity",
-        "hs": "sea_surface_wave_significant_height",
-        "wdir": "sea_surface_wave_from_direction",
-        "wind": "wind_speed",
-    }
-    shape = (frames, ds.sizes["lat"], ds.sizes["lon"])
-    time = ds["time"].values[0] + np.arange(frames) * np.timedelta64(hours, "h")
-    data = {
-        k: xr.DataArray(
-            np.broadcast_to(np.asarray(v, np.float32), shape).astype(float),
-            dims=("time", "lat", "lon"),
-            attrs={"standard_name": names[k]},
-        )
-        for k, v in fields.items()
-    }
-    return xr.Dataset(data, coords={"time": time, "lat": ds["lat"].values, "lon": ds["lon"].values})
+    """A CF forecast on the grid of the season `ds` from its first chart (support.forecasts)."""
+    return forecast(
+        lat=ds["lat"].values,
+        lon=ds["lon"].values,
+        start=ds["time"].values[0],
+        frames=frames,
+        hours=hours,
+        **fields,
+    )
 
 
 def test_calm_weather_gives_the_ice_season_route_exactly():
