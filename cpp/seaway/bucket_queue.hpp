@@ -94,14 +94,21 @@ class BasicBucketQueue {
   BasicBucketQueue(double width, double span)
       : keys_(width, span), ring_(keys_.buckets()), inv_width_(1.0 / width) {}
 
-  bool empty() const { return keys_.empty() && over_.empty(); }
+  bool empty() const {  // without Overflow exactly the ring's test (the search's loop asks it)
+    if constexpr (Overflow) return keys_.empty() && over_.empty();
+    return keys_.empty();
+  }
   std::size_t peak() const { return keys_.peak() + over_.capacity(); }
   std::size_t capacity_bytes() const {
     std::size_t b = ring_.capacity() * sizeof(ring_[0]) + over_.capacity() * sizeof(HeapEntry);
     for (const auto& v : ring_) b += v.capacity() * sizeof(std::uint32_t);
     return b;
   }
-  double lower_bound() const { return keys_.empty() && !over_.empty() ? over_.front().key : keys_.lower_bound(); }
+  double lower_bound() const {
+    if constexpr (Overflow)
+      if (keys_.empty() && !over_.empty()) return over_.front().key;
+    return keys_.lower_bound();
+  }
   template <class F>
   void for_each(F&& f) const {  // every entry, in no order
     for (const HeapEntry& e : over_) f(e);
