@@ -11,7 +11,7 @@ import pytest
 
 import seaway
 from seaway.chart.locate import locate
-from seaway.ice.season import SeasonGrid
+from seaway.ice.seasongrid import SeasonGrid
 from seaway.models import IceSeasonTime
 from seaway.samples import kara_season
 
@@ -30,7 +30,7 @@ def _static(grid, hours):
 @pytest.fixture(scope="module")
 def season():
     grid = SeasonGrid(kara_season(days=7, shape=SHAPE))
-    return grid, grid.prepare(neighbourhood=5)
+    return grid, seaway.prepare(grid, neighbourhood=5)
 
 
 def test_build_season_model(benchmark, season):

@@ -22,7 +22,7 @@ import xarray as xr
 
 import seaway
 from seaway.base.fields import smooth_noise
-from seaway.ice.season import SeasonGrid
+from seaway.ice.seasongrid import SeasonGrid
 from seaway.models import IceSeasonTime, TravelTime
 from seaway.samples import kara_sea, kara_season
 from seaway.weather import ForecastGrid
@@ -56,7 +56,7 @@ def _note(key, med, last, td, static):
 
 def test_season_against_static():
     grid = SeasonGrid(kara_season(days=7, shape=SHAPE))
-    chart = grid.prepare(neighbourhood=5)
+    chart = seaway.prepare(grid, neighbourhood=5)
     model = IceSeasonTime(grid, "Arc7", 14.0)
     static = seaway.prepare(
         grid.template.copy(data=model.hours_per_km[0]), land=grid.dry, edge_cost="integral"

@@ -10,7 +10,7 @@ import pytest
 import xarray as xr
 
 import seaway
-from seaway.ice.season import SeasonGrid
+from seaway.ice.seasongrid import SeasonGrid
 from seaway.models import IceSeasonTime, IceWeatherTime, TravelTime
 from seaway.vessel import load
 from seaway.weather import ForecastGrid, kara_autumn, on_grid
@@ -28,7 +28,7 @@ def voyage():
     t = grid.template
     fc, _ = on_grid(gale, t[t.dims[0]].values, t[t.dims[1]].values, t.dims)
     ship = load("pc6-general-cargo")
-    return grid, grid.prepare(neighbourhood=5), ForecastGrid(fc, departure=DEPART), ship
+    return grid, seaway.prepare(grid, neighbourhood=5), ForecastGrid(fc, departure=DEPART), ship
 
 
 @pytest.mark.parametrize("method", ["astar", "dijkstra"])

@@ -10,7 +10,7 @@ class NoRouteError(ValueError):
 
     A search that fails raises it with its message only. The explanations add what the chart
     says about why (seaway.engine.reach.explain_no_route for any chart,
-    seaway.ice.noroute.explain_no_route for ice charts; ``seaway route`` always asks them), as
+    seaway.icenav.noroute.explain_no_route for ice charts; ``seaway route`` always asks them), as
     attributes (None or empty when not known):
 
     cause: "land" (the ends lie in separate bodies of water even with every impassable pixel

@@ -12,7 +12,7 @@ import pytest
 import xarray as xr
 
 from seaway.cli import main
-from seaway.ice.season import route_season
+from seaway.icenav.season import route_season
 from seaway.vessel import load
 from seaway.weather import Vessel, decode_time, open_forecasts, route_ice_weather, route_time
 from seaway.weather.forecast import find_fields

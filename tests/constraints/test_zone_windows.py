@@ -153,11 +153,11 @@ def test_time_zone_errors():
 def test_via_on_a_season_route_is_refused_with_the_fix():
     """A season model cannot yet start a leg at the previous leg's arrival: via points are
     refused (rather than every leg leaving at the departure)."""
-    from seaway.ice.season import SeasonGrid
+    from seaway.ice.seasongrid import SeasonGrid
     from seaway.models import IceSeasonTime
     from support.seasons import DAY0, retreating_edge
 
     grid = SeasonGrid(retreating_edge(days=2))
     model = IceSeasonTime(grid, "Arc4", 14, departure=DAY0)
     with pytest.raises(ValueError, match="via points on a .* route need each leg to depart"):
-        grid.prepare().route((71.0, 64.0), (76.0, 78.0), model=model, via=[(72.0, 70.0)])
+        seaway.prepare(grid).route((71.0, 64.0), (76.0, 78.0), model=model, via=[(72.0, 70.0)])

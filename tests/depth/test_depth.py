@@ -18,8 +18,9 @@ import xarray as xr
 import seaway
 from seaway.depth import apply_draft, depth_on_grid, least_depth, open_bathymetry
 from seaway.errors import NoRouteError
-from seaway.ice import andreeva, pareto
+from seaway.ice import andreeva
 from seaway.ice.grids import latlon_grid
+from seaway.icenav import pareto
 from support.data import SHARED_DATA
 
 ndimage = pytest.importorskip("scipy.ndimage")

@@ -14,7 +14,8 @@ import seaway
 from seaway import export
 from seaway._core import haversine_km
 from seaway.base import sphere
-from seaway.ice import chart_impact, summary
+from seaway.ice import chart_impact
+from seaway.icenav import summary
 
 DMI_SUMMER = ("ice_charts_sigrid3", "dmi_greenland", "201307222045_CapeFarewell_RIC.shp")
 

@@ -8,9 +8,10 @@ import pytest
 import seaway
 from seaway import export
 from seaway._core import haversine_km
-from seaway.ice import chart_impact, summary
+from seaway.ice import chart_impact
 from seaway.ice.forms import check_fast_ice
 from seaway.ice.impact import governing_stage
+from seaway.icenav import summary
 
 pytest.importorskip("pyogrio")
 shapely = pytest.importorskip("shapely")

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from seaway.ice import andreeva as a
-from seaway.ice import pareto
+from seaway.icenav import pareto
 
 # Paper 002, "Параметры маршрутов": route, l (nm), Z (m), h (m), f1, f2, F, V (kn), T (h).
 # Arc7, draft 12 m, h_pass 1.7 m, V0 12 kn, f3 = 1, dL = 0 (the table's f1 is 1 - d/Z).

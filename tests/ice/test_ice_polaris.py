@@ -6,8 +6,9 @@ import pytest
 import xarray as xr
 
 import seaway
-from seaway.ice import polaris, summary
+from seaway.ice import polaris
 from seaway.ice.polaris import rio_egg
+from seaway.icenav import summary
 
 # MSC.1/Circ.1519 Table 1.3, transcribed as printed (columns IF, new, grey, GW, TFY1, TFY2,
 # MFY<1m, MFY, ThFY, SY, LMY, HMY).

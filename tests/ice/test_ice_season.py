@@ -9,7 +9,8 @@ import pytest
 import xarray as xr
 
 import seaway
-from seaway.ice.season import arrival_field, as_season, route_season
+from seaway.ice.seasongrid import as_season
+from seaway.icenav.season import arrival_field, route_season
 from support.data import SHARED_DATA
 from support.reference import haversine, season_best_arrival, season_path_arrival
 from support.seasons import DAY0, planar_season, retreating_edge
@@ -176,7 +177,7 @@ def test_a_week_of_daily_charts_with_a_retreating_ice_edge():
     assert late4.stats.voyage.arrival >= arc4.stats.voyage.arrival and late4.cost < arc4.cost
     # The reported time is the route's own path sailed through the charts by the reference.
     hours = np.array([(t - DAY0) / np.timedelta64(1, "h") for t in ds.time.values])
-    speed = seaway.ice.season.andreeva_speed_kn
+    speed = seaway.icenav.season.andreeva_speed_kn
     h = []
     for k in range(ds.sizes["time"]):
         v = speed(ds.isel(time=k), "Arc7", 14)
@@ -198,7 +199,7 @@ def test_paper_002_speed_in_a_chart_by_hand():
     # -> 6 kn; medium first-year (91, to 1.2 m) f2 = 1/7 -> 1.714 kn; 'mid' takes 0.95 m.
     stage = np.array([[[55, 87, 91, 93]]])
     frame = planar_season(stage, ct=np.array([[[0, 5, 8, 9.0]]])).isel(time=0)
-    speed = seaway.ice.season.andreeva_speed_kn
+    speed = seaway.icenav.season.andreeva_speed_kn
     assert speed(frame, "Arc7", 12)[0] == pytest.approx([12, 6, 12 / 7, 0])
     assert speed(frame, "Arc7", 12, stage_thickness="mid")[0, 2] == pytest.approx(12 * (1 - 0.95 / 1.4))
     # Arc4 may enter 5/10 but not 8/10 (open ice only); without the limit f2 rules alone.
@@ -227,7 +228,7 @@ def test_real_ocean_model_season_of_daily_ice():
     hours = (season.time.values - season.time.values[0]) / np.timedelta64(1, "h")
     h = []
     for k in range(season.sizes["time"]):
-        v = seaway.ice.season.andreeva_speed_kn(season.isel(time=k), "Arc7", 12)
+        v = seaway.icenav.season.andreeva_speed_kn(season.isel(time=k), "Arc7", 12)
         with np.errstate(divide="ignore"):
             h.append(np.where(v > 0, 1 / (v * KN), np.inf).astype(np.float32).astype(float))
     dx = float(abs(x[1] - x[0]))
@@ -270,7 +271,7 @@ def test_bad_seasons_are_refused_with_the_fix():
     closed = stage.copy()
     closed[:, :, 3] = 93
     # A column of thick first-year ice at 9/10 (over Arc7's 8/10): explained by the ice
-    # (seaway.ice.seasonwhy), not the engine's bare "no route ... even waiting".
+    # (seaway.icenav.seasonwhy), not the engine's bare "no route ... even waiting".
     with pytest.raises(
         seaway.NoRouteError,
         match=r"ice closes the way in the season's most open chart "
@@ -289,7 +290,7 @@ def test_sigrid3_files_with_their_dates(tmp_path):
     import shapely
 
     from seaway.ice.grids import latlon_grid
-    from seaway.ice.season import read_season
+    from seaway.ice.seasongrid import read_season
 
     # A channel at 70-72 N between two coasts, closed by 9-10/10 medium first-year ice at
     # 13-16 E on the charts of 1 and 2 July; the chart of 3 July shows it open.
@@ -338,11 +339,11 @@ def test_later_departures_never_arrive_earlier_and_threads_agree():
     # the ice edge on some of them); one prepared chart and model set shared by 4 threads.
     from concurrent.futures import ThreadPoolExecutor
 
-    from seaway.ice.season import SeasonGrid
+    from seaway.ice.seasongrid import SeasonGrid
     from seaway.models import IceSeasonTime
 
     grid = SeasonGrid(retreating_edge())
-    chart = grid.prepare()
+    chart = seaway.prepare(grid)
     days = [DAY0 + np.timedelta64(6 * i, "h") for i in range(12)]
     models = [IceSeasonTime(grid, "Arc4", 14, departure=d) for d in days]
     serial = [chart.route((71.0, 64.0), (76.0, 78.0), model=m) for m in models]

@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 import seaway
-from seaway.ice.season import SeasonGrid, read_season, route_season
+from seaway.ice.seasongrid import SeasonGrid, read_season
+from seaway.icenav.season import route_season
 from seaway.models import IceSeasonTime
 from support.reference import haversine
 
@@ -77,7 +78,7 @@ def test_a_week_of_daily_sigrid3_charts_arc4_and_arc7_on_two_departures(week):
     assert week.sizes == {"time": 7, "lat": 3, "lon": 40}
     assert float(week.CT[0, 1, 27]) == 7 and np.isnan(week.CT[3, 1, 27]) == False  # noqa: E712
     grid = SeasonGrid(week)
-    chart = grid.prepare(neighbourhood=3)  # one prepared chart for both classes and departures
+    chart = seaway.prepare(grid, neighbourhood=3)  # one prepared chart for both classes and departures
     a, b = (72.15, 60.05), (72.15, 63.95)
     run = {
         (cls, day): chart.route(a, b, model=IceSeasonTime(grid, cls, 14, departure=day))
@@ -132,7 +133,7 @@ def test_inputs_refused_with_the_fix(week, tmp_path):
     with pytest.raises(
         ValueError,
         match=r"season's charts have \(3, 40\) pixels but the chart "
-        r"\(3, 41\): route on the season's grid \(seaway.ice.season.SeasonGrid.prepare\)",
+        r"\(3, 41\): route on the season's grid \(seaway.icenav.season.SeasonGrid.prepare\)",
     ):
         other.route((1, 0), (1, 39), model=model)
     with pytest.raises(ValueError, match=r"land has \(3, 41\) pixels but the season's charts \(3, 40\)"):

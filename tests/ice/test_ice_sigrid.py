@@ -6,8 +6,9 @@ import sys
 import numpy as np
 import pytest
 
-from seaway.ice import codes, polaris, summary
+from seaway.ice import codes, polaris
 from seaway.ice.grids import latlon_grid, projected_grid
+from seaway.icenav import summary
 from support.data import SHARED_DATA
 
 DATA = SHARED_DATA

@@ -1,4 +1,4 @@
-"""Why no route (seaway.ice.noroute, seaway.engine.reach): the ice that closes the way, the weakest
+"""Why no route (seaway.icenav.noroute, seaway.engine.reach): the ice that closes the way, the weakest
 class that gets through, how far the ship gets; "check the land mask" only when the land alone
 parts the ends. On a synthetic SIGRID-3 chart of the AARI winter shape (a sea of fast ice of
 unknown stage between two coasts), on the real NSIDC G02202 and CIS charts, and on the real
@@ -20,8 +20,8 @@ ndimage = pytest.importorskip("scipy.ndimage")
 pyproj = pytest.importorskip("pyproj")
 from seaway.ice import chart_impact  # noqa: E402
 from seaway.ice.grids import latlon_grid  # noqa: E402
-from seaway.ice.noroute import explain_no_route  # noqa: E402
 from seaway.ice.sigrid import read_sigrid3  # noqa: E402
+from seaway.icenav.noroute import explain_no_route  # noqa: E402
 from support.sigrid import write_fast_channel  # noqa: E402
 
 GEOD = pyproj.Geod(a=6371008.8, b=6371008.8)

@@ -1,14 +1,16 @@
-"""A season's ends and why no route gets through it (seaway.ice.seasonwhy, route_season): an end
+"""A season's ends and why no route gets through it (seaway.icenav.seasonwhy, route_season): an end
 on land moves only as far as the limit, an end in ice that opens later stays and the route waits,
 and a strait closed by first-year ice in every chart is explained by the ice, not the land."""
 
 import numpy as np
 import pytest
 
+import seaway
 from seaway.engine.snap import SnapError
 from seaway.errors import NoRouteError
-from seaway.ice.season import SeasonGrid, route_season
-from seaway.ice.seasonwhy import snap_season_ends
+from seaway.ice.seasongrid import SeasonGrid
+from seaway.icenav.season import route_season
+from seaway.icenav.seasonwhy import snap_season_ends
 from seaway.models import IceSeasonTime
 from support.reference import haversine
 from support.seasons import channel_season
@@ -119,7 +121,7 @@ def test_real_ocean_model_season_ends_and_a_way_closed_by_ice(shared_data):
     points are (row, col), distances in its km)."""
     import xarray as xr
 
-    from seaway.ice.season import as_season
+    from seaway.ice.seasongrid import as_season
 
     with xr.open_dataset(shared_data / "ocean_model" / "metno_ROMS_Arctic20_1to5Feb_2016.nc") as src:
         ds = src[["aice", "hice", "mask"]].load()
@@ -128,7 +130,7 @@ def test_real_ocean_model_season_ends_and_a_way_closed_by_ice(shared_data):
     model = IceSeasonTime(grid, "Arc4", 12)
     # The coastal land pixel (37, 90): the nearest pixel some chart opens, (37, 88) 40 km away,
     # lies in a pocket the ship cannot reach from the start; the nearest joined one is (33, 88).
-    field = np.asarray(grid.prepare().cost_field(start, model=model))
+    field = np.asarray(seaway.prepare(grid).cost_field(start, model=model))
     assert grid.dry[37, 90] and not grid.dry[37, 88] and not np.isfinite(field[37, 88])
     far = 20 * np.hypot(4, 2)
     with pytest.raises(

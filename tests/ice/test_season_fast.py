@@ -14,9 +14,10 @@ import seaway
 from seaway._core import haversine_km
 from seaway.errors import NoRouteError
 from seaway.ice import andreeva
-from seaway.ice.season import SeasonGrid, read_season, route_season
-from seaway.ice.seasonwhy import closed_reason
+from seaway.ice.seasongrid import SeasonGrid, read_season
 from seaway.ice.speed import ice_speed
+from seaway.icenav.season import route_season
+from seaway.icenav.seasonwhy import closed_reason
 from seaway.models import IceSeasonTime
 
 pytest.importorskip("pyogrio")
@@ -166,7 +167,7 @@ def test_fast_ice_closed_by_the_rule_is_named_in_the_no_route_and_the_snap(chart
     with pytest.raises(
         ValueError, match=r"\(last chart: fast ice of unknown stage, closed by the fast_ice rule at 10/10\)"
     ):
-        SeasonGrid(same).prepare().route((72.55, 70.05), END, model=model)
+        seaway.prepare(SeasonGrid(same)).route((72.55, 70.05), END, model=model)
 
 
 def test_the_concentration_limit_keeps_arc7_out_of_fast_ice_and_names_it(same):

@@ -5,7 +5,7 @@ says so, other units are refused naming the fix."""
 import numpy as np
 import pytest
 
-from seaway.ice.season import route_season
+from seaway.icenav.season import route_season
 from support.seasons import planar_season
 
 KN = 1.852

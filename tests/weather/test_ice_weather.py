@@ -10,7 +10,8 @@ import xarray as xr
 
 import seaway
 from seaway.base.units import KM_PER_NM, KNOTS_PER_MS
-from seaway.ice.season import SeasonGrid, route_season
+from seaway.ice.seasongrid import SeasonGrid
+from seaway.icenav.season import route_season
 from seaway.models import IceWeatherTime
 from seaway.weather import ForecastGrid, Vessel, route_ice_weather
 from support.forecasts import forecast
@@ -145,7 +146,7 @@ def test_ice_and_weather_equal_the_brute_force_over_all_paths(seed):
     best = ice_weather_best_arrival(
         model.hours_per_km, list(model.valid_from_h), weather, (0, 0), (rows - 1, cols - 1), k=3
     )
-    chart = grid.prepare(3)
+    chart = seaway.prepare(grid, neighbourhood=3)
     for method in ("dijkstra", "astar"):
         try:
             got = chart.route((lat[0], lon[0]), (lat[-1], lon[-1]), model=model, method=method).cost

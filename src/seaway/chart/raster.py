@@ -155,7 +155,15 @@ def as_chart(
     land: npt.ArrayLike | xr.DataArray | None = None,
     allow_negative: bool = False,
 ) -> Chart:
-    """Validate the user's raster and coordinates and build the engine's view of them."""
+    """Validate the user's raster and coordinates and build the engine's view of them. A
+    chart-like object with an as_chart() method (seaway.ice.SeasonGrid) gives its own."""
+    own = getattr(cost, "as_chart", None)
+    if callable(own) and not hasattr(cost, "dims"):
+        if lat is not None or lon is not None or land is not None:
+            raise ValueError(
+                f"a {type(cost).__name__} brings its own grid and land: give no lat, lon or land"
+            )
+        return cast(Chart, own())
     template = None
     coords: dict[str, npt.NDArray[np.float64]] = {}
     flag_land = None

@@ -14,7 +14,7 @@ from ..base.sphere import distance_km
 from ..base.units import KM_PER_DEG, KM_PER_NM
 from ..engine.api import route
 from ..errors import NoRouteError
-from ..ice.noroute import explain_no_route
+from ..icenav.noroute import explain_no_route
 from .common import CLI_METHODS, neighbourhood
 
 #: (name, lat, lon) of the demo's ends; each is snapped to the nearest water pixel of the chart.

@@ -18,7 +18,7 @@ import numpy as np
 
 from ..base.files import open_netcdf
 from ..ice.classes import get_class
-from ..ice.season import SeasonGrid, as_season
+from ..ice.seasongrid import SeasonGrid, as_season
 from ..vessel import Vessel, load
 from ..weather import (
     ForecastGrid,

@@ -1,4 +1,4 @@
-"""What `seaway route` says when no route is found: why, from the chart (seaway.ice.noroute on
+"""What `seaway route` says when no route is found: why, from the chart (seaway.icenav.noroute on
 ice charts: the ice that closes the way, the weakest class that gets through, how far the ship
 gets; seaway.engine.reach on other charts), and with --depth how deep the deepest way is."""
 
@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from ..engine.reach import explain_no_route as explain_chart
 from ..errors import NoRouteError
-from ..ice.noroute import explain_no_route as explain_ice
+from ..icenav.noroute import explain_no_route as explain_ice
 from .depth import why_no_route as why_depth
 from .projected import pixel_latlon
 

@@ -1,5 +1,5 @@
 """The `seaway season` command: the quickest route through a season of dated ice charts
-(seaway.ice.season, seaway.models.IceSeasonTime)."""
+(seaway.icenav.season, seaway.models.IceSeasonTime)."""
 
 from __future__ import annotations
 
@@ -9,11 +9,12 @@ import os
 
 import numpy as np
 
+from ..engine.api import prepare
 from ..errors import NoRouteError
 from ..ice.grids import latlon_grid
 from ..ice.routegrid import route_grid
-from ..ice.season import SeasonGrid, read_season
-from ..ice.seasonwhy import closed_reason, explain_season_no_route, usable
+from ..ice.seasongrid import SeasonGrid, read_season
+from ..icenav.seasonwhy import closed_reason, explain_season_no_route, usable
 from ..models import IceSeasonTime
 from ..output import export
 from .chartfile import fast_ice
@@ -142,7 +143,7 @@ def run_season(args) -> int:
         f"routing {model.ice_class} at {args.speed:g} kn from {model.departure} "
         f"({args.neighbourhood}x{args.neighbourhood} stencil, waiting allowed)"
     )
-    prepared = season.prepare(args.neighbourhood)
+    prepared = prepare(season, neighbourhood=args.neighbourhood)
     try:
         r = prepared.route(start, end, model=model, method=args.method)
     except NoRouteError:

@@ -10,7 +10,7 @@ holds for the same stencil and land rule):
   land (or the stencil) keeps the ends apart.
 
 explain_no_route puts these into a NoRouteError (seaway.errors) for any cost raster;
-seaway.ice.noroute does it for ice charts, with levels from the ice classes."""
+seaway.icenav.noroute does it for ice charts, with levels from the ice classes."""
 
 from __future__ import annotations
 

@@ -1,11 +1,13 @@
 """Ice navigation: ice classes, SIGRID-3 codes, and the cost models of Grinyak et al. 2022 (impact
 tables), IMO POLARIS (MSC.1/Circ.1519) and Andreeva 2021 (Andreeva: speed V = F*V0, time, Pareto).
 
-Modules: classes, codes, impact, polaris, andreeva (formulas), colours; pareto (Andreeva's
-time-safety routes), summary, season (routes through a time series of charts; numpy/xarray
-only; seasonwhy: its ends and why no route gets through it) and sigrid
-(readers of SIGRID-3 shapefiles/GeoPackages and NSIDC NetCDF; needs ``pip install
-"seaway[ice]"``, imported only when you import seaway.ice.sigrid).
+The ice knowledge the rest of the package rests on. Modules: classes, codes, forms (fast ice,
+open and bergy water), impact, polaris, andreeva (formulas), speed (a class's speed in a chart's
+ice), colours; seasongrid (a season of charts on one grid and a class's hours per km in each),
+seasonspeed and seasonfast (a chart of a season); concentration (a concentration-only chart as
+an ice chart); sigrid, geometry, grids, routegrid, vectorfile (readers of SIGRID-3
+shapefiles/GeoPackages and NSIDC NetCDF onto a grid; they need ``pip install "seaway[ice]"``).
+Routing through the ice (seasons, why no route, Pareto routes, summaries) is seaway.icenav.
 
 Ice chart Dataset (what seaway.ice.sigrid returns; models accept any Dataset with these names):
 
@@ -28,22 +30,10 @@ Coordinates: lat/lon (degrees, pixel centres) or y/x (km in the grid's projectio
 PROJ string is the Dataset attribute ``crs``).
 """
 
-import importlib
-
 from . import andreeva, classes, codes, impact, polaris
 from .classes import CLASSES, IceClass, class_names, get_class
 from .impact import ICE_IMPACT, chart_impact, ice_impact
-
-#: The modules that route (they import the engine, which imports the formulas above): loaded on
-#: first use, so that the cost models can read the ice classes without a cycle.
-_ROUTING = ("pareto", "season", "seasonwhy", "summary", "noroute")
-
-
-def __getattr__(name):
-    if name in _ROUTING:
-        return importlib.import_module(f"{__name__}.{name}")
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
+from .seasongrid import SeasonGrid, as_season, read_season
 
 __all__ = [
     "andreeva",
@@ -51,11 +41,6 @@ __all__ = [
     "codes",
     "impact",
     "polaris",
-    "pareto",
-    "season",
-    "seasonwhy",
-    "summary",
-    "noroute",
     "CLASSES",
     "IceClass",
     "class_names",
@@ -63,4 +48,7 @@ __all__ = [
     "ICE_IMPACT",
     "ice_impact",
     "chart_impact",
+    "SeasonGrid",
+    "as_season",
+    "read_season",
 ]

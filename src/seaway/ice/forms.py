@@ -117,7 +117,7 @@ def fast_ice_stage(ds, fast_ice=DEFAULT_FAST_ICE):
 
 
 def ice_words(code, fast=False, assumed=False, label="SA", guessed=False) -> str:
-    """The words messages use for one pixel's ice (seaway.ice.noroute, seaway.ice.seasonwhy): its
+    """The words messages use for one pixel's ice (seaway.icenav.noroute, seaway.icenav.seasonwhy): its
     governing stage `code` (NaN: unknown, or fast ice closed by the rule) named with `label` and
     its code, ", assumed" when the whole stage layer is (`guessed`); fast ice (`fast`) is named
     so, "of unknown stage, assumed" where its stage is the fast_ice assumption (`assumed`)."""

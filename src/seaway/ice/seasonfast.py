@@ -1,7 +1,7 @@
 """Fast ice, open and bergy water in a season of ice charts: the static path's rules
 (seaway.ice.forms) applied chart by chart, and said once for the whole season.
 
-A season read from SIGRID-3 files (seaway.ice.season.read_season) keeps each chart's form of ice
+A season read from SIGRID-3 files (seaway.icenav.season.read_season) keeps each chart's form of ice
 (FA, FB, FC), its second and third stages (SB, SC: the "nearby" rule reads them) and its
 `free_water` layer (CT 01 open water, 02 bergy water). Every chart then follows
 seaway.ice.forms exactly as a single chart does:
@@ -113,7 +113,7 @@ def season_assumptions(
 
 def describer(ds: xr.Dataset, fast_ice: str | float | None = None) -> Callable[..., str]:
     """(row, col[, concentration]) -> the ice of that pixel of one chart of a season in words:
-    its governing stage under the fast-ice rule, fast ice named as seaway.ice.noroute names it
+    its governing stage under the fast-ice rule, fast ice named as seaway.icenav.noroute names it
     (seaway.ice.forms.ice_words), or its thickness; and its total concentration."""
     ct = np.round(np.asarray(ds["CT"].values, float), 1)  # a model's 6.48207/10 reads 6.5/10
     stage = None

@@ -1,4 +1,4 @@
-"""The speed of an ice class (knots) on one chart of a season, for seaway.ice.season (whose
+"""The speed of an ice class (knots) on one chart of a season, for seaway.icenav.season (whose
 docstring describes the three models and what is closed): Andreeva 2021's V = F * V0, a user's
 table by WMO stage and concentration, or the class's own model (seaway.ice.speed); 0 where the
 class may not go (land, off the chart, unknown ice, over its concentration limit). Fast ice of

@@ -164,7 +164,7 @@ class EdgeCost(CostModel):
             f"no route {where}: no chain of passable steps joins them with neighbourhood={k}: "
             "impassable pixels keep them apart (land, or a cost of inf or NaN, such as ice the "
             "vessel may not enter), or a passage is narrower than the land rule allows; "
-            "seaway.engine.reach.explain_no_route (seaway.ice.noroute for ice charts) says "
+            "seaway.engine.reach.explain_no_route (seaway.icenav.noroute for ice charts) says "
             "which, and how far the ship gets"
         )
 

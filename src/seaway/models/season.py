@@ -15,13 +15,14 @@ from ..base.validate import number
 from ..chart.locate import describe
 from ..ice.classes import get_class
 from ..ice.seasonfast import describer, season_assumptions, season_rule
+from ..ice.seasongrid import SeasonGrid
 from ..vessel import Vessel
 from .base import CostModel, Prepared, RouteT
 from .results import StepValues, Voyage
 
 if TYPE_CHECKING:
     from ..ice import classes  # classes.IceClass: one name in the API pages (seaway.ice re-exports it)
-    from ..ice.season import Departure, SeasonGrid, SeasonLike, SpeedTable
+    from ..ice.seasongrid import Departure, SeasonGrid, SeasonLike, SpeedTable
     from .forecast import WeatherGrid
 
 
@@ -30,8 +31,8 @@ class IceSeasonTime(CostModel):
     the ship starts it, at the class's speed there (Andreeva 2021's V = F * V0 via seaway.ice.andreeva,
     or a table per stage and concentration); time-optimal and exact (FIFO). Waiting is allowed
     everywhere (without it the graph is not FIFO and no label-setting search is exact); routes
-    list their waits. `season` is a seaway.ice.season.SeasonGrid (or what it takes); departure
-    a date within the season (default its first chart); see seaway.ice.season for the speeds.
+    list their waits. `season` is a seaway.icenav.season.SeasonGrid (or what it takes); departure
+    a date within the season (default its first chart); see seaway.icenav.season for the speeds.
     fast_ice: the stage of fast ice of unknown stage (FA 08, SA 99), chart by chart, as
     seaway.ice.forms says for one chart: "nearby", "closed" or a WMO stage code (None: the one
     read_season recorded, else "nearby"); `.fast_ice` is the rule and `.assumptions` what the
@@ -57,8 +58,6 @@ class IceSeasonTime(CostModel):
         fast_ice: str | float | None = None,
         **speed_options: Any,
     ) -> None:
-        from ..ice.season import SeasonGrid  # the season's own grid type (a convenience)
-
         self.v0_kn = number(v0_kn, "v0_kn", above=0, example=12.0)
         self.season = season if isinstance(season, SeasonGrid) else SeasonGrid(season)
         self.ice_class = get_class(ice_class).name
@@ -89,7 +88,7 @@ class IceSeasonTime(CostModel):
             raise ValueError(
                 f"the season's charts have {self.season.shape} pixels but the chart "
                 f"{prepared.chart.shape}: route on the season's grid "
-                "(seaway.ice.season.SeasonGrid.prepare)"
+                "(seaway.icenav.season.SeasonGrid.prepare)"
             )
         return self._engine
 
@@ -159,7 +158,7 @@ class IceWeatherTime(IceSeasonTime):
     forecast at that time changes that speed as it changes a calm-water speed (TravelTime:
     Khokhlov's or STAWAVE-1's loss in waves, the wind and wave limits, currents); the class's
     limits still close the ice it may not enter. Exact (FIFO) when the weather is; the ship may
-    wait for a later chart. `season` a seaway.ice.season.SeasonGrid (or what it takes);
+    wait for a later chart. `season` a seaway.icenav.season.SeasonGrid (or what it takes);
     `forecast` a seaway.weather.ForecastGrid on the season's grid, whose departure is the
     voyage's; `vessel` a seaway.vessel.Vessel, its speed_kn the open-water speed V0.
 

@@ -238,7 +238,7 @@ def kara_season(days=7, start="2026-07-01", melt_m_per_day=0.1, melted_m=0.5, sh
     late-winter ice thinned by `melted_m` on the first chart and `melt_m_per_day` more each
     day; ice thinner than 0.8 m opens in proportion (CT = round(CT x h / 0.8)), the stage
     follows the thickness. A season Dataset for
-    seaway.ice.season (time, lat, lon): CT (tenths), SA (WMO code, NaN where ice free),
+    seaway.icenav.season (time, lat, lon): CT (tenths), SA (WMO code, NaN where ice free),
     thickness (m), land; one chart a day at 00 UTC from `start`. Synthetic: never navigate by it."""
     import xarray as xr
 

@@ -41,7 +41,7 @@ from importlib import resources
 from typing import Any, NoReturn
 
 from ..ice.classes import get_class
-from . import SPEED_LOSSES, Vessel
+from .ship import SPEED_LOSSES, Vessel
 
 if sys.version_info >= (3, 11):
     import tomllib

@@ -26,10 +26,11 @@ from __future__ import annotations
 import numpy as np
 
 from ..base.sphere import rhumb_line_km  # noqa: F401 - part of this API
+from ..engine.api import prepare
 from ..engine.danger import least_danger_route
 from ..engine.methods import heuristic_weight
 from ..errors import NoRouteError
-from ..ice.season import SeasonGrid
+from ..ice.seasongrid import SeasonGrid
 from ..models import IceWeatherTime, TravelTime, WaveDanger
 from ..result.route import Route
 from ..vessel import Vessel
@@ -116,12 +117,12 @@ def route_ice_weather(
 ) -> Route:
     """The quickest route through ice and weather at once (seaway.models.IceWeatherTime): each
     step crosses the ice chart valid when it starts at the class's speed (Andreeva 2021's
-    V = F x V0 with V0 = vessel.speed_kn, or a speed table: see seaway.ice.season), changed by
+    V = F x V0 with V0 = vessel.speed_kn, or a speed table: see seaway.icenav.season), changed by
     the forecast's currents and waves then as a calm-water speed is; the class's limits close
     the ice it may not enter; the ship may wait for a later chart.
 
     season: a season of ice charts (a Dataset or NetCDF path with a time axis, see
-        seaway.ice.season.as_season; or a SeasonGrid); one chart: expand_dims(time=[date]).
+        seaway.icenav.season.as_season; or a SeasonGrid); one chart: expand_dims(time=[date]).
     forecast: a forecast Dataset on a lat/lon or projected grid; resampled onto the season's grid
         (seaway.weather.projected.on_grid) unless it is on it. departure, persist, variables: as in
         route_time; the departure must lie within the season too.
@@ -131,7 +132,7 @@ def route_ice_weather(
     grid = season if isinstance(season, SeasonGrid) else SeasonGrid(season, land)
     t = grid.template
     lat, lon = (t[d].values for d in t.dims)
-    if not grid.prepare(neighbourhood).chart.geographic:
+    if not prepare(grid, neighbourhood=neighbourhood).chart.geographic:
         raise ValueError(
             "routing through ice and weather needs the ice charts on a lat/lon grid; "
             "move them onto one first (seaway.weather.to_latlon)"
@@ -140,7 +141,7 @@ def route_ice_weather(
     fc = ForecastGrid(forecast, variables, departure, persist=persist, source=source)
     fc.assumptions += notes
     model = IceWeatherTime(grid, fc, ice_class, vessel, speed=speed, **speed_options)
-    return grid.prepare(neighbourhood).route(start, end, model=model, method=method)
+    return prepare(grid, neighbourhood=neighbourhood).route(start, end, model=model, method=method)
 
 
 def route_safest(

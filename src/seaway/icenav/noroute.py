@@ -29,11 +29,11 @@ from ..engine.api import route
 from ..engine.prepared import PreparedChart
 from ..engine.reach import chart_order, least_barrier, nearest_reachable, with_reach
 from ..errors import NoRouteError
+from ..ice.classes import get_class
+from ..ice.forms import DEFAULT_FAST_ICE, fast_ice_mask, fast_ice_stage, ice_words
+from ..ice.impact import chart_impact, governing_stage, ice_impact, table_for
 from ..models.base import EdgeCost
 from ..result.environment import weighted_samples
-from .classes import get_class
-from .forms import DEFAULT_FAST_ICE, fast_ice_mask, fast_ice_stage, ice_words
-from .impact import chart_impact, governing_stage, ice_impact, table_for
 
 #: The classes asked, weakest first (Russian Register; IACS and FSICR classes use these tables).
 LADDER = ("none", "Ice1", "Ice2", "Ice3", "Arc4", "Arc5", "Arc6", "Arc7", "Arc8", "Arc9")

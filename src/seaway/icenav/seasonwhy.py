@@ -11,13 +11,13 @@ time is the route's question), at most `max_km` away.
 sequence of the charts lets the class through. The explanation reads the season's most open
 chart for the class (the one from the departure on with the most pixels the class may use; the
 later one on a tie): every pixel the class may not use there gets a level, 1 + the place in
-seaway.ice.noroute.LADDER of the weakest class the season's own speed model lets in (the top
+seaway.icenav.noroute.LADDER of the weakest class the season's own speed model lets in (the top
 level when none), and the least-barrier way between the ends (seaway.engine.reach) names the ice
 on it the class may not enter (stage, concentration or thickness; km). The weakest class of the
 ladder that gets through the season is found by routing the season for the classes around the
 one that way needs (one search each). How far the ship gets is read from its arrival field
 through the season. Only when no way joins the ends with all ice open does the message say to
-check the land mask. Ice is named as seaway.ice.noroute names it on one chart, fast ice included
+check the land mask. Ice is named as seaway.icenav.noroute names it on one chart, fast ice included
 ("fast ice of unknown stage, assumed thin first-year ice (SA 87)", "..., closed by the fast_ice
 rule"): the model's fast-ice rule (IceSeasonTime.fast_ice) decides, chart by chart."""
 
@@ -28,18 +28,19 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..base.sphere import distance_km
+from ..engine.api import prepare
 from ..engine.reach import Reach, chart_order, least_barrier, with_reach
 from ..engine.snap import DEFAULT_SNAP_KM, SnappedEnds, snap_ends
 from ..errors import NoRouteError
+from ..ice.classes import get_class
+from ..ice.seasonfast import describer
+from ..ice.seasonspeed import frame_speed_kn
 from ..models import IceSeasonTime
 from ..result.environment import weighted_samples
-from .classes import get_class
 from .noroute import LADDER, NO_CLASS, SHOWN
-from .seasonfast import describer
-from .seasonspeed import frame_speed_kn
 
 if TYPE_CHECKING:
-    from .season import SeasonGrid
+    from ..ice.seasongrid import SeasonGrid
 
 __all__ = ["usable", "closed_reason", "snap_season_ends", "explain_season_no_route"]
 
@@ -119,9 +120,9 @@ def explain_season_no_route(
     `start` to `end` (see the module): cause, closing_ice, weakest_class, reachable and
     reachable_km as in seaway.errors.NoRouteError. speed and speed_options: as the model was
     built with (the other classes are routed with them, and with the model's fast-ice rule);
-    asked: the ends as the user gave them. Fast ice is named as seaway.ice.noroute names it."""
+    asked: the ends as the user gave them. Fast ice is named as seaway.icenav.noroute names it."""
     speed_options = {**speed_options, "fast_ice": model.fast_ice}
-    prepared = grid.prepare(neighbourhood)
+    prepared = prepare(grid, neighbourhood=neighbourhood)
     chart = prepared.chart
     first = grid.times.size - model.valid_from_h.size
     opened = np.isfinite(model.hours_per_km) & ~grid.dry

@@ -17,11 +17,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..ice.codes import stage_name
+from ..ice.forms import DEFAULT_FAST_ICE, FREE_WATER, fast_ice_mask, fast_ice_stage
+from ..ice.impact import governing_stage
 from ..models.base import EdgeCost
 from ..result.environment import values_at, weighted_samples
-from .codes import stage_name
-from .forms import DEFAULT_FAST_ICE, FREE_WATER, fast_ice_mask, fast_ice_stage
-from .impact import governing_stage
 
 BANDS = (
     ("ice free <1/10", -np.inf, 1.0),

@@ -9,7 +9,7 @@ import numpy as np
 
 from ..engine.api import route
 from ..errors import NoRouteError
-from .andreeva import pareto_front, time_cost
+from ..ice.andreeva import pareto_front, time_cost
 
 
 @dataclass
