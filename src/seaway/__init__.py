@@ -16,10 +16,11 @@ from .engine import (
     route,
     snap_ends,
 )
-from .errors import NoRouteError
+from .errors import ChartError, ForecastError, NoRouteError, SeawayError, SeawayTypeError, VesselFileError
 from .fleet import route_many
 from .result import Leg, Route
 from .smoothing import smooth
+from .voyage import ChartOptions, OpenChart, OpenSeason, open_chart, open_season
 
 __all__ = [
     "route",
@@ -35,6 +36,16 @@ __all__ = [
     "SnappedEnds",
     "SnapError",
     "explain_no_route",
+    "open_chart",
+    "open_season",
+    "OpenChart",
+    "OpenSeason",
+    "ChartOptions",
+    "SeawayError",
+    "SeawayTypeError",
+    "ChartError",
+    "ForecastError",
+    "VesselFileError",
 ]
 try:
     __version__ = version("seaway")  # one version: pyproject.toml's, from the package metadata

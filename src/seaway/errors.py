@@ -1,11 +1,49 @@
-"""Exceptions raised by seaway."""
+"""The errors seaway raises on bad input or when no route exists: one base, SeawayError (a
+ValueError, so handlers of ValueError still catch it), and a subclass per kind. All are
+importable from ``seaway``."""
 
 from __future__ import annotations
 
 from collections.abc import Iterable
+from typing import Any
 
 
-class NoRouteError(ValueError):
+class SeawayError(ValueError):
+    """Input seaway cannot use, or a question without an answer; the message names the cause
+    and the fix. Every error the package raises on bad input is one."""
+
+
+class SeawayTypeError(SeawayError, TypeError):
+    """An argument of the wrong type (also a TypeError)."""
+
+
+class ChartError(SeawayError):
+    """A chart (a file, a raster, its grid or land) that cannot be read or used."""
+
+
+class ForecastError(SeawayError):
+    """A forecast file, or a role of it, that cannot be read or used."""
+
+
+class VesselFileError(SeawayError):
+    """A vessel file that cannot be used; the message names the file, the field and the fix."""
+
+
+class SnapError(SeawayError):
+    """An end is impassable and the nearest usable point joined to the other end is farther
+    than the limit. `moves`: the Move of each such end (seaway.engine.snap); `limit`: the
+    largest move allowed; `unit`: "km" (geographic charts) or "chart units"."""
+
+    def __init__(self, moves: Iterable[Any], limit: float, unit: str) -> None:
+        self.moves, self.limit, self.unit = tuple(moves), float(limit), unit
+        far = "; ".join(m.sentence(unit) for m in self.moves)
+        super().__init__(
+            f"{far}: farther than max_km={self.limit:g}; give ends in water the ship "
+            "can use, or a larger max_km"
+        )
+
+
+class NoRouteError(SeawayError):
     """The end cannot be reached from the start on this chart and stencil.
 
     A search that fails raises it with its message only. The explanations add what the chart
@@ -36,7 +74,11 @@ class NoRouteError(ValueError):
         weakest_class: str | None = None,
         reachable: tuple[float, ...] | None = None,
         reachable_km: float | None = None,
+        notes: Iterable[str] = (),
     ) -> None:
         super().__init__(message)
+        #: What the voyage assumed or changed before the search (an end moved, the fast-ice
+        #: rule), in words: the command line says them before the error.
+        self.notes = tuple(notes)
         self.cause, self.closing_ice, self.weakest_class = cause, tuple(closing_ice), weakest_class
         self.reachable, self.reachable_km = reachable, reachable_km

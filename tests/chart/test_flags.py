@@ -7,9 +7,10 @@ import pytest
 import xarray as xr
 
 import seaway
+from seaway import open_chart
 from seaway.chart.flags import flags_out
 from seaway.cli import main
-from seaway.cli.chartfile import ChartError, open_chart
+from seaway.errors import ChartError
 from seaway.ice.concentration import concentration_chart
 
 NSIDC = ("sea_ice_concentration", "seaice_conc_daily_nh_20211231_f17_v04r00.nc")
@@ -116,8 +117,11 @@ def test_concentration_chart_states_its_assumption():
 @pytest.mark.needs_data(*NSIDC)
 def test_nsidc_concentration_is_refused_as_a_cost_and_read_as_an_ice_chart(shared_data):
     path = str(shared_data.joinpath(*NSIDC))
+    unpriced = open_chart(path, variable="cdr_seaice_conc")  # opened as ice; priced only for a class
     with pytest.raises(ChartError, match="is a sea-ice concentration .* give --vessel CLASS"):
-        open_chart(path, variable="cdr_seaice_conc")
+        unpriced.cost  # noqa: B018
+    with pytest.raises(ChartError, match="is a sea-ice concentration .* give --vessel CLASS"):
+        unpriced.route((70.3, 66.0), (72.9, 74.0))
     data = open_chart(path, vessel="Arc7")
     assert data.projection is not None and "3411" in data.projection.crs.to_string()
     assert "thick first-year ice (WMO stage 93), an assumption" in data.notes[0]

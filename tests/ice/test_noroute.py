@@ -124,7 +124,7 @@ def test_nsidc_december_closes_the_northern_sea_route_to_arc5(shared_data, capsy
     15 % ice or more is taken as thick first-year ice (93, assumed), which Arc5 may not enter;
     Arc7 may. The reachable point is checked against the 4-connected open water of the Barents
     Sea, and its distance by Geod."""
-    from seaway.cli.chartfile import open_chart
+    from seaway import open_chart
 
     path = str(shared_data.joinpath(*NSIDC))
     code = main(["route", path, "--vessel", "Arc5", "--from", "71.25,50.95", "--to", "60,-175", "-q"])

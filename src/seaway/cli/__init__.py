@@ -52,6 +52,8 @@ def main(argv=None) -> int:
     try:
         return run(args)
     except (NoRouteError, ValueError, OSError, ImportError) as exc:
+        for note in getattr(exc, "notes", ()):  # what the voyage assumed or changed: said first
+            print(f"seaway {args.command}: {note}", file=sys.stderr)
         print(f"seaway {args.command}: error: {exc}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:

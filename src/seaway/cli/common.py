@@ -11,6 +11,7 @@ import numpy as np
 
 from ..base.interrupt import SettledProgress, reporting
 from ..engine.snap import DEFAULT_SNAP_KM
+from ..ice.forms import check_fast_ice
 
 #: The exact methods a command may be asked for.
 CLI_METHODS = ("auto", "bidirectional", "astar", "dijkstra")
@@ -142,3 +143,11 @@ def neighbourhood(text: str) -> int:
     if k < 3 or k > 15 or k % 2 == 0:
         raise argparse.ArgumentTypeError(f"must be an odd integer from 3 to 15, got {k}")
     return k
+
+
+def fast_ice(text: str):
+    """argparse type of --fast-ice: 'nearby', 'closed' or a WMO stage code (seaway.ice.forms)."""
+    try:
+        return check_fast_ice(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None

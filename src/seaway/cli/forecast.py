@@ -20,6 +20,8 @@ from ..base.files import open_netcdf
 from ..ice.classes import get_class
 from ..ice.seasongrid import SeasonGrid, as_season
 from ..vessel import Vessel, load
+from ..voyage import ChartOptions, open_chart
+from ..voyage.forecastgrid import coastline, onto_route_grid
 from ..weather import (
     ForecastGrid,
     FuelCurve,
@@ -30,9 +32,7 @@ from ..weather import (
     route_safest,
     route_time,
 )
-from .chartfile import open_chart
 from .common import Progress, searching, tell
-from .forecastgrid import coastline, onto_route_grid
 from .outputs import check_outputs, write_outputs
 
 
@@ -62,15 +62,13 @@ def _ice(args, ice_class, say):
         if "time" in ds.dims and ds.sizes["time"] > 1:
             say(f"{path}: a season of {ds.sizes['time']} ice charts")
             return SeasonGrid(as_season(ds))
-    data = open_chart(
-        path,
-        vessel=ice_class,
+    options = ChartOptions(
         land_variable=args.land_variable,
         grid=args.grid,
-        ends=(args.start, args.end),
-        stage=args.assume_stage,
+        assume_stage=args.assume_stage,
         fast_ice=args.fast_ice,
     )
+    data = open_chart(path, vessel=ice_class, ends=(args.start, args.end), options=options)
     for note in data.notes:
         tell(note)
     ice = data.layers

@@ -5,8 +5,7 @@ speed, the outputs, and the weather-routing options (seaway.cli.forecastargs).""
 from __future__ import annotations
 
 from ..models import EDGE_COSTS
-from .chartfile import fast_ice
-from .common import CLI_METHODS, EPILOG, add_ends, add_snap_options, grid, neighbourhood, point
+from .common import CLI_METHODS, EPILOG, add_ends, add_snap_options, fast_ice, grid, neighbourhood, point
 from .constraints import add_constraint_options
 from .forecastargs import EXAMPLE as FORECAST_EXAMPLE
 from .forecastargs import add_forecast_options

@@ -4,23 +4,12 @@
 from __future__ import annotations
 
 import argparse
-import dataclasses
-import os
 
 import numpy as np
 
-from ..engine.api import prepare
-from ..errors import NoRouteError
-from ..ice.grids import latlon_grid
-from ..ice.routegrid import route_grid
-from ..ice.seasongrid import SeasonGrid, read_season
-from ..icenav.seasonwhy import closed_reason, explain_season_no_route, usable
-from ..models import IceSeasonTime
 from ..output import export
-from .chartfile import fast_ice
-from .common import EPILOG, Progress, add_ends, add_snap_options, grid, neighbourhood, tell
-from .ends import check_ends
-from .vectorchart import in_degrees
+from ..voyage import open_season
+from .common import EPILOG, Progress, add_ends, add_snap_options, fast_ice, grid, neighbourhood, tell
 
 
 def dated_chart(text: str) -> tuple[str, str]:
@@ -48,118 +37,48 @@ def speed_table(text: str) -> dict:
         ) from None
 
 
-def _season(args):
-
+def _charts(args):
+    """One NetCDF file, or the DATE=FILE charts as (date, path) pairs."""
     if len(args.charts) == 1 and "=" not in args.charts[0]:
-        path = args.charts[0]
-        if not os.path.exists(path):
-            raise ValueError(f"{path}: no such file")
-        return SeasonGrid(path)
+        return args.charts[0]
     charts = []
     for text in args.charts:
         try:
             charts.append(dated_chart(text))
         except argparse.ArgumentTypeError as exc:
             raise ValueError(f"{exc}; or give one NetCDF file with a time dimension") from None
-    for _, path in charts:
-        if not os.path.exists(path):
-            raise ValueError(f"{path}: no such file")
-    if args.grid is None:  # as `seaway route` does: the box around the voyage
-        target, note = route_grid(args.start, args.end, chart_bounds=_bounds(charts))
-        tell(note, "season")
-    else:
-        target = latlon_grid(*args.grid)
-    ds = read_season(charts, target)
-    _check_cover(ds, charts, (args.start, args.end), target)
-    return SeasonGrid(ds)
-
-
-def _bounds(charts):
-    """The union of the charts' extents in degrees, or None when one is not in degrees."""
-    import pyogrio
-
-    boxes = []
-    for _, path in charts:
-        info = pyogrio.read_info(path)
-        if not in_degrees(info):
-            return None
-        boxes.append(info["total_bounds"])
-    b = np.array(boxes, float)
-    return b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
-
-
-def _check_cover(ds, charts, ends, target):
-    """Say which chart does not cover an end, or most of the grid: off a chart's polygons the
-    ice is unknown, so impassable; that is the chart's extent, not the ice."""
-    off = np.asarray(ds["off_chart"].values)
-    lat, lon = np.asarray(target.y, float), np.asarray(target.x, float)
-    for k, (date, path) in enumerate(charts):
-        for name, p in zip(("start", "end"), ends):
-            r = int(np.argmin(np.abs(lat - p[0])))
-            c = int(np.argmin(np.abs((lon - p[1] + 180) % 360 - 180)))
-            if off[k, r, c]:
-                raise ValueError(
-                    f"the chart of {date} ({path}) does not cover the {name} "
-                    f"{p[0]:g},{p[1]:g}: no polygon of it lies there, so its ice is "
-                    "unknown; give a chart that covers the voyage, or set the grid "
-                    "with --grid"
-                )
-        share = float(off[k].mean())
-        if share > 0.05:
-            tell(
-                f"the chart of {date} ({path}) leaves {100 * share:.0f} % of the grid uncovered: "
-                "off its polygons the ice is unknown and impassable",
-                "season",
-            )
+    return charts
 
 
 def run_season(args) -> int:
-
     say = Progress("season", args.quiet)
     say(f"reading {len(args.charts)} chart file(s)")
-    season = _season(args)
-    t = season.times
-    say(f"{t.size} charts from {t[0]} to {t[-1]} on {season.shape[0]} x {season.shape[1]} pixels")
-    speed = "andreeva" if args.speed_table is None else args.speed_table
-    limit = {"concentration_limit": not args.no_concentration_limit}
-    model = IceSeasonTime(
-        season, args.vessel, args.speed, departure=args.depart, speed=speed, fast_ice=args.fast_ice, **limit
-    )
-    for said in model.assumptions:  # fast ice of unknown stage, open and bergy water: once, every chart
-        tell(f"assumed: {said}", "season")
-    # Only an end no chart opens moves (an end closed at departure may open later: the ship waits).
-    (start, end), moved = check_ends(
-        season.template.copy(data=np.where(usable(model), 1.0, np.inf)),
-        season.dry,
-        None,
-        (args.start, args.end),
-        snap=args.snap,
-        snap_km=args.snap_km,
-        say=lambda note: tell(note, "season"),
+    season = open_season(_charts(args), ends=(args.start, args.end), grid=args.grid)
+    for note in season.notes:
+        tell(note, "season")
+    t = season.grid.times
+    say(f"{t.size} charts from {t[0]} to {t[-1]} on {season.grid.shape[0]} x {season.grid.shape[1]} pixels")
+    r = season.route(
+        args.start,
+        args.end,
+        vessel=args.vessel,
+        speed_kn=args.speed,
+        depart=args.depart,
+        speed_table=args.speed_table,
+        fast_ice=args.fast_ice,
+        concentration_limit=not args.no_concentration_limit,
+        snap_km=args.snap_km if args.snap else None,
         neighbourhood=args.neighbourhood,
-        why=closed_reason(model),
+        method=args.method,
+        name=args.name,
+        progress=None if args.quiet else say,
     )
-    say(
-        f"routing {model.ice_class} at {args.speed:g} kn from {model.departure} "
-        f"({args.neighbourhood}x{args.neighbourhood} stencil, waiting allowed)"
-    )
-    prepared = prepare(season, neighbourhood=args.neighbourhood)
-    try:
-        r = prepared.route(start, end, model=model, method=args.method)
-    except NoRouteError:
-        say("no route: reading the season's ice for why")
-        raise explain_season_no_route(
-            season,
-            model,
-            start,
-            end,
-            neighbourhood=args.neighbourhood,
-            speed=speed,
-            asked=(args.start, args.end),
-            **limit,
-        ) from None
-    r = dataclasses.replace(r, notes=r.notes + tuple(moved), requested=(args.start, args.end))
-    r.name = args.name
+    voyage = r.stats.voyage
+    for said in voyage.assumptions if voyage is not None else ():  # the fast-ice rule: even with --quiet
+        tell(f"assumed: {said}", "season")
+    for note in r.notes:  # moved ends
+        if note not in season.notes:
+            tell(note, "season")
     st = r.stats.voyage
     print(r)
     print(

@@ -25,6 +25,7 @@ import numpy.typing as npt
 
 from ..base.sphere import distance_km
 from ..chart.locate import pixel_of
+from ..errors import SnapError
 from .prepared import PreparedChart
 
 if TYPE_CHECKING:
@@ -60,20 +61,6 @@ class Move:
         return (
             f"{here}; the nearest point the ship may use is {_fmt(self.to, 4)}, "
             f"{self.distance:.1f} {unit} away"
-        )
-
-
-class SnapError(ValueError):
-    """An end is impassable and the nearest usable point joined to the other end is farther
-    than the limit. `moves`: the Move of each such end; `limit`: the largest move allowed;
-    `unit`: "km" (geographic charts) or "chart units"."""
-
-    def __init__(self, moves: Iterable[Move], limit: float, unit: str) -> None:
-        self.moves, self.limit, self.unit = tuple(moves), float(limit), unit
-        far = "; ".join(m.sentence(unit) for m in self.moves)
-        super().__init__(
-            f"{far}: farther than max_km={self.limit:g}; give ends in water the ship "
-            "can use, or a larger max_km"
         )
 
 

@@ -3,7 +3,8 @@ weather limits; seaway.vessel.ship) and vessel files (seaway.vessel.profile: loa
 
 from __future__ import annotations
 
-from .profile import EXAMPLES, Profile, VesselFileError, load
+from ..errors import VesselFileError
+from .profile import EXAMPLES, Profile, load
 from .ship import SPEED_LOSSES, Vessel
 
 __all__ = ["EXAMPLES", "SPEED_LOSSES", "Profile", "Vessel", "VesselFileError", "load"]

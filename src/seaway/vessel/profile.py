@@ -40,6 +40,7 @@ from dataclasses import dataclass, field
 from importlib import resources
 from typing import Any, NoReturn
 
+from ..errors import VesselFileError
 from ..ice.classes import get_class
 from .ship import SPEED_LOSSES, Vessel
 
@@ -111,10 +112,6 @@ class Profile:
         """One line for the outputs: name, class, speed and where it was read from."""
         cls = f", {self.ice_class}" if self.ice_class else ""
         return f"{self.name}{cls}, {self.vessel.speed_kn:g} kn (vessel file {self.path})"
-
-
-class VesselFileError(ValueError):
-    """A vessel file that cannot be used; the message names the file, the field and the fix."""
 
 
 def _fail(path: str, key: str, message: str) -> NoReturn:

@@ -1,4 +1,4 @@
-"""Charts on projected grids on the command line: NSIDC's polar stereographic (EPSG:3411), an
+"""Charts on projected grids: NSIDC's polar stereographic (EPSG:3411), an
 ocean model's grid (ROMS, NEMO on a CF grid mapping), ...
 
 The route is searched on the chart's own grid, in kilometres of the projection; the ends are
@@ -140,15 +140,16 @@ def pixel_latlon(da_km, proj: Projection | None):
 
 
 def project_chart(out, ds, source) -> None:
-    """A chart (seaway.cli.chartfile.ChartData `out`) on a projected grid with a known CRS: its
-    rasters get coordinates in km, the projection is kept, and the notes say so. Nothing
-    changes when `source` (the file's cost variable) names no grid mapping; ValueError when its
-    grid mapping or coordinates cannot be used."""
+    """A chart (seaway.voyage.chart.OpenChart `out`) on a projected grid with a known CRS: its
+    rasters get coordinates in km (the ice's cost gets them when it is priced), the projection
+    is kept, and the notes say so. Nothing changes when `source` (the file's cost variable)
+    names no grid mapping; ValueError when its grid mapping or coordinates cannot be used."""
     proj = find_projection(ds, source)
     if proj is None:
         return
     try:
-        out.cost = in_km(out.cost)
+        out.grid = in_km(source)
+        out.fixed_cost = None if out.fixed_cost is None else in_km(out.fixed_cost)
         out.land = None if out.land is None else in_km(out.land.astype(bool))
         out.environment = {k: in_km(v) for k, v in out.environment.items()}
     except (ValueError, KeyError, TypeError) as exc:
@@ -167,7 +168,7 @@ def _check_latlon(out, source, proj) -> None:
     two = {coord_role(str(c.name), c.attrs): c for c in source.coords.values() if c.ndim == 2}
     if "lat" not in two or "lon" not in two:
         return
-    y, x = np.meshgrid(out.cost.y.values, out.cost.x.values, indexing="ij")
+    y, x = np.meshgrid(out.grid.y.values, out.grid.x.values, indexing="ij")
     ll = proj.to_latlon(y.ravel(), x.ravel())
     lat = np.asarray(two["lat"].transpose(*source.dims[-2:]).values, float).ravel()
     err = np.nanmax(np.abs(ll[:, 0] - lat)) if lat.size == ll.shape[0] else 0.0

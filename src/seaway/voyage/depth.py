@@ -1,5 +1,6 @@
-"""What `seaway route --depth FILE --draft M [--ukc M]` does with the depth (seaway.depth):
-read and resample it, enforce the draft, explain a too-shallow end or a missing route."""
+"""The depth of an opened chart (seaway.depth): a bathymetry file read and resampled onto the
+chart when it is opened (open_chart(depth=...)), the draft enforced when a route is asked for,
+a too-shallow end or a missing route explained."""
 
 from __future__ import annotations
 
@@ -16,27 +17,30 @@ from ..depth import (
 )
 
 
-def for_route(path, cost, *, draft=None, ukc=None, variable=None, positive=None, say=print, crs=None):
-    """What the command line does with --depth/--draft/--ukc: (cost, depth on the cost's grid,
-    reasons(rc) for an end that is too shallow). Without a draft the depth is only reported."""
-    if path is None:
+def read_depth(path, like, *, variable=None, positive=None, crs=None):
+    """(depth on the grid of `like` (m, positive down), what was read and assumed, in words)."""
+    bathy = open_bathymetry(path, variable=variable, positive=positive)
+    depth = depth_on_grid(bathy, like, crs=crs)
+    notes = [f"depth from {path}: {bathy.convention}", *bathy.notes]
+    notes.append(f"depth resampled onto the chart ({depth.attrs['resampling']})")
+    return depth, notes
+
+
+def with_draft(cost, depth, draft=None, ukc=None, say=None):
+    """(cost, reasons(rc) for an end that is too shallow, or None): without a draft the depth is
+    only reported; with one, pixels shallower than draft + UKC are closed."""
+    say = say or (lambda message: None)
+    if depth is None:
         if draft is not None or ukc is not None:
             raise ValueError(
-                "--draft and --ukc need --depth FILE (a bathymetry raster, NetCDF or "
-                "GeoTIFF, e.g. ETOPO or GEBCO)"
+                "--draft and --ukc need --depth FILE (a bathymetry raster, NetCDF or GeoTIFF, e.g. ETOPO or GEBCO)"
             )
-        return cost, None, None
-    bathy = open_bathymetry(path, variable=variable, positive=positive)
-    say(f"depth from {path}: {bathy.convention}")
-    for note in bathy.notes:
-        say(note)
-    depth = depth_on_grid(bathy, cost, crs=crs)
-    say(f"depth resampled onto the chart ({depth.attrs['resampling']})")
+        return cost, None
     if draft is None:
         if ukc is not None:
             raise ValueError("--ukc needs --draft M (the ship's draft in metres)")
         say("no --draft: the least depth is reported, not enforced")
-        return cost, depth, None
+        return cost, None
     draft, ukc = check_draft(draft, ukc)
     out = apply_draft(cost, depth, draft, ukc)
     z = depth.values
@@ -46,7 +50,7 @@ def for_route(path, cost, *, draft=None, ukc=None, variable=None, positive=None,
         f"draft {draft:g} m + UKC {ukc:g} m = {draft + ukc:g} m needed: {shallow} water pixels "
         f"too shallow, {int(np.isnan(z).sum())} without depth (impassable)"
     )
-    return out, depth, lambda rc: too_shallow(depth, rc, draft, ukc)
+    return out, lambda rc: too_shallow(depth, rc, draft, ukc)
 
 
 def why_no_route(cost, land, depth, start, end, draft, ukc=None) -> str:

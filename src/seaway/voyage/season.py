@@ -1,0 +1,188 @@
+"""A season of ice charts opened for routing (seaway.open_season): dated SIGRID-3 files
+rasterised onto one grid, or one NetCDF with a time axis; OpenSeason.route gives the quickest
+route through it (waiting allowed) as ``seaway season`` finds it."""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from ..engine.api import prepare
+from ..engine.snap import DEFAULT_SNAP_KM
+from ..errors import ChartError, NoRouteError
+from ..ice.grids import latlon_grid
+from ..ice.routegrid import route_grid
+from ..ice.seasongrid import SeasonGrid, read_season
+from ..icenav.seasonwhy import closed_reason, explain_season_no_route, usable
+from ..models import IceSeasonTime
+from .ends import check_ends
+from .route import searching
+from .vectorchart import in_degrees
+
+if TYPE_CHECKING:
+    from ..result.route import Route
+
+Charts = str | os.PathLike[str] | Mapping[Any, str] | Sequence[tuple[Any, str]]
+
+
+@dataclasses.dataclass(eq=False)
+class OpenSeason:
+    """A season of ice charts opened for routing: `grid` (seaway.ice.SeasonGrid: the charts,
+    their times, the land), `notes` (what opening it decided: the grid, charts that leave the
+    grid uncovered) and `route()`."""
+
+    grid: SeasonGrid
+    source: str
+    notes: list[str] = dataclasses.field(default_factory=list)
+
+    def route(
+        self,
+        start: tuple[float, float],
+        end: tuple[float, float],
+        *,
+        vessel: str = "Arc7",
+        speed_kn: float = 12.0,
+        depart: Any = None,
+        speed_table: Mapping[float, Any] | None = None,
+        fast_ice: str | float | None = None,
+        concentration_limit: bool = True,
+        snap_km: float | None = None,
+        neighbourhood: int = 5,
+        method: str = "astar",
+        name: str = "seaway season route",
+        progress: Callable[[str], None] | None = None,
+    ) -> Route:
+        """The earliest-arriving route from `start` to `end` (lat, lon) through the season for
+        the class `vessel` at `speed_kn` in open water, leaving at `depart` (default the first
+        chart's date): Andreeva 2021's speeds, or `speed_table` {WMO stage: knots}; waiting is
+        allowed. fast_ice: the stage of fast ice of unknown stage (None: the season's rule, else
+        "nearby"; seaway.ice.seasonfast). snap_km: an end no chart opens moves at most that far (None: refused, naming
+        why). Route.notes record the assumptions; NoRouteError names what closes the way."""
+        say = progress or (lambda message: None)
+        speed = "andreeva" if speed_table is None else speed_table
+        limit = {"concentration_limit": concentration_limit}
+        model = IceSeasonTime(
+            self.grid, vessel, speed_kn, departure=depart, speed=speed, fast_ice=fast_ice, **limit
+        )
+        assumed = [f"assumed: {said}" for said in model.assumptions]
+        snap = snap_km is not None
+        # Only an end no chart opens moves (an end closed at departure may open later: the ship waits).
+        (a, b), moved = check_ends(
+            self.grid.template.copy(data=np.where(usable(model), 1.0, np.inf)),
+            self.grid.dry,
+            None,
+            (start, end),
+            snap=snap,
+            snap_km=snap_km if snap else DEFAULT_SNAP_KM,
+            say=lambda note: None,
+            neighbourhood=neighbourhood,
+            why=closed_reason(model),
+        )
+        say(
+            f"routing {model.ice_class} at {speed_kn:g} kn from {model.departure} "
+            f"({neighbourhood}x{neighbourhood} stencil, waiting allowed)"
+        )
+        chart = prepare(self.grid, neighbourhood=neighbourhood)
+        try:
+            with searching(progress, int(np.prod(self.grid.shape))):
+                r = chart.route(a, b, model=model, method=method)
+        except NoRouteError:
+            say("no route: reading the season's ice for why")
+            err = explain_season_no_route(
+                self.grid, model, a, b, neighbourhood=neighbourhood, speed=speed, asked=(start, end), **limit
+            )
+            err.notes = tuple(assumed) + tuple(moved)
+            raise err from None
+        return dataclasses.replace(
+            r,
+            name=name,
+            notes=r.notes + tuple(self.notes) + tuple(moved),
+            requested=(tuple(start), tuple(end)),
+        )
+
+
+def open_season(
+    charts: Charts,
+    *,
+    ends: tuple[tuple[float, float], tuple[float, float]] | None = None,
+    grid: tuple[float, float, float, float, float] | None = None,
+    fast_ice: str | float | None = None,
+) -> OpenSeason:
+    """Open a season of ice charts: one NetCDF file with a time axis (CT or
+    sea_ice_area_fraction, and SA or thickness), or SIGRID-3 files with the date each is valid
+    from ({date: path} or [(date, path), ...], in date order). SIGRID-3 files are rasterised onto
+    `grid` (south, north, west, east, resolution in degrees), by default the box around the
+    voyage's `ends` (as ``seaway route`` chooses it), else the charts' extent at 0.05 deg."""
+    if isinstance(charts, (str, os.PathLike)):
+        path = os.fspath(charts)
+        if not os.path.exists(path):
+            raise ChartError(f"{path}: no such file")
+        return OpenSeason(SeasonGrid(path), path)
+    items = list(charts.items()) if isinstance(charts, Mapping) else [tuple(c) for c in charts]
+    for _, path in items:
+        if not os.path.exists(path):
+            raise ChartError(f"{path}: no such file")
+    notes: list[str] = []
+    if grid is not None:
+        target = latlon_grid(*grid)
+    else:  # as `seaway route` does: the box around the voyage
+        bounds = _bounds(items)
+        if ends is None:
+            if bounds is None:
+                raise ChartError(
+                    "the charts are not in degrees: give the grid (south, north, west, east, res)"
+                )
+            west, south, east, north = bounds
+            target = latlon_grid(south, north, west, east, 0.05)
+            notes.append(
+                f"grid: the charts' extent at 0.05 deg ({south:g} to {north:g} N, {west:g} to {east:g} E)"
+            )
+        else:
+            target, note = route_grid(*ends, chart_bounds=bounds)
+            notes.append(note)
+    ds = read_season(items, target, fast_ice=fast_ice)
+    notes += _check_cover(ds, items, ends, target)
+    return OpenSeason(SeasonGrid(ds), ", ".join(str(p) for _, p in items), notes)
+
+
+def _bounds(charts):
+    """The union of the charts' extents in degrees, or None when one is not in degrees."""
+    import pyogrio
+
+    boxes = []
+    for _, path in charts:
+        info = pyogrio.read_info(path)
+        if not in_degrees(info):
+            return None
+        boxes.append(info["total_bounds"])
+    b = np.array(boxes, float)
+    return b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
+
+
+def _check_cover(ds, charts, ends, target) -> list[str]:
+    """Say which chart does not cover an end (ChartError), or most of the grid (a note): off a
+    chart's polygons the ice is unknown, so impassable; that is the chart's extent, not the ice."""
+    off = np.asarray(ds["off_chart"].values)
+    lat, lon = np.asarray(target.y, float), np.asarray(target.x, float)
+    notes = []
+    for k, (date, path) in enumerate(charts):
+        for name, p in zip(("start", "end"), ends or ()):
+            r = int(np.argmin(np.abs(lat - p[0])))
+            c = int(np.argmin(np.abs((lon - p[1] + 180) % 360 - 180)))
+            if off[k, r, c]:
+                raise ChartError(
+                    f"the chart of {date} ({path}) does not cover the {name} {p[0]:g},{p[1]:g}: no polygon "
+                    "of it lies there, so its ice is unknown; give a chart that covers the voyage, or set "
+                    "the grid with --grid"
+                )
+        share = float(off[k].mean())
+        if share > 0.05:
+            notes.append(
+                f"the chart of {date} ({path}) leaves {100 * share:.0f} % of the grid uncovered: "
+                "off its polygons the ice is unknown and impassable"
+            )
+    return notes
