@@ -14,7 +14,7 @@ import xarray as xr
 from seaway.cli import main
 from seaway.icenav.season import route_season
 from seaway.vessel import load
-from seaway.weather import Vessel, decode_time, open_forecasts, route_ice_weather, route_time
+from seaway.weather import Vessel, decode_time, read_forecasts, route_ice_weather, route_time
 from seaway.weather.forecast import find_fields
 from support import forecast_files as ff
 from support.seasons import retreating_edge
@@ -131,7 +131,7 @@ def test_departures_outside_the_forecast_are_refused_or_held_with_persist(tmp_pa
 
 def test_one_file_per_variable_merged_on_time(tmp_path, capsys):
     paths = ff.write_cf_per_variable(tmp_path, step_h=12)  # currents twice a day
-    ds, notes = open_forecasts(paths)
+    ds, notes = read_forecasts(paths)
     assert (
         "forecast files merged on their common span 2026-10-01T00:00:00.000000000 to "
         "2026-10-04T00:00:00.000000000, every 6 h (linear in time)" in notes
@@ -161,7 +161,7 @@ def test_grib_through_cfgrib_routes_as_the_same_forecast(tmp_path, capsys):
     eccodes = pytest.importorskip("eccodes")
     pytest.importorskip("cfgrib")
     path = ff.write_grib(tmp_path / "gale.grib2", eccodes)
-    ds, notes = open_forecasts([path])
+    ds, notes = read_forecasts([path])
     assert "forecast wave_height = " + str(path) + ":swh (GRIB short name swh)" in notes
     full = ff.in_memory()
     assert ds.time.values.tolist() == full.time.values.tolist()  # valid times, not lead times

@@ -12,7 +12,7 @@ import pytest
 import xarray as xr
 
 from seaway.cli import main
-from seaway.weather import on_grid, open_forecasts
+from seaway.weather import on_grid, read_forecasts
 
 pytestmark = [pytest.mark.cli, pytest.mark.needs_data("ocean_model", "metno_ROMS_Arctic20_1to5Feb_2016.nc")]
 ROMS = "ocean_model/metno_ROMS_Arctic20_1to5Feb_2016.nc"
@@ -72,7 +72,7 @@ def test_roms_currents_at_its_nodes_are_ubar_vbar_turned_by_hand(shared_data):
     pyproj = pytest.importorskip("pyproj")
     path = shared_data / ROMS
     raw = xr.open_dataset(path)
-    ds, _ = open_forecasts(path)
+    ds, _ = read_forecasts(path)
     crs = raw["polar_stereographic"].attrs["proj4_string"]
     to_ll = pyproj.Transformer.from_crs(crs, "EPSG:4326", always_xy=True)
     checked = 0

@@ -8,7 +8,7 @@ import sys
 
 import pytest
 
-from seaway.weather.forecast import open_forecast
+from seaway.weather.forecast import read_forecast
 from support.netcdf import small_dataset as _dataset
 from support.netcdf import truncated_netcdf as _truncated
 
@@ -22,14 +22,14 @@ def test_truncated_classic_netcdf_forecast_is_an_error_not_zeros(tmp_path, keep)
         match=rf"{bad.name}: the file is truncated: it has "
         rf"{bad.stat().st_size} bytes .* up to byte {size}",
     ):
-        open_forecast(bad)
+        read_forecast(bad)
 
 
 @pytest.mark.parametrize("fmt, keep", [("NETCDF4", 0.5), ("NETCDF4", 0.97), ("NETCDF3_CLASSIC", 0.6)])
 def test_truncated_netcdf_forecasts_name_the_file(tmp_path, fmt, keep):
     bad, _ = _truncated(tmp_path, fmt, keep)
     with pytest.raises(ValueError, match=bad.name):
-        open_forecast(bad)
+        read_forecast(bad)
 
 
 @pytest.mark.parametrize(
@@ -40,14 +40,14 @@ def test_malformed_netcdf_forecasts_name_the_file(tmp_path, content):
     bad = tmp_path / "bad.nc"
     bad.write_bytes(content)
     with pytest.raises(ValueError, match="bad.nc: "):
-        open_forecast(bad)
+        read_forecast(bad)
 
 
 def test_intact_classic_netcdf_still_reads(tmp_path):
     for fmt in ("NETCDF3_CLASSIC", "NETCDF3_64BIT"):
         path = tmp_path / f"ok-{fmt}.nc"
         _dataset().to_netcdf(path, format=fmt, unlimited_dims=["lat"])
-        with open_forecast(path) as ds:
+        with read_forecast(path) as ds:
             assert float(ds.cost.sum()) == float(_dataset().cost.sum())
 
 
@@ -58,4 +58,4 @@ def test_grib_without_cfgrib_names_the_fix(tmp_path, monkeypatch):
     with pytest.raises(
         ImportError, match=r'gfs.grib2: reading GRIB needs cfgrib: pip install "seaway\[grib\]"'
     ):
-        open_forecast(path)
+        read_forecast(path)

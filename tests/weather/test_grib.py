@@ -9,7 +9,7 @@ import pytest
 import xarray as xr
 
 import seaway
-from seaway.weather import Vessel, grib_times, open_forecast, route_time
+from seaway.weather import Vessel, grib_times, read_forecast, route_time
 
 eccodes = pytest.importorskip("eccodes")
 pytest.importorskip("cfgrib")
@@ -61,7 +61,7 @@ def _in_memory():
 def test_grib_forecast_reads_valid_times_and_routes_as_the_same_forecast_in_memory(tmp_path):
     path = tmp_path / "wind.grib2"
     _write_grib(path)
-    fc = open_forecast(path)
+    fc = read_forecast(path)
     assert fc["time"].values.tolist() == VALID.tolist()  # valid times, not lead times
     assert float(fc["u10"].isel(time=2).max()) == 30.0 and float(fc["u10"].isel(time=1).max()) == 5.0
     vessel = Vessel(speed_kn=12, displacement_t=15000)

@@ -163,9 +163,9 @@ def test_real_roms_ice_and_currents_in_one_voyage(shared_data):
     polar stereographic grid onto lat/lon; an Arc7 from the ice-free Barents Sea into the ice
     north-east of Svalbard."""
     pytest.importorskip("pyproj")
-    from seaway.weather import open_forecast, to_latlon
+    from seaway.weather import read_forecast, to_latlon
 
-    ds = open_forecast(shared_data / ROMS)[["aice", "hice", "ubar", "vbar", "mask", "polar_stereographic"]]
+    ds = read_forecast(shared_data / ROMS)[["aice", "hice", "ubar", "vbar", "mask", "polar_stereographic"]]
     lat, lon = np.arange(72.0, 80.01, 0.1), np.arange(20.0, 50.01, 0.25)
     on = to_latlon(ds, lat, lon)
     land = (on["mask"] < 0.5) | on["aice"].isel(time=0).isnull()

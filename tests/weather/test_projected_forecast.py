@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from seaway.weather import is_projected, on_grid, open_forecasts
+from seaway.weather import is_projected, on_grid, read_forecasts
 
 pyproj = pytest.importorskip("pyproj")
 CRS = "+proj=stere +lat_0=90 +lat_ts=60 +lon_0=58 +R=6371000"
@@ -79,7 +79,7 @@ def test_pixels_outside_the_model_grid_are_calm_and_said():
 def test_files_found_by_grid_relative_names_or_mapped_and_said(tmp_path):
     path = tmp_path / "polar.nc"
     _polar().to_netcdf(path)
-    ds, notes = open_forecasts(path)
+    ds, notes = read_forecasts(path)
     assert ds["current_east"].attrs["standard_name"] == "sea_water_x_velocity"  # rotated later
     assert any("polar.nc:uu is grid-relative (sea_water_x_velocity)" in n for n in notes)
     out, _ = on_grid(ds, [74.0], [88.0])
@@ -87,7 +87,7 @@ def test_files_found_by_grid_relative_names_or_mapped_and_said(tmp_path):
     # Without standard names, mapped by the user: taken as grid-relative, said, rotated the same.
     bare = tmp_path / "bare.nc"
     _polar(std=(None, None)).to_netcdf(bare)
-    ds, notes = open_forecasts(bare, {"current_east": "uu", "current_north": "vv"})
+    ds, notes = read_forecasts(bare, {"current_east": "uu", "current_north": "vv"})
     assert any(
         "no standard name, neither east/north nor grid x/y: taken as grid-relative" in n for n in notes
     )
@@ -103,14 +103,14 @@ def test_what_cannot_be_routed_is_refused_naming_the_fix(tmp_path):
         match=r"deep.nc: uu \(current_east\) has a vertical axis 'depth' "
         r"\(3 levels\).*ncks -d depth,0",
     ):
-        open_forecasts(deep)
+        read_forecasts(deep)
     mixed = tmp_path / "mixed.nc"
     ds = _polar(std=("sea_water_x_velocity", "northward_sea_water_velocity"))
     ds.to_netcdf(mixed)
     with pytest.raises(
         ValueError, match=r"uu \(current_east\) is grid-relative but vv \(current_north\) is not"
     ):
-        open_forecasts(mixed)
+        read_forecasts(mixed)
     stag = tmp_path / "stag.nc"
     ds = _polar()
     ds["vv"] = ds["vv"].rename(Y="Yv")
@@ -118,7 +118,7 @@ def test_what_cannot_be_routed_is_refused_naming_the_fix(tmp_path):
     with pytest.raises(
         ValueError, match=r"stag.nc: .* lies on the grid .* the fields of one file must share one grid"
     ):
-        open_forecasts(stag)
+        read_forecasts(stag)
     nomap = _polar().drop_vars("gm")
     with pytest.raises(
         ValueError, match=r"nomap.nc is on a projected grid but names no grid mapping .*--forecast-crs"

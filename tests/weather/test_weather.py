@@ -208,10 +208,10 @@ def test_to_latlon_turns_grid_vectors_to_east_and_north():
 
 @pytest.mark.needs_data(ROMS)
 def test_route_on_the_roms_currents():
-    from seaway.weather.forecast import open_forecast, to_latlon
+    from seaway.weather.forecast import read_forecast, to_latlon
 
     pytest.importorskip("pyproj")
-    ds = open_forecast(ROMS)[["ubar", "vbar", "mask", "polar_stereographic"]]
+    ds = read_forecast(ROMS)[["ubar", "vbar", "mask", "polar_stereographic"]]
     lat, lon = np.arange(70.0, 78.01, 0.1), np.arange(15.0, 50.01, 0.25)
     fc = to_latlon(ds, lat, lon)
     ue = fc["ubar"].isel(time=0).values

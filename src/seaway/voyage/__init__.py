@@ -15,9 +15,18 @@ from ..errors import ChartError
 from .chart import ChartOptions, OpenChart
 from .chartfile import read_chart
 from .depth import read_depth
+from .forecast import OpenForecast, open_forecast
 from .season import OpenSeason, open_season
 
-__all__ = ["open_chart", "OpenChart", "ChartOptions", "open_season", "OpenSeason"]
+__all__ = [
+    "open_chart",
+    "OpenChart",
+    "ChartOptions",
+    "open_season",
+    "OpenSeason",
+    "open_forecast",
+    "OpenForecast",
+]
 
 
 def open_chart(

@@ -1,4 +1,4 @@
-"""The lat/lon grid `seaway route --forecast` searches on (seaway.cli.forecast runs it).
+"""The lat/lon grid a route through a forecast is searched on (seaway.voyage.forecast).
 
 A forecast on a regular lat/lon grid is routed on its own grid. One on a projected model grid
 (polar stereographic ROMS, NEMO, WAM: projection_x/y_coordinate axes and a grid mapping, or
@@ -55,11 +55,11 @@ def _resolution_km(ds, crs) -> float:
     return float(min(steps)) * scale / 1000.0 if steps else 10.0
 
 
-def onto_route_grid(args, ds, source, target=None):
+def onto_route_grid(ds, source, target=None, *, grid=None, ends=None, crs=None):
     """(the forecast on the lat/lon grid it is routed on, notes): unchanged on a lat/lon grid
     without `target`; else resampled onto `target` ((lat, lon, dims): an ice chart's grid),
-    --grid, or the box around the route's ends at the forecast's resolution."""
-    crs = getattr(args, "forecast_crs", None)
+    `grid` (south, north, west, east, res in degrees), or the box around the route's `ends` at
+    the forecast's resolution. crs: the forecast's projection when its file names none."""
     projected = is_projected(ds) or crs is not None
     if not projected:  # with a chart, route_ice_weather resamples it onto the chart's grid
         if target is None:
@@ -67,14 +67,14 @@ def onto_route_grid(args, ds, source, target=None):
         return ds, []
     notes = []
     if target is None:
-        if args.grid is not None:
-            grid = latlon_grid(*args.grid)
-            notes.append(f"grid: the lat/lon grid --grid {','.join(f'{v:g}' for v in args.grid)}")
+        if grid is not None:
+            box = latlon_grid(*grid)
+            notes.append(f"grid: the lat/lon grid --grid {','.join(f'{v:g}' for v in grid)}")
         else:
             km = _resolution_km(ds, crs)
-            grid, note = route_grid(args.start, args.end, dlat=km / KM_PER_DEG)
+            box, note = route_grid(*ends, dlat=km / KM_PER_DEG)
             notes.append(f"{note}; about the forecast's {km:g} km resolution")
-        target = (grid.y, grid.x, ("lat", "lon"))
+        target = (box.y, box.x, ("lat", "lon"))
     lat, lon, dims = target
     out, said = on_grid(ds, lat, lon, dims, source=source, crs=crs)
     return out, notes + said

@@ -5,8 +5,8 @@ engine settings, and re-planning during the voyage."""
 
 from ..base.units import KNOTS_PER_MS
 from ..vessel import Vessel  # noqa: F401 - the same class as seaway.vessel.Vessel, documented there
-from .files import decode_time, open_forecasts
-from .forecast import STANDARD_NAMES, find_fields, grib_times, open_forecast, to_latlon
+from .files import decode_time, read_forecasts
+from .forecast import STANDARD_NAMES, find_fields, grib_times, read_forecast, to_latlon
 from .fuel import FuelCurve, route_fuel, route_min_fuel, tradeoff
 from .grid import ForecastGrid
 from .projected import is_projected, on_grid
@@ -24,7 +24,7 @@ __all__ = [
     "KNOTS_PER_MS",
     "STANDARD_NAMES",
     "find_fields",
-    "open_forecast",
+    "read_forecast",
     "grib_times",
     "to_latlon",
     "FuelCurve",
@@ -34,6 +34,6 @@ __all__ = [
     "decode_time",
     "on_grid",
     "is_projected",
-    "open_forecasts",
+    "read_forecasts",
     "kara_autumn",
 ]

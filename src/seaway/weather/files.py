@@ -22,7 +22,7 @@ import warnings
 import numpy as np
 import xarray as xr
 
-from .forecast import ROLES, check_roles, grib_times, open_forecast
+from .forecast import ROLES, check_roles, grib_times, read_forecast
 from .projected import on_grid  # noqa: F401 - its old home; seaway.weather.projected now
 from .roles import as_roles, pick
 
@@ -126,7 +126,7 @@ def _decode(t, source) -> np.ndarray:
     raise ValueError(f"{source}: cannot decode its time variable {t.name!r} (units {units!r}): {fix}")
 
 
-def open_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, list[str]]:
+def read_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, list[str]]:
     """(one forecast Dataset, notes) from one or more files (NetCDF or GRIB): times decoded,
     the fields renamed to their roles, the files merged on time (module docstring). `variables`
     maps roles to variable names in any of the files. Notes say which variable plays each role
@@ -140,7 +140,7 @@ def open_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, li
     wanted = check_roles(variables)
     parts, notes, found = [], [], {}
     for path in paths:
-        ds = decode_time(_open_grib(path) if _grib(path) else open_forecast(path, decode_times=False), path)
+        ds = decode_time(_open_grib(path) if _grib(path) else read_forecast(path, decode_times=False), path)
         fields = pick(ds, wanted, found)
         if not fields:
             raise ValueError(

@@ -97,7 +97,7 @@ def find_fields(ds, variables: dict | None = None) -> dict:
     return out
 
 
-def open_forecast(path, **kwargs) -> xr.Dataset:
+def read_forecast(path, **kwargs) -> xr.Dataset:
     """Open a NetCDF forecast, or a GRIB one through cfgrib (pip install "seaway[grib]")."""
     path = str(path)
     if path.endswith((".grib", ".grib2", ".grb", ".grb2")):
