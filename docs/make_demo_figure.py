@@ -9,14 +9,11 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import seaway  # noqa: E402
-from seaway.cli.demo import KARA_GATE, VILKITSKY_STRAIT, nearest_water  # noqa: E402
-from seaway.samples import ice_impact, kara_sea  # noqa: E402
+from seaway.cli.demo import DEMO_SNAP_KM, KARA_GATE, VILKITSKY_STRAIT  # noqa: E402
 
-ds = kara_sea()
-u = ice_impact(ds.stage_of_development, "Arc7")
-ends = [nearest_water(ds, lat, lon)[:2] for _, lat, lon in (KARA_GATE, VILKITSKY_STRAIT)]
-(s, e) = [(float(ds.lat[r]), float(ds.lon[c])) for r, c in ends]
-r = seaway.route(u, s, e, land=ds.land, neighbourhood=5)
+chart = seaway.open_chart("kara", vessel="Arc7")  # the demo's chart and route
+ds, u = chart.layers, chart.cost
+r = chart.route(KARA_GATE[1:], VILKITSKY_STRAIT[1:], snap_km=DEMO_SNAP_KM, smooth=False)
 
 fig, ax = plt.subplots(figsize=(9, 6.5), dpi=90)
 extent = [float(ds.lon[0]), float(ds.lon[-1]), float(ds.lat[-1]), float(ds.lat[0])]

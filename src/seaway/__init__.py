@@ -20,7 +20,7 @@ from .errors import ChartError, ForecastError, NoRouteError, SeawayError, Seaway
 from .fleet import route_many
 from .result import Leg, Route
 from .smoothing import smooth
-from .voyage import ChartOptions, OpenChart, OpenSeason, open_chart, open_season
+from .voyage import ChartOptions, OpenChart, OpenForecast, OpenSeason, open_chart, open_forecast, open_season
 
 __all__ = [
     "route",
@@ -38,6 +38,8 @@ __all__ = [
     "explain_no_route",
     "open_chart",
     "open_season",
+    "open_forecast",
+    "OpenForecast",
     "OpenChart",
     "OpenSeason",
     "ChartOptions",

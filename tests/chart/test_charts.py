@@ -261,13 +261,17 @@ def test_demo_arc7(kara, tmp_path):
 
 @pytest.mark.cli
 def test_demo_arc5_has_no_route():
-    """Arc5 may not enter first-year ice (paper 000, Table 3); the Kara Gate is fast ice."""
+    """Arc5 may not enter first-year ice (paper 000, Table 3): the water at the Vilkitsky Strait
+    is closed to it, and the nearest water it may use joined to the Kara Gate is 1195 km away."""
     done = _run_demo("--ice-class", "Arc5")
     assert done.returncode == 1 and done.stdout == ""
     message = done.stderr.strip()
     assert "\n" not in message
-    assert message.startswith("seaway demo: error: an Arc5 vessel may not enter the ice")
-    assert "thick first-year ice" in message
+    assert message.startswith("seaway demo: error: end 77.7,104 is on an impassable pixel")
+    assert (
+        "the nearest point the ship may use is 74.2963,60.5783, 1195.2 km away, farther than --snap-km 30"
+        in message
+    )
 
 
 @pytest.mark.cli

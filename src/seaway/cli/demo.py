@@ -4,56 +4,28 @@ to the Vilkitsky Strait, for an ice class."""
 from __future__ import annotations
 
 import json
+import re
 import time
-
-import numpy as np
 
 from .. import samples as charts
 from ..base.files import write_atomically
-from ..base.sphere import distance_km
 from ..base.units import KM_PER_DEG, KM_PER_NM
-from ..engine.api import route
-from ..errors import NoRouteError
-from ..icenav.noroute import explain_no_route
+from ..voyage import open_chart
 from .common import CLI_METHODS, neighbourhood
 
-#: (name, lat, lon) of the demo's ends; each is snapped to the nearest water pixel of the chart.
+#: (name, lat, lon) of the demo's ends; an end the ship may not use moves at most DEMO_SNAP_KM.
 KARA_GATE = ("Kara Gate", 70.3, 58.5)
 VILKITSKY_STRAIT = ("Vilkitsky Strait", 77.7, 104.0)
+DEMO_SNAP_KM = 30.0
 
 
-def nearest_water(ds, lat: float, lon: float) -> tuple[int, int, float]:
-    """(row, col, km moved) of the pixel holding (lat, lon) if it is water, else of the water pixel
-    whose centre is nearest (great-circle distance) to (lat, lon)."""
-    la, lo = ds.lat.values, ds.lon.values
-    r, c = int(np.abs(la - lat).argmin()), int(np.abs(lo - lon).argmin())
-    if not ds.land.values[r, c]:
-        return r, c, 0.0
-    water = np.argwhere(~ds.land.values)
-    if water.size == 0:
-        raise ValueError("the chart has no water pixel")
-    km = distance_km(la[water[:, 0]], lo[water[:, 1]], lat, lon)
-    i = int(np.argmin(km))
-    return int(water[i, 0]), int(water[i, 1]), float(km[i])
-
-
-def _end(ds, u, place, ice_class):
-    """Snap a named place to the nearest water pixel and check the vessel may enter its ice."""
+def _end(r, which, place) -> str:
+    """How the route's start or end reads: where it is, and how far it was moved (its note)."""
     name, lat, lon = place
-    r, c, moved = nearest_water(ds, lat, lon)
-    pla, plo = float(ds.lat[r]), float(ds.lon[c])
-    note = (
-        "water"
-        if moved == 0
-        else f"{lat:g} N {lon:g} E is land: snapped {moved:.1f} km to the nearest water pixel"
-    )
-    if not np.isfinite(u[r, c]):
-        code = int(ds.stage_of_development.values[r, c])
-        raise NoRouteError(
-            f"an {ice_class} vessel may not enter the ice at the {name} ({charts.STAGES[code][0]}, "
-            f"WMO stage {code}, at {pla:.4f} N {plo:.4f} E); no route. Try --ice-class Arc7"
-        )
-    return (pla, plo), f"{pla:.4f} N {plo:.4f} E ({name}; {note})"
+    pla, plo = (float(v) for v in r.coords[0 if which == "start" else -1])
+    moved = next((re.search(r"moved ([0-9.]+ km)", n) for n in r.notes if n.startswith(which + " ")), None)
+    note = "water" if moved is None else f"{lat:g} N {lon:g} E is not usable: moved {moved.group(1)}"
+    return f"{pla:.4f} N {plo:.4f} E ({name}; {note})"
 
 
 def _pixel_km(ds) -> float:
@@ -62,18 +34,18 @@ def _pixel_km(ds) -> float:
 
 def demo(args) -> int:
     t0 = time.perf_counter()
-    ds = charts.kara_sea()
+    chart = open_chart("kara", vessel=args.ice_class)
+    ds = chart.layers
     t_chart = time.perf_counter() - t0
-    u = charts.ice_impact(ds.stage_of_development, args.ice_class)
-    start, start_text = _end(ds, u.values, KARA_GATE, args.ice_class)
-    end, end_text = _end(ds, u.values, VILKITSKY_STRAIT, args.ice_class)
     t1 = time.perf_counter()
-    try:
-        r = route(u, start, end, land=ds.land, neighbourhood=args.neighbourhood, method=args.method)
-    except NoRouteError:  # say why from the ice: what closes the way, which class gets through
-        raise explain_no_route(
-            ds, args.ice_class, start, end, cost=u, neighbourhood=args.neighbourhood
-        ) from None
+    r = chart.route(
+        KARA_GATE[1:],
+        VILKITSKY_STRAIT[1:],
+        snap_km=DEMO_SNAP_KM,
+        neighbourhood=args.neighbourhood,
+        method=args.method,
+        smooth=False,
+    )
     t_search = time.perf_counter() - t1
     km = r.length
     rows, cols = ds.land.shape
@@ -90,8 +62,8 @@ def demo(args) -> int:
         f"vessel class: {args.ice_class} (impact u from Grinyak et al. 2022, "
         f"{'Table 3' if args.ice_class == 'Arc5' else 'Table 2'})"
     )
-    print(f"start:        {start_text}")
-    print(f"end:          {end_text}")
+    print(f"start:        {_end(r, 'start', KARA_GATE)}")
+    print(f"end:          {_end(r, 'end', VILKITSKY_STRAIT)}")
     print(f"route cost:   {r.cost:.1f} (sum of u x km)")
     print(f"length:       {km:.1f} km = {km / KM_PER_NM:.1f} nm")
     print(f"waypoints:    {len(r.pixels)}")

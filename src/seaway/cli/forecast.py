@@ -8,13 +8,13 @@ from __future__ import annotations
 import dataclasses
 
 from ..base.files import open_netcdf
+from ..output.files import check_outputs, write_outputs
 from ..vessel import Vessel, load
 from ..voyage import ChartOptions, open_chart, open_forecast, open_season
 from .common import Progress, tell
-from .outputs import check_outputs, write_outputs
 
 
-def _vessel(args):
+def vessel_of(args):
     """(a vessel file's Profile, a Vessel, or None for the defaults; the ice class)."""
     profile = load(args.vessel_file) if args.vessel_file else None
     changes = {
@@ -53,7 +53,7 @@ def run_forecast_route(args) -> int:
     )
     for note in forecast.notes:
         say(note)
-    vessel, ice_class = _vessel(args)
+    vessel, ice_class = vessel_of(args)
     ice = _ice(args, ice_class or "Arc7") if args.chart is not None else None
     if ice is not None and hasattr(ice, "grid") and hasattr(ice.grid, "times"):
         say(f"{args.chart}: a season of {ice.grid.times.size} ice charts")
@@ -76,10 +76,10 @@ def run_forecast_route(args) -> int:
     for note in r.notes:  # what was assumed, resampled or decided: even with --quiet
         if note not in forecast.notes:
             tell(note)
-    return _report(args, r, planned, say)
+    return report(args, r, planned, say)
 
 
-def _report(args, r, planned, say) -> int:
+def report(args, r, planned, say) -> int:
     if not r.model.smoothable:
         say("not smoothed: its model prices only the engine's steps (the route as found)")
     print(r)

@@ -1,75 +1,46 @@
 """`seaway replan ROUTE.geojson --forecast NEWER.nc --at ISO-TIME`: re-planning during the
-voyage (Grinyak et al. 2018): where the ship is at that time on a route `seaway route
---forecast` wrote (its GeoJSON's vertex times), and the quickest route from there to the same
-end through the newer forecast, leaving then."""
+voyage (Grinyak et al. 2018), a shell over seaway.voyage.replan.replan_voyage: where the ship is
+at that time on a route `seaway route --forecast` wrote, and the quickest route from there to the
+same end through the newer forecast, leaving then."""
 
 from __future__ import annotations
 
-import json
-
-import numpy as np
-
-from .common import CLI_METHODS, EPILOG, neighbourhood, point, tell
-from .forecast import run_forecast_route
+from ..output.files import check_outputs
+from ..voyage import open_forecast
+from ..voyage.replan import replan_voyage
+from .common import CLI_METHODS, EPILOG, Progress, neighbourhood, point, tell
+from .forecast import report, vessel_of
 from .forecastargs import add_forecast_options, iso_time
-
-
-def read_voyage(path) -> tuple[np.ndarray, np.ndarray, dict]:
-    """((n, 2) lat/lon of a route's vertices, (n,) their times, its properties) from the
-    GeoJSON of a route on a clock; a route split at the antimeridian is joined again."""
-    try:
-        with open(path, encoding="utf-8") as f:
-            feature = json.load(f)
-        geom, props = feature["geometry"], feature["properties"]
-    except (OSError, ValueError, KeyError, TypeError) as exc:
-        raise ValueError(f"{path}: not a route GeoJSON written by seaway ({exc})") from None
-    if "vertex_times" not in props:
-        raise ValueError(
-            f"{path}: the route has no times (vertex_times): re-planning needs a route "
-            "found through a forecast (seaway route --forecast ... --out ROUTE.geojson)"
-        )
-    parts = geom["coordinates"] if geom["type"] == "MultiLineString" else [geom["coordinates"]]
-    pts = list(parts[0])
-    for part in parts[1:]:  # drop the two points inserted where the route crosses +-180
-        pts = pts[:-1] + list(part[1:])
-    xy = np.array([[p[1], p[0]] for p in pts], float)
-    times = np.array([np.datetime64(t.rstrip("Z"), "s") for t in props["vertex_times"]])
-    if len(times) != len(xy):
-        raise ValueError(f"{path}: {len(times)} vertex times for {len(xy)} vertices")
-    return xy, times, props
-
-
-def position_at(xy, times, at) -> tuple[tuple[float, float], int]:
-    """((lat, lon) of the ship at `at`, the index of the vertex it last passed), linear in time
-    between the vertices (a step is a few km)."""
-    if not (times[0] <= at <= times[-1]):
-        raise ValueError(f"--at {at} is outside the voyage ({times[0]} to {times[-1]})")
-    i = int(np.searchsorted(times, at, side="right") - 1)
-    if i >= len(times) - 1:
-        return (float(xy[-1, 0]), float(xy[-1, 1])), len(times) - 1
-    f = float((at - times[i]) / (times[i + 1] - times[i]))
-    lon = xy[i, 1] + f * ((xy[i + 1, 1] - xy[i, 1] + 180.0) % 360.0 - 180.0)
-    return (float(xy[i, 0] + f * (xy[i + 1, 0] - xy[i, 0])), float((lon + 180.0) % 360.0 - 180.0)), i
 
 
 def run_replan(args) -> int:
     if not args.forecast:
         raise ValueError("replan needs --forecast FILE (the newer forecast)")
-    xy, times, props = read_voyage(args.route)
-    if args.at is None:
-        raise ValueError("give --at ISO-TIME: when to re-plan from (within the voyage)")
-    here, i = position_at(xy, times, args.at)
-    end = args.end or (float(xy[-1, 0]), float(xy[-1, 1]))
-    tell(
-        f"at {args.at} the ship is at {here[0]:.4f},{here[1]:.4f} (after vertex {i + 1} of "
-        f"{len(xy)}); re-planning to {end[0]:.4f},{end[1]:.4f} through {', '.join(args.forecast)}",
-        "replan",
+    say = Progress("replan", args.quiet)
+    planned = check_outputs(args.out, args.plot)
+    forecast = open_forecast(
+        args.forecast, variables=dict(args.forecast_variable or []), crs=args.forecast_crs
     )
-    if args.speed is None and args.vessel_file is None and props.get("speed_kn"):
-        args.speed = float(props["speed_kn"])
-        tell(f"the route's speed {args.speed:g} kn (give --speed or --vessel-file to change it)", "replan")
-    args.start, args.end, args.depart, args.chart = here, end, args.at, None
-    return run_forecast_route(args)
+    given = args.speed is not None or args.vessel_file is not None or args.displacement is not None
+    vessel, _ = vessel_of(args) if given else (None, None)
+    r, _, notes = replan_voyage(
+        args.route,
+        forecast,
+        args.at,
+        end=args.end,
+        vessel=vessel,
+        persist=args.persist,
+        objective=args.objective,
+        arrive_by=args.arrive_by,
+        neighbourhood=args.neighbourhood,
+        method=args.method,
+        name=args.name,
+        progress=None if args.quiet else say,
+    )
+    for note in r.notes:
+        if note not in forecast.notes:
+            tell(note, "replan")
+    return report(args, r, planned, say)
 
 
 def add_replan_command(commands) -> None:

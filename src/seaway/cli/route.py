@@ -7,12 +7,12 @@ import dataclasses
 
 from ..base.units import KM_PER_NM
 from ..depth import check_draft
+from ..output.files import check_outputs, write_outputs
 from ..voyage import ChartOptions, open_chart
 from .common import Progress, tell
 from .constraints import constraint_options
 from .forecast import run_forecast_route
 from .forecastargs import check_forecast_options
-from .outputs import check_outputs, write_outputs
 
 
 def chart_options(args) -> ChartOptions:

@@ -142,3 +142,9 @@ def get_class(ice_class) -> IceClass:
     if name is None:
         raise ValueError(f"ice_class must be one of {class_names()}, got {ice_class!r}")
     return CLASSES[name]
+
+
+def with_article(name: str) -> str:
+    """The class name with its indefinite article, as it is spoken: "an Arc7", "an IA Super",
+    "a PC6" (P is read "pee")."""
+    return f"{'an' if name[:1].upper() in 'AEIOU' else 'a'} {name}"

@@ -29,7 +29,7 @@ from ..engine.api import route
 from ..engine.prepared import PreparedChart
 from ..engine.reach import chart_order, least_barrier, nearest_reachable, with_reach
 from ..errors import NoRouteError
-from ..ice.classes import get_class
+from ..ice.classes import get_class, with_article
 from ..ice.forms import DEFAULT_FAST_ICE, fast_ice_mask, fast_ice_stage, ice_words
 from ..ice.impact import chart_impact, governing_stage, ice_impact, table_for
 from ..models.base import EdgeCost
@@ -77,7 +77,7 @@ def explain_no_route(
     way = least_barrier(chart, kinds.levels, start, end, neighbourhood)
     reach = nearest_reachable(prepared, start, end)
     unit = "km" if chart.geographic or show else "chart units"
-    who = f"{'an' if cls[0] in 'AaIi' else 'a'} {cls} ship"
+    who = f"{with_article(cls)} ship"
     a, b = asked or (start, end)
     head = f"no route for {who} from {_pt(a)} to {_pt(b)}: "
     if way is None:

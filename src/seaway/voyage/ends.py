@@ -14,6 +14,7 @@ import numpy as np
 from ..base.sphere import distance_km
 from ..chart.raster import as_chart
 from ..engine.snap import DEFAULT_SNAP_KM, SnapError, snap_ends
+from ..ice.classes import with_article
 from ..ice.codes import stage_name
 
 
@@ -55,7 +56,7 @@ def describe(layers, rc, vessel, reasons=(), ice_blocks=True) -> str:
         text = ", ".join(ice) if ice else "ice of unknown stage"
         if np.isfinite(ct):
             text += f", total concentration {ct:g}/10"
-        who = f"an {vessel} ship" if vessel else "the ship"
+        who = f"{with_article(vessel)} ship" if vessel else "the ship"
         parts.insert(0, f"ice {who} may not enter: {text}")
     if not parts:
         parts.append("an impassable pixel (cost NaN or infinite)")

@@ -1,4 +1,4 @@
-"""The files `seaway route` writes (--out, --plot): checked before the chart is read or the
+"""A route's files (``seaway route --out/--plot``): checked before the chart is read or the
 route searched (format known from the extension, directory there and writable, the optional
 packages the format needs installed), then written all or nothing (seaway.base.files.write_all:
 every file to a temporary file beside it, renamed only when all are written)."""
@@ -9,8 +9,8 @@ import importlib.util
 import os
 
 from ..base.files import check_output, write_all
-from ..output import export
-from ..output.plot import route_png
+from . import export
+from .plot import route_png
 
 PLOT_FORMATS = {".png": "png"}
 #: The packages a format needs (the [plot] extra), imported only when the files are made.
