@@ -4,7 +4,7 @@ A season is an ice chart Dataset (see seaway.ice) with a `time` dimension: CT (t
 (WMO stage) and/or `thickness` (m), and `land`. Build one from SIGRID-3 files with their dates
 (`read_season`) or open a NetCDF with a time dimension (`as_season` also takes CF
 `sea_ice_area_fraction` and `sea_ice_thickness`, e.g. an ocean model's aice and hice): both
-live in seaway.ice.seasongrid and are re-exported here. `seaway.prepare(SeasonGrid(season))` is the
+live in seaway.ice.seasongrid (seaway.ice). `seaway.prepare(SeasonGrid(season))` is the
 chart to route on and `seaway.models.IceSeasonTime` the cost model;
 `route_season` and `arrival_field` wrap the two.
 
@@ -44,12 +44,12 @@ from __future__ import annotations
 
 from ..engine.api import prepare
 from ..errors import NoRouteError
-from ..ice.seasongrid import SeasonGrid, as_season, read_season
+from ..ice.seasongrid import SeasonGrid
 from ..ice.seasonspeed import andreeva_speed_kn, class_speed_kn, table_speed_kn
 from ..models import IceSeasonTime
 from . import seasonwhy
 
-__all__ = ["read_season", "as_season", "SeasonGrid", "route_season", "arrival_field"]
+__all__ = ["route_season", "arrival_field"]
 __all__ += ["andreeva_speed_kn", "table_speed_kn", "class_speed_kn"]  # of seaway.ice.seasonspeed
 
 

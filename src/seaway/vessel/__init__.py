@@ -3,8 +3,8 @@ weather limits; seaway.vessel.ship) and vessel files (seaway.vessel.profile: loa
 
 from __future__ import annotations
 
-from ..errors import VesselFileError
+from ..errors import VesselFileError as VesselFileError  # importable here too
 from .profile import EXAMPLES, Profile, load
 from .ship import SPEED_LOSSES, Vessel
 
-__all__ = ["EXAMPLES", "SPEED_LOSSES", "Profile", "Vessel", "VesselFileError", "load"]
+__all__ = ["EXAMPLES", "SPEED_LOSSES", "Profile", "Vessel", "load"]  # VesselFileError: seaway.errors

@@ -269,3 +269,8 @@ def load(path: str | os.PathLike[str]) -> Profile:
         dict(d.get("sources", {})),
         shown,
     )
+
+
+#: Documented here: the file format (the module docstring) and its fields; Profile and load are
+#: seaway.vessel's.
+__all__ = ["FIELDS", "REQUIRED", "EXAMPLES", "example_path"]
