@@ -146,6 +146,7 @@ def test_nsidc_route_round_yamal_in_latlon(shared_data, tmp_path, capsys):
             "70.3,66.0",
             "--to",
             "72.9,74.0",
+            "--escort",  # every ice pixel is assumed thick first-year ice, 1.6 m: more than Arc7's 1.4 m
             "--out",
             str(out),
             "-q",

@@ -76,9 +76,11 @@ def test_sigrid3_geopackage_with_a_grid_and_snap(shared_data, tmp_path):
 @pytest.mark.needs_data(*NSIDC)
 def test_nsidc_projected_concentration(shared_data, tmp_path):
     path, a, b = str(shared_data.joinpath(*NSIDC)), (70.3, 66.0), (72.9, 74.0)
-    cli = _cli(tmp_path, "route", path, "--vessel", "Arc7", "--from", "70.3,66", "--to", "72.9,74")
+    cli = _cli(
+        tmp_path, "route", path, "--vessel", "Arc7", "--from", "70.3,66", "--to", "72.9,74", "--escort"
+    )
     chart = seaway.open_chart(path, vessel="Arc7")
-    r = chart.route(a, b)
+    r = chart.route(a, b, escort=True)
     _same(cli, r)
     assert chart.crs is not None and "3411" in chart.crs.to_string()
     assert any("thick first-year ice (WMO stage 93), an assumption" in n for n in r.notes)

@@ -200,8 +200,10 @@ def test_least_fuel_that_arrives_in_time_and_the_options_need_a_forecast(tmp_pat
     assert code == 0, err
     hours = float(out.split("fuel ")[-1].split(" t over ")[1].split(" h")[0])
     assert hours <= 24.0 + 0.05  # arrives by the deadline (printed to 0.1 h)
-    code, _, err = _run(capsys, "kara", "--depart", "2026-10-01T00:00", A, B)
-    assert code == 1 and "--depart need --forecast FILE" in err
+    code, _, err = _run(capsys, "kara", "--persist", A, B)
+    assert code == 1 and "--persist need --forecast FILE" in err
+    code, _, err = _run(capsys, "kara", "--objective", "fuel", A, B)
+    assert code == 1 and "--objective fuel need --forecast FILE" in err
 
 
 def test_ice_and_weather_in_one_voyage_from_the_command_line(tmp_path, capsys):

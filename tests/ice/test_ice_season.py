@@ -195,15 +195,20 @@ def test_a_week_of_daily_charts_with_a_retreating_ice_edge():
 
 
 def test_paper_002_speed_in_a_chart_by_hand():
-    # Arc7 (h_pass 1.4 m) at 12 kn: thin first-year ice (87, to 0.7 m) f2 = 1 - 0.7/1.4 = 0.5
-    # -> 6 kn; medium first-year (91, to 1.2 m) f2 = 1/7 -> 1.714 kn; 'mid' takes 0.95 m.
+    # Arc7 (h_pass 1.4 m) at 12 kn, the upper end of each WMO range: thin first-year ice (87, to
+    # 0.7 m) f2 = 1 - 0.7/1.4 = 0.5 -> 6 kn; medium first-year (91, to 1.2 m) f2 = 1/7 ->
+    # 1.714 kn; the default, the middle, takes 0.5 m and 0.95 m; thick first-year 1.6 m closes.
     stage = np.array([[[55, 87, 91, 93]]])
     frame = planar_season(stage, ct=np.array([[[0, 5, 8, 9.0]]])).isel(time=0)
     speed = seaway.icenav.season.andreeva_speed_kn
-    assert speed(frame, "Arc7", 12)[0] == pytest.approx([12, 6, 12 / 7, 0])
-    assert speed(frame, "Arc7", 12, stage_thickness="mid")[0, 2] == pytest.approx(12 * (1 - 0.95 / 1.4))
+    assert speed(frame, "Arc7", 12, stage_thickness="upper")[0] == pytest.approx([12, 6, 12 / 7, 0])
+    mid = [12, 12 * (1 - 0.5 / 1.4), 12 * (1 - 0.95 / 1.4), 0]
+    assert speed(frame, "Arc7", 12)[0] == pytest.approx(mid)
+    assert speed(frame, "Arc7", 12, stage_thickness={91: 1.3})[0, 2] == pytest.approx(12 * (1 - 1.3 / 1.4))
     # Arc4 may enter 5/10 but not 8/10 (open ice only); without the limit f2 rules alone.
-    assert speed(frame, "Arc4", 12)[0] == pytest.approx([12, 12 * (1 - 0.7 / 0.8), 0, 0])
+    assert speed(frame, "Arc4", 12, stage_thickness="upper")[0] == pytest.approx(
+        [12, 12 * (1 - 0.7 / 0.8), 0, 0]
+    )
     assert speed(frame, "Arc7", 12, h_pass_m=1.7)[0, 3] == pytest.approx(0.0)
 
 

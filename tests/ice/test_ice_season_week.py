@@ -81,11 +81,13 @@ def test_a_week_of_daily_sigrid3_charts_arc4_and_arc7_on_two_departures(week):
     chart = seaway.prepare(grid, neighbourhood=3)  # one prepared chart for both classes and departures
     a, b = (72.15, 60.05), (72.15, 63.95)
     run = {
-        (cls, day): chart.route(a, b, model=IceSeasonTime(grid, cls, 14, departure=day))
+        (cls, day): chart.route(
+            a, b, model=IceSeasonTime(grid, cls, 14, departure=day, stage_thickness="upper")
+        )
         for cls in ("Arc4", "Arc7")
         for day in ("2026-07-01", "2026-07-05")
     }
-    # Paper 002 at 14 kn: Arc7 (h_pass 1.4 m) makes 14 x (1 - 0.7/1.4) = 7 kn in the thin ice
+    # Paper 002 at 14 kn, the upper end of each stage's range: Arc7 (h_pass 1.4 m) makes 14 x (1 - 0.7/1.4) = 7 kn in the thin ice
     # and 14 x (1 - 1.2/1.4) = 2 kn through the plug; crawling through it (about 4.6 h) beats
     # waiting for it to break up (3 days).
     arc7 = run["Arc7", "2026-07-01"]

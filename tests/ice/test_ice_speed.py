@@ -56,9 +56,9 @@ def dense_km(route, inside, n=4000):
 @pytest.mark.parametrize(
     "stage, cls, knots",
     [
-        (87, "Arc7", 12 * (1 - 0.7 / 1.4)),  # thin first-year, upper end 0.7 m: F = 0.5
-        (87, "Arc5", 12 * (1 - 0.7 / 1.0)),  # Arc5's h_pass 1.0 m: F = 0.3
-        (91, "Arc7", 12 * (1 - 1.2 / 1.4)),  # medium first-year 1.2 m: F = 1/7
+        (87, "Arc7", 12 * (1 - 0.5 / 1.4)),  # thin first-year, the middle of 0.3-0.7 m: 0.5 m
+        (87, "Arc5", 12 * (1 - 0.5 / 1.0)),  # Arc5's h_pass 1.0 m: F = 0.5
+        (91, "Arc7", 12 * (1 - 0.95 / 1.4)),  # medium first-year, the middle of 0.7-1.2 m
     ],
 )
 def test_andreeva_speed_across_a_band(stage, cls, knots):
@@ -71,8 +71,15 @@ def test_andreeva_speed_across_a_band(stage, cls, knots):
     assert (
         s["speed_model"].startswith("Andreeva 2021: V = F x V0, V0 12 kn") and f"({cls}," in s["speed_model"]
     )
-    assert "the upper end of the governing stage's WMO range" in s["speed_model"]
+    name = {87: "thin first-year ice 0.50 m", 91: "medium first-year ice 0.95 m"}[stage]
+    assert f"the middle of its WMO range (WMO-No. 259): {name}" in s["speed_model"]
     assert sum(leg.time_h for leg in timed.legs()) == pytest.approx(s["time_h"], rel=1e-12)
+    # the upper end, asked for: thin first-year 0.7 m, medium 1.2 m
+    upper = r.with_ice_speed(ice_speed(band(stage), cls, 12, stage_thickness="upper")).summary()
+    h_pass = {"Arc7": 1.4, "Arc5": 1.0}[cls]
+    slow = 12 * (1 - {87: 0.7, 91: 1.2}[stage] / h_pass)
+    assert upper["time_h"] == pytest.approx(km_out / (12 * KN) + km_in / (slow * KN), rel=0.01)
+    assert "the upper end of its WMO range" in upper["speed_model"]
 
 
 def test_polaris_limits_a_polar_class_under_elevated_risk():
@@ -91,7 +98,7 @@ def test_polaris_limits_a_polar_class_under_elevated_risk():
 
 
 def test_ice_thicker_than_the_class_passes_gives_no_time_not_open_water_time(tmp_path):
-    ds = band(93)  # thick first-year, 2.0 m at the upper end: Arc7 (1.4 m) gets F = 0
+    ds = band(93)  # thick first-year, the middle of 1.2-2.0 m, 1.6 m: Arc7 (1.4 m) gets F = 0
     r, km_in, _ = straight(ds, "Arc7")
     timed = r.with_ice_speed(ice_speed(ds, "Arc7", 12))
     s = timed.summary()
@@ -118,9 +125,10 @@ def test_cli_speed_on_an_ice_chart_uses_the_ice_model(tmp_path, capsys):
     )
     out, err = capsys.readouterr()
     assert code == 0, err
-    assert "times from the speed in the ice: Andreeva 2021: V = F x V0, V0 12 kn" in err
+    assert "timed by the ship's speed in the ice: Andreeva 2021: V = F x V0, V0 12 kn" in err
     props = json.loads(outs[0].read_text())["properties"]
-    assert props["time_h"] == pytest.approx(km_out / (12 * KN) + km_in / (6 * KN), rel=0.01)
+    slow = 12 * (1 - 0.5 / 1.4)  # thin first-year ice, 0.5 m by default
+    assert props["time_h"] == pytest.approx(km_out / (12 * KN) + km_in / (slow * KN), rel=0.01)
     assert props["speed_model"].startswith("Andreeva 2021")
     speeds = [
         float(leg.get("speedMax"))
@@ -159,6 +167,6 @@ def test_real_cis_chart_times_agree_with_dense_sampling(shared_data):
             i = np.abs(ds.lat.values[:, None] - lat).argmin(0)
             j = np.abs(ds.lon.values[:, None] - lon).argmin(0)
             hours += haversine_km(a[0], a[1], b[0], b[1]) / n * np.sum(1 / (knots[i, j] * KN))
-        s = r.with_ice_speed(ice_speed(ds, cls, 12)).summary()
+        s = r.with_ice_speed(ice_speed(ds, cls, 12, stage_thickness="upper")).summary()
         assert s["time_h"] == pytest.approx(hours, rel=0.02)
         assert s["time_h"] > r.length / (12 * KN)  # slower than open water

@@ -99,7 +99,7 @@ def test_a_strait_closed_by_first_year_ice_in_every_chart_is_explained_by_the_ic
     assert err.reachable[1] == pytest.approx(62.95)
     assert err.reachable_km == pytest.approx(haversine(*err.reachable, *EAST), rel=1e-9)
     # Arc7 does get through (at Andreeva 2021's speed in 1.2 m ice: 14 x (1 - 1.2 / 1.4) = 2 kn).
-    r = route_season(ds, WEST, EAST, ice_class="Arc7", v0_kn=14)
+    r = route_season(ds, WEST, EAST, ice_class="Arc7", v0_kn=14, stage_thickness="upper")
     assert r.stats.voyage.hours_waiting == 0.0
     # Along 70.5 N: its great-circle steps at 14 kn, and 2 kn over the strait's 0.55 deg.
     assert np.all(np.isclose(r.coords[:, 0], 70.5))

@@ -87,7 +87,7 @@ def test_the_season_keeps_the_form_of_ice_and_each_chart_takes_the_rule(charts, 
         np.unique(same.SA.values[0][same.FA.values[0] == 8])
     ) == {99.0}
     mixed = read_season({DAYS[0]: charts[0], DAYS[1]: charts[1]}, latlon_grid(*GRID))
-    model = IceSeasonTime(mixed, "Arc7", 12, concentration_limit=False)
+    model = IceSeasonTime(mixed, "Arc7", 12, concentration_limit=False, stage_thickness="upper")
     # "nearby", chart by chart: thin first-year (87, to 0.7 m) beside the first chart's fast ice,
     # medium first-year (91, to 1.2 m) beside the second's; Andreeva: V = (1 - h / 1.4 m) x 12 kn.
     at = (25, 100)  # 72.55 N, 70.05 E: fast ice
@@ -108,7 +108,7 @@ def test_the_season_keeps_the_form_of_ice_and_each_chart_takes_the_rule(charts, 
         "free; icebergs may be present",
     )
     # A stage code as the rule: medium first-year (91) in both charts.
-    chosen = IceSeasonTime(mixed, "Arc7", 12, fast_ice=91, concentration_limit=False)
+    chosen = IceSeasonTime(mixed, "Arc7", 12, fast_ice=91, concentration_limit=False, stage_thickness="upper")
     assert chosen.hours_per_km[0][at] == chosen.hours_per_km[1][at] == np.float32(7 / (12 * KN))
     assert "ASSUMED medium first-year ice (WMO 91), as you chose" in chosen.assumptions[0]
     with pytest.raises(ValueError, match="fast_ice must be 'nearby', 'closed' or a WMO stage code"):
@@ -116,11 +116,13 @@ def test_the_season_keeps_the_form_of_ice_and_each_chart_takes_the_rule(charts, 
 
 
 def test_a_season_of_identical_charts_routes_as_the_static_chart(charts, same):
-    r = route_season(same, START, END, ice_class="Arc7", v0_kn=12, concentration_limit=False)
+    r = route_season(
+        same, START, END, ice_class="Arc7", v0_kn=12, concentration_limit=False, stage_thickness="upper"
+    )
     # The static integral route through the same chart with the same rule (seaway.ice.speed, the
     # hours per km as the season's engine reads them: float32).
     ds = read_sigrid3(charts[0], latlon_grid(*GRID))
-    v = ice_speed(ds, "Arc7", 12, fast_ice="nearby")
+    v = ice_speed(ds, "Arc7", 12, fast_ice="nearby", stage_thickness="upper")
     hours = andreeva.time_cost(v / 12, 12).astype(np.float32).astype(float)
     static = seaway.route(hours, START, END, land=ds.land, edge_cost="integral")
     assert r.cost == pytest.approx(static.cost, rel=1e-9)

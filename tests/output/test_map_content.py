@@ -89,6 +89,7 @@ def test_fast_ice_open_water_and_land_on_both_maps(fast_sea, tmp_path, legends, 
             "72.05,78.55",
             "--grid",
             "70,75,60,80,0.1",
+            "--escort",  # the fast ice is taken as thick first-year (1.6 m): Arc7 is escorted
             "--plot",
             str(png),
             "--out",

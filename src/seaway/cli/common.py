@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import dataclasses
 import sys
 import time
 
@@ -12,6 +13,8 @@ import numpy as np
 from ..base.interrupt import SettledProgress, reporting
 from ..engine.snap import DEFAULT_SNAP_KM
 from ..ice.forms import check_fast_ice
+from ..vessel import load
+from ..voyage.ship import as_vessel
 
 #: The exact methods a command may be asked for.
 CLI_METHODS = ("auto", "bidirectional", "astar", "dijkstra")
@@ -151,3 +154,20 @@ def fast_ice(text: str):
         return check_fast_ice(text)
     except ValueError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def vessel_from(args):
+    """The Vessel of the command line: --vessel-file (its values), --vessel CLASS (its class, or
+    a ship of that class), --speed, --displacement, --draft and --ukc (replacing the file's);
+    None when none is given."""
+    ship = load(args.vessel_file) if getattr(args, "vessel_file", None) else None
+    cls = getattr(args, "vessel", None)
+    if ship is not None and cls is not None:
+        ship = dataclasses.replace(ship, ice_class=as_vessel(cls).ice_class)
+    return as_vessel(
+        ship if ship is not None else cls,
+        getattr(args, "speed", None),
+        displacement_t=getattr(args, "displacement", None),
+        draft_m=getattr(args, "draft", None),
+        ukc_m=getattr(args, "ukc", None),
+    )

@@ -5,26 +5,16 @@ time axis) the ice and the weather act in one voyage."""
 
 from __future__ import annotations
 
-import dataclasses
-
 from ..base.files import open_netcdf
 from ..output.files import check_outputs, write_outputs
-from ..vessel import Vessel, load
 from ..voyage import ChartOptions, open_chart, open_forecast, open_season
-from .common import Progress, tell
+from .common import Progress, tell, vessel_from
 
 
 def vessel_of(args):
-    """(a vessel file's Profile, a Vessel, or None for the defaults; the ice class)."""
-    profile = load(args.vessel_file) if args.vessel_file else None
-    changes = {
-        k: v for k, v in (("speed_kn", args.speed), ("displacement_t", args.displacement)) if v is not None
-    }
-    if profile is not None:
-        vessel = dataclasses.replace(profile, vessel=dataclasses.replace(profile.vessel, **changes))
-    else:
-        vessel = Vessel(**{"speed_kn": 12.0, **changes}) if changes else None
-    return vessel, args.vessel or (profile.ice_class if profile else None)
+    """(the Vessel of --vessel-file, --vessel, --speed and --displacement, or None for the
+    defaults; the ice class)."""
+    return vessel_from(args), args.vessel
 
 
 def _ice(args, ice_class):
@@ -64,7 +54,7 @@ def run_forecast_route(args) -> int:
         ice=ice,
         ice_class=ice_class,
         depart=args.depart,
-        objective=args.objective,
+        objective=args.objective or "time",
         arrive_by=args.arrive_by,
         persist=args.persist,
         grid=args.grid,

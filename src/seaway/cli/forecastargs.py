@@ -8,24 +8,19 @@ import argparse
 
 import numpy as np
 
+from ..ice.andreeva import check_stage_thickness
 from ..weather.forecast import ROLES, check_roles
 
-OBJECTIVES = ("time", "fuel", "safety")
+#: --objective: impact (charts' default) and time on charts and seasons; time (forecasts'
+#: default), fuel and safety through a forecast.
+OBJECTIVES = ("impact", "time", "fuel", "safety")
 EXAMPLE = (
     "example: seaway route --forecast waves.nc --forecast currents.nc --depart "
     "2026-10-01T06:00 --from 70.3,58.5 --to 76.5,95.0 --vessel-file pc6-general-cargo "
     "--out voyage.rtz"
 )
 #: Options that mean something only with --forecast.
-_ONLY_WITH = (
-    "forecast_variable",
-    "forecast_crs",
-    "depart",
-    "persist",
-    "arrive_by",
-    "displacement",
-    "vessel_file",
-)
+_ONLY_WITH = ("forecast_variable", "forecast_crs", "persist", "arrive_by", "displacement")
 
 
 def role_pair(text: str) -> tuple[str, str]:
@@ -88,23 +83,10 @@ def add_forecast_options(rp) -> None:
         "east/north, calm outside the model grid; all said and recorded",
     )
     g.add_argument(
-        "--depart",
-        type=iso_time,
-        metavar="ISO-TIME",
-        help="departure in UTC (default: the forecast's first time)",
-    )
-    g.add_argument(
         "--persist",
         action="store_true",
         help="route a departure outside the forecast's times by holding its nearest "
         "frame (persistence), said on stderr; default: refused",
-    )
-    g.add_argument(
-        "--objective",
-        choices=OBJECTIVES,
-        default="time",
-        help="time (default), fuel (needs the vessel file's fuel curve) or safety "
-        "(least wave danger by heading; needs wave height, direction, period)",
     )
     g.add_argument(
         "--arrive-by",
@@ -118,19 +100,86 @@ def add_forecast_options(rp) -> None:
         metavar="T",
         help="displacement in tonnes for Khokhlov's speed loss (default 15000, or the vessel file's)",
     )
-    g.add_argument(
-        "--vessel-file",
-        metavar="FILE",
-        help="vessel profile (TOML or JSON, seaway.vessel.load) or a shipped example: "
-        "arc7-lng-carrier, pc6-general-cargo, sotnikova-container-ship; --speed, "
-        "--displacement and --vessel override its values",
-    )
 
 
 def check_forecast_options(args) -> None:
     """Refuse the weather-routing options without --forecast, naming the fix."""
     given = [f"--{name.replace('_', '-')}" for name in _ONLY_WITH if getattr(args, name, None)]
-    if args.objective != "time":
-        given.append("--objective")
+    if args.objective in ("fuel", "safety"):
+        given.append(f"--objective {args.objective}")
     if given and not args.forecast:
         raise ValueError(f"{', '.join(given)} need --forecast FILE (a forecast to route through)")
+    if args.forecast and args.objective == "impact":
+        raise ValueError(
+            "--objective impact is a chart's (least ice impact): through a forecast give time, fuel or safety"
+        )
+
+
+def add_voyage_options(rp) -> None:
+    """The options every route takes: the ship (--vessel-file), the departure, the objective, the
+    escort and the thickness of a stage of development."""
+    g = rp.add_argument_group(
+        "the voyage",
+        "the ship from its vessel file, the departure (an ETA at every waypoint), what the route "
+        "minimises, an icebreaker's escort, and the thickness the ice's stages are taken at",
+    )
+    g.add_argument(
+        "--vessel-file",
+        metavar="FILE",
+        help="vessel file (TOML or JSON, seaway.vessel.load) or a shipped example: "
+        "arc7-lng-carrier, pc6-general-cargo, sotnikova-container-ship; its ice class, service "
+        "speed, draft, ice curve and fuel curve; --vessel, --speed, --draft and --displacement "
+        "override its values",
+    )
+    g.add_argument(
+        "--depart",
+        type=iso_time,
+        metavar="ISO-TIME",
+        help="departure in UTC: every waypoint gets its ETA in the table and every output "
+        "(default through a forecast: its first time; on a chart: no dates, hours only)",
+    )
+    g.add_argument(
+        "--objective",
+        choices=OBJECTIVES,
+        help="what the route minimises: on a chart impact (default: Grinyak et al. 2022's ice "
+        "impact) or time (the quickest route, exact); through a forecast time (default), fuel "
+        "(needs the vessel file's fuel curve) or safety (least wave danger by heading)",
+    )
+    g.add_argument(
+        "--escort",
+        action="store_true",
+        help="where the ship has no speed of its own in ice its class may enter, go under "
+        "icebreaker escort (at --escort-speed) and mark those legs; default: avoid that ice",
+    )
+    g.add_argument(
+        "--escort-speed",
+        type=float,
+        metavar="KN",
+        help="the speed under icebreaker escort (default 6 kn, an assumption; said)",
+    )
+    g.add_argument(
+        "--stage-thickness",
+        type=stage_thickness,
+        metavar="RULE",
+        help="the thickness of ice known by its stage of development: mid (default, the middle "
+        "of its WMO range), upper, lower, or STAGE=M,... (e.g. 93=1.5,91=0.9); said in the output",
+    )
+
+
+def stage_thickness(text: str):
+    """argparse type of --stage-thickness: lower, mid, upper or STAGE=M,..."""
+    if "=" not in text:
+        value: object = text
+    else:
+        try:
+            value = {
+                float(k): float(v) for k, v in (item.split("=") for item in text.replace(" ", "").split(","))
+            }
+        except ValueError:
+            raise argparse.ArgumentTypeError(
+                f"expected lower, mid, upper or STAGE=M,... (e.g. 93=1.5), got {text!r}"
+            ) from None
+    try:
+        return check_stage_thickness(value)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None

@@ -10,12 +10,16 @@ from ..voyage import open_forecast
 from ..voyage.replan import replan_voyage
 from .common import CLI_METHODS, EPILOG, Progress, neighbourhood, point, tell
 from .forecast import report, vessel_of
-from .forecastargs import add_forecast_options, iso_time
+from .forecastargs import add_forecast_options, add_voyage_options, iso_time
 
 
 def run_replan(args) -> int:
     if not args.forecast:
         raise ValueError("replan needs --forecast FILE (the newer forecast)")
+    if args.depart is not None or args.escort or args.objective == "impact":
+        raise ValueError(
+            "replan leaves at --at through the forecast: give no --depart, --escort or --objective impact"
+        )
     say = Progress("replan", args.quiet)
     planned = check_outputs(args.out, args.plot)
     forecast = open_forecast(
@@ -30,7 +34,7 @@ def run_replan(args) -> int:
         end=args.end,
         vessel=vessel,
         persist=args.persist,
-        objective=args.objective,
+        objective=args.objective or "time",
         arrive_by=args.arrive_by,
         neighbourhood=args.neighbourhood,
         method=args.method,
@@ -77,6 +81,7 @@ def add_replan_command(commands) -> None:
     )
     rp.add_argument("--plot", metavar="PNG", help="draw the new route to a PNG (needs seaway[plot])")
     rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")
+    add_voyage_options(rp)
     add_forecast_options(rp)
     rp.set_defaults(
         chart=None, start=None, land_variable=None, grid=None, assume_stage=None, fast_ice="nearby"

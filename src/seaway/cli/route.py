@@ -9,7 +9,7 @@ from ..base.units import KM_PER_NM
 from ..depth import check_draft
 from ..output.files import check_outputs, write_outputs
 from ..voyage import ChartOptions, open_chart
-from .common import Progress, tell
+from .common import Progress, tell, vessel_from
 from .constraints import constraint_options
 from .forecast import run_forecast_route
 from .forecastargs import check_forecast_options
@@ -38,8 +38,9 @@ def run_route(args) -> int:
     say = Progress("route", args.quiet)
     planned = check_outputs(args.out, args.plot)  # before any work: nothing found is then lost
     say(f"reading {args.chart}")
+    vessel = vessel_from(args) if args.vessel_file else args.vessel
     chart = open_chart(
-        args.chart, vessel=args.vessel, ends=(args.start, args.end), options=chart_options(args)
+        args.chart, vessel=vessel_class(args), ends=(args.start, args.end), options=chart_options(args)
     )
     for note in chart.notes:  # what the chart's reading assumed or decided: even with --quiet
         tell(note)
@@ -50,8 +51,13 @@ def run_route(args) -> int:
     r = chart.route(
         args.start,
         args.end,
-        vessel=args.vessel,
+        vessel=vessel,
         speed_kn=args.speed,
+        depart=args.depart,
+        objective=args.objective or "impact",
+        escort=args.escort,
+        escort_speed_kn=args.escort_speed,
+        stage_thickness=args.stage_thickness,
         snap_km=args.snap_km if args.snap else None,
         neighbourhood=args.neighbourhood,
         edge_cost=args.edge_cost,
@@ -79,9 +85,16 @@ def run_route(args) -> int:
     return 0
 
 
+def vessel_class(args):
+    """The ice class of --vessel, else of --vessel-file, else None."""
+    if args.vessel or not args.vessel_file:
+        return args.vessel
+    return vessel_from(args).ice_class
+
+
 def _title(args, chart, r) -> str:
     """The map's title: the route, its chart's date and class, its length and cost."""
     head = f"{args.name}" + (f", chart of {chart.date}" if chart.date else "")
     length = f"{r.length:.0f} km ({r.length / KM_PER_NM:.0f} nm)" if r.geographic else f"{r.length:.1f} units"
-    cls = chart.ice_class(args.vessel)
+    cls = chart.ice_class(vessel_class(args))
     return f"{head}: {length}, cost {r.cost:.5g} {r.unit}; {chart.description}" + (f", {cls}" if cls else "")

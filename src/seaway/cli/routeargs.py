@@ -8,7 +8,7 @@ from ..models import EDGE_COSTS
 from .common import CLI_METHODS, EPILOG, add_ends, add_snap_options, fast_ice, grid, neighbourhood, point
 from .constraints import add_constraint_options
 from .forecastargs import EXAMPLE as FORECAST_EXAMPLE
-from .forecastargs import add_forecast_options
+from .forecastargs import add_forecast_options, add_voyage_options
 
 
 def add_route_command(commands) -> None:
@@ -162,4 +162,5 @@ def add_route_command(commands) -> None:
         "with --depth/--draft the shoals and the least depth",
     )
     rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")
+    add_voyage_options(rp)
     add_forecast_options(rp)  # seaway.cli.forecast

@@ -73,18 +73,72 @@ def f2(thickness, h_pass):
     return np.clip(np.nan_to_num(f, nan=0.0), 0.0, 1.0)
 
 
-def stage_thickness(stage, rule="upper") -> np.ndarray:
-    """Typical thickness h (m) of WMO stage codes (seaway.ice.codes.STAGE_CODES): the upper end of
-    the WMO-No. 259 range ("upper", conservative: thick first-year 2.0 m) or its middle ("mid");
-    0 for ice free (55); NaN for stages without a thickness (old ice, glacier ice, unknown), so
-    f2 = 0 there; multi-year ice (no upper end) gives inf."""
-    if rule not in ("upper", "mid"):
-        raise ValueError(f"rule must be 'upper' or 'mid', got {rule!r}")
+#: The default thickness of a stage of development: the middle of its WMO range (WMO-No. 259): a
+#: chart of stages gives no thickness, and the middle is the expected value within the range;
+#: "upper" is the conservative bound (thick first-year 2.0 m closes it to Arc7 under Andreeva's
+#: f2), "lower" the optimistic one.
+DEFAULT_STAGE_THICKNESS = "mid"
+STAGE_THICKNESS_RULES = ("lower", "mid", "upper")
+
+
+def stage_thickness(stage, rule=DEFAULT_STAGE_THICKNESS) -> np.ndarray:
+    """Typical thickness h (m) of WMO stage codes (seaway.ice.codes.STAGE_CODES) by `rule`: the
+    middle of the WMO-No. 259 range ("mid", the default), its upper end ("upper", conservative:
+    thick first-year 2.0 m) or lower end ("lower"), or a dict {stage code: metres} for the stages
+    it names, the middle for the others; 0 for ice free (55); NaN for stages without a thickness
+    (old ice, glacier ice, unknown), so f2 = 0 there; multi-year ice (no upper end) gives inf
+    except by its lower end."""
+    table = check_stage_thickness(rule)
+    base = "mid" if isinstance(table, dict) else table
     codes = np.asarray(getattr(stage, "values", stage), dtype=float)
     h = np.full(codes.shape, np.nan)
     for code, (_, (lo, hi)) in STAGE_CODES.items():
-        h[codes == code] = hi if rule == "upper" else 0.5 * (lo + hi)
+        h[codes == code] = {"upper": hi, "lower": lo, "mid": 0.5 * (lo + hi)}[base]
+    for code, metres in table.items() if isinstance(table, dict) else ():
+        h[codes == code] = metres
     return h
+
+
+def check_stage_thickness(rule):
+    """The rule of stage_thickness, checked: "lower", "mid", "upper" or {WMO stage: metres}."""
+    if isinstance(rule, str) and rule in STAGE_THICKNESS_RULES:
+        return rule
+    if isinstance(rule, dict) and rule:
+        out = {}
+        for code, metres in rule.items():
+            try:
+                c, m = float(code), float(metres)
+            except (TypeError, ValueError):
+                c, m = float("nan"), float("nan")
+            if c not in STAGE_CODES or not (0 <= m <= 10):
+                raise ValueError(
+                    f"stage thickness {code!r}: {metres!r} is not a WMO stage code and a thickness in m "
+                    "(0-10), e.g. {93: 1.5}"
+                )
+            out[c] = m
+        return out
+    raise ValueError(
+        f"stage_thickness must be one of {', '.join(STAGE_THICKNESS_RULES)} or a table "
+        f"{{WMO stage: metres}}, e.g. {{93: 1.5}}; got {rule!r}"
+    )
+
+
+def stage_thickness_words(stage, rule=DEFAULT_STAGE_THICKNESS) -> str:
+    """Which thickness each stage found in `stage` takes under `rule`, and why, in words."""
+    codes = np.asarray(getattr(stage, "values", stage), dtype=float)
+    present = [c for c in sorted(STAGE_CODES) if c not in (55, 99) and np.any(codes == c)]
+    h = stage_thickness(np.array(present, float), rule)
+    table = check_stage_thickness(rule)
+    how = (
+        "as given, the middle of the WMO range for the others"
+        if isinstance(table, dict)
+        else {"mid": "the middle", "upper": "the upper end", "lower": "the lower end"}[table]
+        + " of its WMO range"
+    )
+    each = ", ".join(f"{STAGE_CODES[c][0]} {v:.2f} m" for c, v in zip(present, h) if np.isfinite(v))
+    return (
+        f"thickness from the stage of development, {how} (WMO-No. 259): {each or 'no stage with a thickness'}"
+    )
 
 
 def f3(lane_width, fairway_width):

@@ -24,7 +24,7 @@ from ..chart.raster import Chart, as_chart
 from . import andreeva
 from .forms import check_fast_ice
 from .seasonfast import record_rule, season_layers
-from .seasonspeed import frame_speed_kn
+from .seasonspeed import frame_speed_kn, is_curve
 from .sigrid import read_sigrid3
 
 if TYPE_CHECKING:
@@ -175,9 +175,13 @@ class SeasonGrid:
         dep, k0 = self.departure_frames(departure)
         if not (
             callable(getattr(speed, "get", None))
+            or is_curve(speed)
             or (isinstance(speed, str) and speed in ("andreeva", "class"))
         ):
-            raise ValueError(f"speed must be 'andreeva', 'class' or a table {{stage: knots}}, got {speed!r}")
+            raise ValueError(
+                f"speed must be 'andreeva', 'class', a ship's ice curve (seaway.vessel.IceCurve) or a "
+                f"table {{stage: knots}}, got {speed!r}"
+            )
         hours = np.empty((self.times.size - k0,) + self.shape, np.float32)
         for i, k in enumerate(range(k0, self.times.size)):  # frame by frame: no 7-frame float64 copies
             v = frame_speed_kn(self.ds.isel(time=k), ice_class, v0_kn, speed, **speed_options)

@@ -33,7 +33,7 @@ def andreeva_speed_kn(
     v0_kn,
     *,
     h_pass_m=None,
-    stage_thickness="upper",
+    stage_thickness=andreeva.DEFAULT_STAGE_THICKNESS,
     other_factor=1.0,
     concentration_limit=True,
     fast_ice=None,
@@ -47,8 +47,6 @@ def andreeva_speed_kn(
     if "thickness" in frame:
         h = np.asarray(frame["thickness"].values, dtype=float)
     else:
-        if stage_thickness not in ("upper", "mid"):
-            raise ValueError(f"stage_thickness must be 'upper' or 'mid', got {stage_thickness!r}")
         h = andreeva.stage_thickness(
             governing_stage(frame, fast_ice=season_rule(frame, fast_ice)), stage_thickness
         )
@@ -104,9 +102,29 @@ def class_speed_kn(
     return np.where(_closed(frame, np.asarray(frame["CT"].values, float), ice_class, False), 0.0, v)
 
 
+def curve_speed_kn(
+    frame, ice_class, v0_kn, curve, *, concentration_limit=False, fast_ice=None, **options
+) -> np.ndarray:
+    """A ship's own ice curve on one chart (knots; 0 where closed): seaway.ice.speed with the
+    curve (the concentration acts through the equivalent thickness; the class's concentration
+    limit only when asked)."""
+    rule = season_rule(frame, fast_ice)
+    v = np.asarray(ice_speed(frame, ice_class, v0_kn, curve=curve, fast_ice=rule, **options).values, float)
+    ct = np.asarray(frame["CT"].values, float)
+    return np.where(_closed(frame, ct, ice_class, concentration_limit), 0.0, v)
+
+
+def is_curve(speed) -> bool:
+    """Is a season's speed model a ship's ice curve (an object with speed() and describe())?"""
+    return callable(getattr(speed, "speed", None)) and callable(getattr(speed, "describe", None))
+
+
 def frame_speed_kn(frame, ice_class, v0_kn, speed, **options) -> np.ndarray:
     """The speed (knots; 0 where closed) on one chart by the season's speed model: speed
-    'class' (class_speed_kn), 'andreeva' (andreeva_speed_kn) or a table (table_speed_kn)."""
+    'class' (class_speed_kn), 'andreeva' (andreeva_speed_kn), a ship's ice curve
+    (curve_speed_kn) or a table (table_speed_kn)."""
+    if is_curve(speed):
+        return curve_speed_kn(frame, ice_class, v0_kn, speed, **options)
     if speed == "class":
         return class_speed_kn(frame, ice_class, v0_kn, **options)
     if isinstance(speed, str):

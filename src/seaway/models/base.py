@@ -130,17 +130,21 @@ class CostModel:
 
 
 class EdgeCost(CostModel):
-    """A static cost per unit length read from the chart's raster, priced per step by `rule`."""
+    """A static cost per unit length read from the chart's raster, priced per step by `rule`.
+    `unit`: the unit of a route's cost on a geographic chart when the raster's cost per km has
+    one (e.g. "h" for hours per km: the quickest route); default "cost x km"."""
 
     static = symmetric = turn_penalty = smoothable = True
 
-    def __init__(self, rule: str = "max") -> None:
+    def __init__(self, rule: str = "max", unit: str | None = None) -> None:
         if rule not in EDGE_COSTS:
             raise ValueError(f"edge_cost must be one of {tuple(EDGE_COSTS)}, got {rule!r}")
-        self.name = rule
+        self.name, self._unit = rule, unit
 
     def unit(self, geographic: bool) -> str:
         length = "km" if geographic else "grid unit"
+        if self._unit is not None and geographic:
+            return self._unit
         return length if self.name == "length" else f"cost x {length}"  # length: r alone
 
     def engine(self, prepared: Prepared) -> _core.StaticModel:

@@ -34,6 +34,8 @@ class Leg:
     #: Leaves the first waypoint, reaches the last (on a clock: seaway.result.schedule) or None.
     depart: np.datetime64 | None = None
     arrive: np.datetime64 | None = None
+    #: Distance (km) of the leg under icebreaker escort (seaway.result.timing), 0 when none.
+    escorted_km: float = 0.0
 
 
 def route_legs(route, speed_kn: float | None = None) -> list[Leg]:
@@ -47,7 +49,7 @@ def route_legs(route, speed_kn: float | None = None) -> list[Leg]:
                 f"the route's speeds in ice are for {ice.v0_kn:g} kn in open water, "
                 f"not {speed:g} kn; make them again with with_ice_speed"
             )
-        speed, hours_of = ice.v0_kn, step_times(route)[0]
+        speed, (hours_of, _, escort_of) = ice.v0_kn, step_times(route)
     timed = schedule(route)  # a route on a clock: its real times, not those at one speed
     wi, c = route.waypoint_index, route.coords
     steps, costs = route.leg_lengths, route.costs()
@@ -80,7 +82,8 @@ def route_legs(route, speed_kn: float | None = None) -> list[Leg]:
                 hours,
                 float(costs[i:j].sum()),
                 along(route, i, j),
-                *((timed.etd(i), timed.eta(j)) if timed is not None else ()),
+                *((timed.etd(i), timed.eta(j)) if timed is not None else (None, None)),
+                float(escort_of[i:j].sum()) if ice is not None else 0.0,
             )
         )
     return out

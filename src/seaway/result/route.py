@@ -60,6 +60,9 @@ class Route:
     notes: tuple = field(default=(), repr=False)
     #: The speed in the ice its times come from (with_ice_speed; seaway.result.timing).
     ice_speed: SpeedField | None = field(default=None, repr=False)
+    #: When a route timed by a speed leaves its start (its schedule: seaway.result.schedule);
+    #: a route on a clock has its own (stats.voyage).
+    departure: np.datetime64 | None = field(default=None, repr=False)
 
     @property
     def assumptions(self) -> tuple:
@@ -170,12 +173,13 @@ class Route:
                 pts.append(a + np.linspace(0, 1, m + 1)[1:, None] * (b - a))
         return np.rint(np.concatenate(pts)).astype(np.int64)
 
-    def with_ice_speed(self, knots, model=None) -> Route:
+    def with_ice_speed(self, knots, model=None, escorted=None) -> Route:
         """A copy whose times come from `knots`, the speed on the chart's grid (a DataArray from
         seaway.ice.speed.ice_speed, whose attributes give the model and the open-water speed,
         or an array with `model`): each leg's time is its length over the speed along it, its
-        speed the mean; speed_kn becomes the open-water speed."""
-        field = SpeedField.on(self.chart, knots, model)
+        speed the mean; speed_kn becomes the open-water speed. escorted: where the speed is an
+        icebreaker escort's (each leg reports its km under escort)."""
+        field = SpeedField.on(self.chart, knots, model, escorted)
         return dataclasses.replace(self, ice_speed=field, speed_kn=field.v0_kn)
 
     def with_environment(self, data, names=None) -> Route:

@@ -9,6 +9,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..base.units import KM_PER_NM
+from .timing import step_times
+
 
 @dataclass(frozen=True)
 class Schedule:
@@ -48,16 +51,31 @@ class Schedule:
 
 
 def schedule(route) -> Schedule | None:
-    """The route's Schedule from its Voyage (seaway.models.results), or None for a route that
-    is not on a clock."""
+    """The route's Schedule from its Voyage (seaway.models.results); for a route timed by a speed
+    (in the ice, or one speed) with a departure, from its step times; None for a route that is
+    not on a clock."""
     voyage = route.stats.voyage
     if voyage is None:
-        return None
+        return _static(route)
     steps = np.asarray(route.costs() if voyage.step_h is None else voyage.step_h, dtype=float)
     arrive = np.concatenate([[0.0], np.cumsum(steps)])
     wait = np.zeros(steps.size) if voyage.wait_h is None else np.asarray(voyage.wait_h, float)
     leave = np.concatenate([arrive[:-1] + wait, arrive[-1:]])
     return Schedule(arrive, leave, voyage.departure, voyage.forecast)
+
+
+def _static(route) -> Schedule | None:
+    """The Schedule of a route timed by a speed, given a departure (Route.departure)."""
+    if route.departure is None or not route.geographic:
+        return None
+    if route.ice_speed is not None:
+        steps = np.asarray(step_times(route)[0], float)
+    elif route.speed_kn:
+        steps = np.asarray(route.leg_lengths, float) / (float(route.speed_kn) * KM_PER_NM)
+    else:
+        return None
+    arrive = np.concatenate([[0.0], np.cumsum(steps)])
+    return Schedule(arrive, arrive.copy(), np.datetime64(route.departure, "s"), None)
 
 
 def dated_schedule(route) -> Schedule | None:

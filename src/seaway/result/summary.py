@@ -6,7 +6,7 @@ import numpy as np
 
 from ..base import sphere as geo
 from .environment import CATEGORICAL, LEAST, least_depth, summarise, values_at
-from .schedule import voyage_summary
+from .schedule import iso, schedule, voyage_summary
 from .timing import step_times
 
 
@@ -41,13 +41,20 @@ def route_summary(route, speed_kn=None) -> dict:
                 time_h=float(sum(leg.time_h for leg in legs)),
                 speed_model=route.ice_speed.model,
             )
-            stopped = float(step_times(route)[1].sum())
+            _, stopped, escorted = (float(x.sum()) for x in step_times(route))
             if stopped > 0:
                 out["stopped_km"] = stopped
+            if escorted > 0:
+                out["escorted_km"] = escorted
+                out["escorted_legs"] = [leg.number for leg in legs if leg.escorted_km > 0]
         elif speed:
             out.update(speed_kn=float(speed), time_h=length_nm / speed)
     if route.stats.voyage is not None:  # a route on a clock: its real time, not one speed's
         out.update(voyage_summary(route))
+    elif route.departure is not None and np.isfinite(out.get("time_h", np.nan)):  # timed by a speed
+        timed = schedule(route)
+        if timed is not None:
+            out.update(departure=iso(timed.eta(0)), arrival=iso(timed.eta(len(route.vertices) - 1)))
     for name, arr in route.environment.items():
         if name in CATEGORICAL:  # the governing / most frequent category of the whole route
             cat = summarise(name, values_at(arr, route.sample_pixels()))

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from .environment import CATEGORICAL, STAGES, Category, extreme_name
-from .schedule import short
+from .schedule import dated_schedule, short
 
 
 def fmt_lat(v: float) -> str:
@@ -52,11 +52,21 @@ def route_table(route) -> str:
     elif "speed_model" in s:  # times from the speed in the ice
         t = fmt_hours(s["time_h"]) if np.isfinite(s["time_h"]) else "none"
         lines.append(f"time: {t} ({s['speed_kn']:g} kn in open water; in ice {s['speed_model']})")
+        if "departure" in s:
+            lines.append(f"departure {s['departure']}, arrival {s['arrival']}")
+        if s.get("escorted_km"):
+            lines.append(
+                f"under icebreaker escort: {s['escorted_km']:.1f} km ({s['escorted_km'] / 1.852:.1f} nm) on "
+                f"leg{'s' if len(s['escorted_legs']) > 1 else ''} {', '.join(map(str, s['escorted_legs']))}"
+            )
         if s.get("stopped_km"):
             lines.append(
                 f"no time: the model gives no speed on {s['stopped_km']:.1f} km of the route "
                 "(ice as thick as the class passes, or closed to it): an icebreaker's escort"
             )
+    elif "time_h" in s and "departure" in s:
+        lines[-1] += f"; {fmt_hours(s['time_h'])} at {s['speed_kn']:g} kn"
+        lines.append(f"departure {s['departure']}, arrival {s['arrival']}")
     elif "time_h" in s:
         lines[-1] += f"; {fmt_hours(s['time_h'])} at {s['speed_kn']:g} kn"
     if "requested_start" in s:
@@ -69,7 +79,7 @@ def route_table(route) -> str:
     env = list(route.environment)
     # One time: a route on a clock shows its real hours (its cost, when in hours, is the same
     # figure and is left out), the speed made good under way and the arrival at each waypoint.
-    dated = timed and route.stats.voyage.departure is not None
+    dated = dated_schedule(route) is not None
     cost_col = "" if timed and route.unit == "h" else "cost"
     cols = [
         "leg",
@@ -81,6 +91,7 @@ def route_table(route) -> str:
         "kn",
         "hours",
         "ETA (UTC)" if dated else "",
+        "escort km" if any(leg.escorted_km for leg in legs) else "",
         cost_col,
     ]
     cols += [
@@ -103,6 +114,7 @@ def route_table(route) -> str:
             (f"{leg.speed_kn:.1f}" if timed else f"{leg.speed_kn:.3g}") if leg.speed_kn is not None else "-",
             f"{leg.time_h:.1f}" if leg.time_h is not None else "-",
             short(leg.arrive) if dated else "",
+            f"{leg.escorted_km:.1f}" if leg.escorted_km else "",
             f"{leg.cost:.5g}" if cost_col else "",
         ]
         for n in env:

@@ -17,16 +17,19 @@ from .environment import weighted_samples
 @dataclass(frozen=True)
 class SpeedField:
     """knots: (rows, cols) speed on the route's chart, 0 where the model gives none; model: its
-    name and terms, as the outputs print it; v0_kn: the open-water speed it was made for."""
+    name and terms, as the outputs print it; v0_kn: the open-water speed it was made for;
+    escorted: (rows, cols) True where the speed is an icebreaker escort's (None: nowhere)."""
 
     knots: np.ndarray
     model: str
     v0_kn: float
+    escorted: np.ndarray | None = None
 
     @classmethod
-    def on(cls, chart, knots, model=None) -> SpeedField:
+    def on(cls, chart, knots, model=None, escorted=None) -> SpeedField:
         """The speed `knots` on `chart`'s grid: a DataArray from seaway.ice.speed.ice_speed
-        (its attributes give the model and the open-water speed) or an array with `model`."""
+        (its attributes give the model and the open-water speed) or an array with `model`;
+        `escorted`: where that speed is under escort."""
         arr, template = knots, chart.template
         if template is not None and hasattr(arr, "dims") and set(arr.dims) == set(template.dims):
             arr = arr.transpose(*template.dims)
@@ -35,23 +38,32 @@ class SpeedField:
             raise ValueError(f"the speed has shape {values.shape}, the chart {chart.shape}")
         attrs = getattr(knots, "attrs", {})
         v0 = float(attrs.get("v0_kn", np.nanmax(values)))
-        return cls(values, model or str(attrs.get("model", "speed field")), v0)
+        if escorted is not None:
+            escorted = np.asarray(getattr(escorted, "values", escorted), bool)
+            if escorted.shape != chart.shape:
+                raise ValueError(f"the escort mask has shape {escorted.shape}, the chart {chart.shape}")
+        return cls(values, model or str(attrs.get("model", "speed field")), v0, escorted)
 
 
 def step_times(route):
-    """(hours, stopped km) of each step between the route's vertices under route.ice_speed."""
+    """(hours, stopped km, escorted km) of each step between the route's vertices under
+    route.ice_speed: the speed at each sample's pixel; stopped where it is 0 (hours inf)."""
     cached = route.__dict__.get("_step_times")
     if cached is not None:
         return cached
     px, km, step = weighted_samples(route)
     knots = route.ice_speed.knots
-    v = knots[np.clip(px[:, 0], 0, knots.shape[0] - 1), px[:, 1] % knots.shape[1]]
+    rc = (np.clip(px[:, 0], 0, knots.shape[0] - 1), px[:, 1] % knots.shape[1])
+    v = knots[rc]
+    escort = route.ice_speed.escorted
+    under = escort[rc] if escort is not None else np.zeros(v.shape, bool)
     with np.errstate(divide="ignore"):
         hours = np.where(v > 0, km / (np.where(v > 0, v, 1.0) * KM_PER_NM), np.inf)
     n = max(len(route.vertices) - 1, 0)
     out = (
         np.bincount(step, weights=hours, minlength=n)[:n],
         np.bincount(step, weights=np.where(v > 0, 0.0, km), minlength=n)[:n],
+        np.bincount(step, weights=np.where(under, km, 0.0), minlength=n)[:n],
     )
     route.__dict__["_step_times"] = out
     return out

@@ -1,10 +1,14 @@
-"""The ship a route is planned for: the weather models' Vessel (speed, speed-loss formula and
-weather limits; seaway.vessel.ship) and vessel files (seaway.vessel.profile: load)."""
+"""The ship a voyage is planned for (seaway.vessel.ship): one Vessel, with its ice class, service
+speed, draft, ice curve, weather limits and fuel curve, drives every kind of route; vessel files
+(TOML or JSON, seaway.vessel.profile: the format and its fields) are read by load()."""
 
 from __future__ import annotations
 
 from ..errors import VesselFileError as VesselFileError  # importable here too
-from .profile import EXAMPLES, Profile, load
-from .ship import SPEED_LOSSES, Vessel
+from .profile import EXAMPLES, load
+from .ship import SPEED_LOSSES, IceCurve, Vessel
 
-__all__ = ["EXAMPLES", "SPEED_LOSSES", "Profile", "Vessel", "load"]  # VesselFileError: seaway.errors
+#: What load() returned before a vessel file and a Vessel were one (the same class now).
+Profile = Vessel
+
+__all__ = ["EXAMPLES", "SPEED_LOSSES", "IceCurve", "Vessel", "load"]

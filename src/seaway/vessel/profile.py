@@ -18,6 +18,10 @@ One table of fields (FIELDS); `name` and `service_speed_kn` are required, the re
     danger_wind_ms = 11.0             # danger zones: avoided while forecast (Sotnikova 2009)
     danger_wave_m = 4.0
 
+    [ice_curve]                       # speed in level ice against its thickness (ice trials)
+    thickness_m = [0.0, 1.0, 1.5, 2.1]
+    speed_kn = [19.5, 9.0, 5.5, 2.0]
+
     [fuel]                            # fuel rate by engine setting: a table ...
     speeds_kn = [8.0, 10.0, 12.0, 13.5]
     rates_t_per_h = [0.35, 0.6, 1.0, 1.45]
@@ -26,7 +30,8 @@ One table of fields (FIELDS); `name` and `service_speed_kn` are required, the re
     [sources]                         # where each value comes from, or "assumption: ..."
     draft_m = "..."
 
-A wrong file is refused naming the file, the field and the fix. The examples shipped with the
+Every number has a plausible range (RANGES, with the record it is drawn from); a wrong file is
+refused naming the file, the field and the fix. The examples shipped with the
 package (EXAMPLES; `load(name)` reads them) give a source or an assumption for every value."""
 
 from __future__ import annotations
@@ -36,13 +41,12 @@ import json
 import math
 import os
 import sys
-from dataclasses import dataclass, field
 from importlib import resources
 from typing import Any, NoReturn
 
-from ..errors import VesselFileError
+from ..errors import SeawayError, VesselFileError
 from ..ice.classes import get_class
-from .ship import SPEED_LOSSES, Vessel
+from .ship import SPEED_LOSSES, IceCurve, Vessel
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -67,6 +71,12 @@ FIELDS = {
     "max_wave_m": ("positive", "the significant wave height it never sails in, m", "5.0"),
     "danger_wind_ms": ("positive", "wind of the danger zones it avoids while forecast, m/s", "11.0"),
     "danger_wave_m": ("positive", "waves of the danger zones it avoids while forecast, m", "4.0"),
+    "ice_curve": (
+        "ice_curve",
+        "the speed in level ice against its thickness (ice trials or model tests): thickness_m and "
+        "speed_kn, two lists",
+        "{thickness_m = [0.0, 1.5, 2.1], speed_kn = [19.5, 5.5, 2.0]}",
+    ),
     "fuel": (
         "fuel",
         "the fuel curve: a table speeds_kn / rates_t_per_h, or reference_speed_kn "
@@ -84,34 +94,27 @@ REQUIRED = ("name", "service_speed_kn")
 EXAMPLES = ("arc7-lng-carrier", "pc6-general-cargo", "sotnikova-container-ship")
 
 
-@dataclass(frozen=True)
-class Profile:
-    """A ship read from a vessel file: what the routes need of it (`vessel` for the weather
-    models, `ice_class`, `draft_m` and `ukc_m` for the ice and the depth) and where each value
-    comes from (`sources`)."""
-
-    name: str
-    vessel: Vessel
-    ice_class: str | None = None
-    draft_m: float | None = None
-    ukc_m: float | None = None
-    speed_range_kn: tuple[float, float] | None = None
-    #: The fuel curve: rate (t/h) at each engine setting (kn); empty when the file gives none.
-    fuel_speeds_kn: tuple[float, ...] = ()
-    fuel_rates_t_per_h: tuple[float, ...] = ()
-    sources: dict[str, str] = field(default_factory=dict)
-    #: The file it was read from.
-    path: str = ""
-
-    @property
-    def assumed(self) -> tuple[str, ...]:
-        """The fields whose source says they are assumptions."""
-        return tuple(k for k, v in self.sources.items() if str(v).lower().startswith("assumption"))
-
-    def describe(self) -> str:
-        """One line for the outputs: name, class, speed and where it was read from."""
-        cls = f", {self.ice_class}" if self.ice_class else ""
-        return f"{self.name}{cls}, {self.vessel.speed_kn:g} kn (vessel file {self.path})"
+#: The plausible range of each number (min, max) and what it is drawn from: a value outside is a
+#: typing error (a beam of 1e30 m), refused naming the range.
+RANGES = {
+    "draft_m": (0.3, 30.0, "the deepest-draught ship built, Seawise Giant, drew 24.6 m"),
+    "ukc_m": (0.0, 10.0, "under-keel clearance is a fraction of the draft (assumption: at most 10 m)"),
+    "service_speed_kn": (1.0, 45.0, "fast ferries make about 40 kn; merchant ships 10-25 kn"),
+    "displacement_t": (10.0, 700000.0, "Seawise Giant, the largest ship built, displaced 657 019 t"),
+    "length_m": (5.0, 500.0, "Seawise Giant, the longest ship built, was 458.5 m long"),
+    "beam_m": (1.0, 80.0, "the widest ship afloat, the Prelude FLNG, is 74 m wide"),
+    "calm_resistance_kn": (
+        1.0,
+        20000.0,
+        "an Arc7 LNG carrier needs about 3000 kN at 19.5 kn (assumption: 20 000 kN)",
+    ),
+    "max_wind_ms": (1.0, 80.0, "the strongest sustained winds measured at sea are about 80 m/s"),
+    "max_wave_m": (0.5, 30.0, "the highest significant waves measured are about 20 m"),
+    "danger_wind_ms": (1.0, 80.0, "as max_wind_ms"),
+    "danger_wave_m": (0.5, 30.0, "as max_wave_m"),
+    "speed_range_kn": (0.5, 45.0, "as service_speed_kn"),
+    "fuel": (0.0, 50.0, "the largest container ships burn about 10 t/h (250 t a day): rates up to 50 t/h"),
+}
 
 
 def _fail(path: str, key: str, message: str) -> NoReturn:
@@ -123,6 +126,10 @@ def _number(path: str, key: str, value: Any, minimum: float = 0.0, strict: bool 
     ok = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
     if not ok or value < minimum or (strict and value == minimum):
         _fail(path, key, f"must be a {'positive' if strict else 'non-negative'} number, got {value!r}")
+    if key in RANGES:
+        lo, hi, why = RANGES[key]
+        if not lo <= value <= hi:
+            _fail(path, key, f"must be between {lo:g} and {hi:g} ({why}), got {value!r}")
     return float(value)
 
 
@@ -159,6 +166,8 @@ def _check(path: str, data: dict[str, Any]) -> dict[str, Any]:
             _fail(path, key, f"must be one of {', '.join(SPEED_LOSSES)}, got {value!r}")
         elif kind == "fuel":
             value = _fuel(path, value, data)
+        elif kind == "ice_curve":
+            value = _ice_curve(path, value, data)
         elif kind == "sources":
             if not isinstance(value, dict) or any(k not in FIELDS for k in value):
                 bad = [k for k in value if k not in FIELDS] if isinstance(value, dict) else value
@@ -168,6 +177,22 @@ def _check(path: str, data: dict[str, Any]) -> dict[str, Any]:
         if key not in out:
             _fail(path, key, "is missing")
     return out
+
+
+def _ice_curve(path: str, value: Any, data: dict[str, Any]) -> IceCurve:
+    if not (isinstance(value, dict) and set(value) == {"thickness_m", "speed_kn"}):
+        _fail(path, "ice_curve", f"must be a table of thickness_m and speed_kn, got {value!r}")
+    h, v = value["thickness_m"], value["speed_kn"]
+    if not (isinstance(h, list) and isinstance(v, list)):
+        _fail(path, "ice_curve", "needs thickness_m and speed_kn, two lists of one length")
+    numbers = [_number(path, "ice_curve", x, strict=False) for x in h + v]
+    source = (
+        str(data.get("sources", {}).get("ice_curve", "")) if isinstance(data.get("sources"), dict) else ""
+    )
+    try:
+        return IceCurve(tuple(numbers[: len(h)]), tuple(numbers[len(h) :]), source)
+    except SeawayError as exc:
+        _fail(path, "ice_curve", f"is not a usable curve ({exc})")
 
 
 def _fuel(path: str, value: Any, data: dict[str, Any]) -> tuple[tuple[float, ...], tuple[float, ...]]:
@@ -223,9 +248,9 @@ def example_path(name: str) -> str:
     return str(resources.files("seaway.vessel") / "examples" / f"{name}.toml")
 
 
-def load(path: str | os.PathLike[str]) -> Profile:
-    """A vessel file (TOML, or JSON by its .json extension) as a Profile, every field checked;
-    a name of EXAMPLES reads the shipped example. VesselFileError names the field and the fix."""
+def load(path: str | os.PathLike[str]) -> Vessel:
+    """A vessel file (TOML, or JSON by its .json extension) as a Vessel, every field checked; a
+    name of EXAMPLES reads the shipped example. VesselFileError names the field and the fix."""
     path = os.fspath(path)
     shown = path
     if not os.path.exists(path) and path in EXAMPLES:
@@ -235,42 +260,34 @@ def load(path: str | os.PathLike[str]) -> Profile:
             f"vessel file {path}: no such file (the examples shipped with seaway: {', '.join(EXAMPLES)})"
         )
     d = _check(path, _read(path))
-    limits = {
-        k: d[k]
-        for k in (
-            "max_wind_ms",
-            "max_wave_m",
-            "danger_wind_ms",
-            "danger_wave_m",
-            "beam_m",
-            "length_m",
-            "calm_resistance_kn",
-            "displacement_t",
-            "speed_loss",
-            "outside_validity",
-        )
-        if k in d
-    }
-    vessel = Vessel(speed_kn=d["service_speed_kn"], **limits)
-    if vessel.speed_loss == "stawave1" and not all(
+    same = (
+        "max_wind_ms",
+        "max_wave_m",
+        "danger_wind_ms",
+        "danger_wave_m",
+        "beam_m",
+        "length_m",
+        "calm_resistance_kn",
+        "displacement_t",
+        "speed_loss",
+        "outside_validity",
+        "name",
+        "ice_class",
+        "draft_m",
+        "ukc_m",
+        "speed_range_kn",
+        "ice_curve",
+    )
+    if d.get("speed_loss") == "stawave1" and not all(
         k in d for k in ("beam_m", "length_m", "calm_resistance_kn")
     ):
         _fail(path, "speed_loss", "= 'stawave1' needs beam_m, length_m and calm_resistance_kn")
     speeds, rates = d.get("fuel", ((), ()))
-    return Profile(
-        d["name"],
-        vessel,
-        d.get("ice_class"),
-        d.get("draft_m"),
-        d.get("ukc_m"),
-        d.get("speed_range_kn"),
-        speeds,
-        rates,
-        dict(d.get("sources", {})),
-        shown,
+    return Vessel(
+        speed_kn=d["service_speed_kn"],
+        fuel_speeds_kn=speeds,
+        fuel_rates_t_per_h=rates,
+        sources=dict(d.get("sources", {})),
+        path=shown,
+        **{k: d[k] for k in same if k in d},
     )
-
-
-#: Documented here: the file format (the module docstring) and its fields; Profile and load are
-#: seaway.vessel's.
-__all__ = ["FIELDS", "REQUIRED", "EXAMPLES", "example_path"]

@@ -1,23 +1,84 @@
-"""The ship a weather route is planned for: speed, speed-loss formula and weather limits
-(seaway.vessel re-exports it)."""
+"""The ship a voyage is planned for: one Vessel drives every kind of route (an ice chart, a season
+of charts, a forecast, ice and weather together). It carries the ice class, the service speed,
+draft and under-keel clearance, the speed in level ice against its thickness (IceCurve), the
+speed-loss formula and weather limits, and the fuel curve; a vessel file (seaway.vessel.load)
+gives each value its source. seaway.vessel re-exports both."""
 
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from ..base.validate import number
+from ..errors import SeawayError
 
 #: The speed-loss formulas of the engine (cpp/seaway/weather.hpp).
 SPEED_LOSSES: tuple[str, ...] = tuple(_core.SpeedLoss.__members__)
 
 
 @dataclass(frozen=True)
+class IceCurve:
+    """A ship's speed in level ice against the ice's thickness (an h-v curve, as ice model tests
+    and ice trials give it): `thickness_m` increasing from 0, `speed_kn` at each; linear between
+    the points, no speed of its own in thicker ice than the last point (an icebreaker's escort).
+    `source`: where the points come from."""
+
+    thickness_m: tuple[float, ...]
+    speed_kn: tuple[float, ...]
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        h, v = np.asarray(self.thickness_m, float), np.asarray(self.speed_kn, float)
+        if h.ndim != 1 or h.shape != v.shape or h.size < 2:
+            raise SeawayError(
+                "an ice curve needs thickness_m and speed_kn, two lists of one length (at least 2 points), "
+                "e.g. thickness_m = [0.0, 1.0, 1.5], speed_kn = [14.0, 8.0, 4.0]"
+            )
+        if not (np.all(np.isfinite(h)) and np.all(np.isfinite(v)) and h[0] >= 0 and np.all(np.diff(h) > 0)):
+            raise SeawayError(f"an ice curve's thickness_m must increase from 0 m, got {list(h)}")
+        if np.any(v < 0) or np.any(np.diff(v) > 0):
+            raise SeawayError(f"an ice curve's speed_kn must not grow with the thickness, got {list(v)}")
+        if h[-1] > 10 or v[0] > 60:
+            raise SeawayError(
+                f"an ice curve of {h[-1]:g} m and {v[0]:g} kn is not a ship's: level ice is at most a few "
+                "metres thick (WMO-No. 259), ships make at most about 40 kn"
+            )
+
+    def speed(self, thickness_m: npt.ArrayLike, v0_kn: float) -> npt.NDArray[np.float64]:
+        """The speed (kn) in level ice of `thickness_m` (m), at most `v0_kn` (the open-water speed
+        the voyage asks for); 0 beyond the curve's last point."""
+        h = np.asarray(thickness_m, float)
+        pts_h = np.asarray(self.thickness_m, float)
+        pts_v = np.asarray(self.speed_kn, float)
+        if pts_h[0] > 0:  # from open water (0 m, V0) to the first point
+            pts_h, pts_v = np.r_[0.0, pts_h], np.r_[max(v0_kn, pts_v[0]), pts_v]
+        v = np.interp(np.nan_to_num(h, nan=np.inf), pts_h, pts_v, right=0.0)
+        v = np.where(h > pts_h[-1], 0.0, v)
+        return np.minimum(v, float(v0_kn))
+
+    def describe(self) -> str:
+        pts = ", ".join(f"{h:g} m {v:g} kn" for h, v in zip(self.thickness_m, self.speed_kn))
+        return f"the ship's ice curve ({pts}{'; ' + self.source if self.source else ''})"
+
+
+@dataclass(frozen=True)
 class Vessel:
-    """A ship for weather routing. Speeds in knots, displacement in tonnes, limits in SI."""
+    """A ship. Speeds in knots, displacement in tonnes, lengths in metres, limits in SI.
+
+    speed_kn: the calm-water service speed (V0 in ice, the weather routes' speed).
+    ice_class: the class (seaway.ice.classes: Arc4 ... Arc9, PC1 ... PC7, IA Super, ...) or None.
+    draft_m, ukc_m: draft and under-keel clearance (ukc None: 10 % of the draft).
+    ice_curve: the speed in level ice (IceCurve), or None for the class's default model
+        (Andreeva 2021 for Register classes, the IMO POLARIS limits for Polar Classes).
+    speed_loss, displacement_t, beam_m, length_m, calm_resistance_kn: speed lost in waves
+        (Khokhlov, STAWAVE-1); max_wind_ms, max_wave_m: never crossed; danger_*: avoided.
+    fuel_speeds_kn, fuel_rates_t_per_h: the fuel curve (t/h at each engine setting).
+    name, sources, path: what the ship is, where each value comes from, the file it was read from."""
 
     speed_kn: float = 15.0
     displacement_t: float = 15000.0
@@ -33,12 +94,47 @@ class Vessel:
     beam_m: float | None = None  # waterline breadth
     length_m: float | None = None  # waterline length
     calm_resistance_kn: float | None = None  # calm-water resistance at speed_kn, kN
+    name: str = ""
+    ice_class: str | None = None
+    draft_m: float | None = None
+    ukc_m: float | None = None
+    speed_range_kn: tuple[float, float] | None = None
+    ice_curve: IceCurve | None = None
+    fuel_speeds_kn: tuple[float, ...] = ()
+    fuel_rates_t_per_h: tuple[float, ...] = ()
+    sources: dict[str, str] = field(default_factory=dict, compare=False)
+    path: str = ""
+
+    @classmethod
+    def of_class(cls, ice_class: str, speed_kn: float = 12.0, **fields: Any) -> Vessel:
+        """A ship known only by its ice class (``--vessel CLASS``), at `speed_kn` in open water."""
+        return cls(speed_kn=speed_kn, ice_class=ice_class, name=f"{ice_class} ship", **fields)
+
+    def with_speed(self, speed_kn: float | None) -> Vessel:
+        """The same ship at another service speed (None: as it is)."""
+        return self if speed_kn is None else replace(self, speed_kn=float(speed_kn))
+
+    @property
+    def vessel(self) -> Vessel:
+        """The ship itself (what a vessel file's profile called its weather vessel)."""
+        return self
+
+    @property
+    def assumed(self) -> tuple[str, ...]:
+        """The fields whose source says they are assumptions."""
+        return tuple(k for k, v in self.sources.items() if str(v).lower().startswith("assumption"))
+
+    def describe(self) -> str:
+        """One line for the outputs: name, class, speed and where it was read from."""
+        cls = f", {self.ice_class}" if self.ice_class else ""
+        where = f" (vessel file {self.path})" if self.path else ""
+        return f"{self.name or 'ship'}{cls}, {self.speed_kn:g} kn{where}"
 
     def _outside(self, msg: str) -> None:
         if self.outside_validity == "warn":
             warnings.warn(msg, stacklevel=4)
         else:
-            raise ValueError(
+            raise SeawayError(
                 msg + "; pass outside_validity='warn' to go on (in a vessel file: "
                 'outside_validity = "warn"), or another speed_loss'
             )
@@ -64,11 +160,11 @@ class Vessel:
             if getattr(self, name) is not None:
                 number(getattr(self, name), name, above=0)
         if self.speed_loss not in SPEED_LOSSES:
-            raise ValueError(f"speed_loss must be one of {SPEED_LOSSES}, got {self.speed_loss!r}")
+            raise SeawayError(f"speed_loss must be one of {SPEED_LOSSES}, got {self.speed_loss!r}")
         if self.speed_loss == "stawave1":
             sizes = (self.beam_m, self.length_m, self.calm_resistance_kn)
             if not all(v is not None and np.isfinite(v) and v > 0 for v in sizes):
-                raise ValueError(
+                raise SeawayError(
                     "speed_loss='stawave1' needs positive beam_m, length_m and "
                     "calm_resistance_kn (kN at speed_kn)"
                 )

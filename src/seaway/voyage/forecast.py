@@ -17,7 +17,7 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from ..errors import ForecastError
-from ..vessel import Profile, Vessel
+from ..vessel import Vessel
 from ..weather import ForecastGrid, read_forecasts
 from .chart import OpenChart
 from .forecastgrid import onto_route_grid
@@ -25,6 +25,7 @@ from .forecastice import ice_season, route_ice_weather_voyage
 from .forecastroutes import OBJECTIVES, route_on_forecast
 from .route import searching
 from .season import OpenSeason
+from .ship import as_vessel, vessel_notes
 
 if TYPE_CHECKING:
     import numpy as np
@@ -52,7 +53,7 @@ class OpenForecast:
         start: tuple[float, float],
         end: tuple[float, float],
         *,
-        vessel: Profile | Vessel | None = None,
+        vessel: Vessel | str | None = None,
         ice: OpenChart | OpenSeason | SeasonGrid | None = None,
         ice_class: str | None = None,
         depart: str | np.datetime64 | None = None,
@@ -68,8 +69,8 @@ class OpenForecast:
         """The route from `start` to `end` (lat, lon) through the forecast, leaving at `depart`
         (default its first time; outside its times only with persist=True, said).
 
-        vessel: a vessel file's Profile (seaway.vessel.load), a seaway.vessel.Vessel, or None
-            (12 kn, 15000 t, said). ice: an ice chart (OpenChart, taken as valid from the
+        vessel: a seaway.vessel.Vessel (a vessel file's: seaway.vessel.load), an ice class, or
+            None (12 kn, 15000 t, said). ice: an ice chart (OpenChart, taken as valid from the
             departure for the whole voyage, said) or a season (OpenSeason, SeasonGrid): the ice
             and the weather act in one voyage at the speed of `ice_class` (default the vessel
             file's, else Arc7). objective: "time", "fuel" (needs a fuel curve; with arrive_by
@@ -91,8 +92,8 @@ class OpenForecast:
                 "through ice and weather at once only the least time is modelled; "
                 "use objective time, or route without the ice chart"
             )
-        ship, profile, notes = _vessel(vessel)
-        cls = ice_class or (profile.ice_class if profile else None) or "Arc7"
+        ship, notes = _vessel(vessel)
+        cls = ice_class or ship.ice_class or "Arc7"
         season = None if ice is None else ice_season(ice, cls, notes)
         ds, resampled = onto_route_grid(
             self.data, self.source, season_grid(season), grid=grid, ends=(start, end), crs=self.crs
@@ -110,19 +111,7 @@ class OpenForecast:
                 )
             else:
                 r = route_on_forecast(
-                    ds,
-                    fc,
-                    start,
-                    end,
-                    ship,
-                    profile,
-                    objective,
-                    arrive_by,
-                    persist,
-                    self.source,
-                    notes,
-                    say,
-                    **common,
+                    ds, fc, start, end, ship, objective, arrive_by, persist, self.source, notes, say, **common
                 )
         return dataclasses.replace(r, name=name, notes=tuple(self.notes) + tuple(notes) + tuple(r.notes))
 
@@ -135,21 +124,18 @@ def season_grid(season):
     return (*(t[d].values for d in t.dims), t.dims)
 
 
-def _vessel(vessel) -> tuple[Vessel, Profile | None, list[str]]:
-    """(the weather models' Vessel, the vessel file's Profile or None, what was said)."""
-    if isinstance(vessel, Profile):
-        return vessel.vessel, vessel, [f"vessel: {vessel.describe()}"]
-    if isinstance(vessel, Vessel):
-        return vessel, None, []
+def _vessel(vessel) -> tuple[Vessel, list[str]]:
+    """(the voyage's Vessel, what was said of it)."""
     if vessel is None:
         return (
             Vessel(speed_kn=12.0),
-            None,
             [
                 "vessel: 12 kn in calm water, 15000 t (the defaults; give --speed, --displacement or --vessel-file)"
             ],
         )
-    raise ForecastError(f"vessel must be a seaway.vessel.Profile (a vessel file) or Vessel, got {vessel!r}")
+    ship = as_vessel(vessel)
+    assert ship is not None
+    return ship, vessel_notes(ship) if ship.path or ship.name else []
 
 
 def open_forecast(

@@ -15,7 +15,7 @@ OBJECTIVES = ("time", "fuel", "safety")
 
 
 def route_on_forecast(
-    ds, fc, start, end, vessel, profile, objective, arrive_by, persist, source, notes, say, **common
+    ds, fc, start, end, vessel, objective, arrive_by, persist, source, notes, say, **common
 ):
     """The route for `objective` on the forecast's grid; land where every field is NaN and the
     package's coastline (global-land-mask)."""
@@ -47,15 +47,15 @@ def route_on_forecast(
             )
         return r
     if objective == "safety":
-        length = profile.vessel.length_m if profile else vessel.length_m
+        length = vessel.length_m
         if length is None:
             raise ForecastError("objective safety needs the ship's length: a vessel file with length_m")
         return route_safest(
             ds, start, end, ship_length_m=length, speed_kn=vessel.speed_kn, at_hours=at_h, land=land, **common
         )
-    if not (profile and profile.fuel_speeds_kn):
+    if not vessel.fuel_speeds_kn:
         raise ForecastError("objective fuel needs a fuel curve: a vessel file with a [fuel] table")
-    fuel = FuelCurve(profile.fuel_speeds_kn, profile.fuel_rates_t_per_h)
+    fuel = FuelCurve(vessel.fuel_speeds_kn, vessel.fuel_rates_t_per_h)
     say("least fuel on the forecast frame at departure (Sotnikova 2009)")
     if arrive_by is not None:
         deadline = float((np.datetime64(arrive_by) - fc.departure) / np.timedelta64(1, "h"))

@@ -27,14 +27,14 @@ def why_no_route(
     depth=None,
     draft=None,
     constrained=False,
+    blocked=None,
 ) -> NoRouteError:
     """The NoRouteError to report for a search between `ends` (pixels or lat/lon as routed) on
-    `cost` that found nothing; `asked`: the ends as given; draft: (draft, ukc) when enforced."""
+    `cost` that found nothing; `asked`: the ends as given; draft: (draft, ukc) when enforced;
+    blocked: what closes the pixels the cost closes beyond the class's ice, in words."""
     show = pixel_latlon(cost, chart.projection)
     if chart.is_ice and chart.layers is not None:
-        blocked = (
-            "water shallower than draft + UKC" if draft is not None else "closed by the cost, not by the ice"
-        )
+        blocked = blocked or "closed by the cost, not by the ice"
         err = explain_ice(
             chart.layers,
             vessel or "Arc7",

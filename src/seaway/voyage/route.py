@@ -1,7 +1,9 @@
 """A route across an opened chart (OpenChart.route), as ``seaway route CHART`` finds it: the ends
-projected, checked and (with snap) moved to usable water, the draft enforced, the least-cost
-search under the constraints, the no-route explanation, smoothing, the times in the ice and the
-chart's variables along the legs; every assumption recorded in Route.notes."""
+projected, checked and (with snap_km) moved to usable water, the draft enforced, the search under
+the constraints and the objective (least ice impact, Grinyak et al. 2022, or least time), the
+no-route explanation, smoothing, the times in the ice for the ship (seaway.voyage.timing), the
+schedule from a departure and the chart's variables along the legs; every assumption recorded
+in Route.notes."""
 
 from __future__ import annotations
 
@@ -10,22 +12,28 @@ import dataclasses
 from collections.abc import Callable, Collection
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from ..base.interrupt import SettledProgress, reporting
-from ..engine.api import route
+from ..engine.api import prepare
 from ..engine.snap import DEFAULT_SNAP_KM
-from ..errors import NoRouteError
-from ..ice.speed import ice_speed
+from ..errors import NoRouteError, SeawayError
+from ..models import EdgeCost
 from .depth import with_draft
 from .ends import check_ends
 from .noroute import why_no_route
 from .projected import end_pixel, pixel_latlon
+from .ship import as_vessel, vessel_notes
+from .timing import blocked_words, chart_age, end_reasons, ice_time, search_cost, time_notes
 
 if TYPE_CHECKING:
     from ..constraints import KeepAway, Zone
     from ..result.route import Route
+    from ..vessel import Vessel
     from .chart import OpenChart
 
 Say = Callable[[str], None]
+OBJECTIVES = ("impact", "time")
 
 
 def searching(progress: Say | None, pixels: int):
@@ -38,8 +46,14 @@ def route_chart(
     start: tuple[float, float],
     end: tuple[float, float],
     *,
-    vessel: str | None = None,
+    vessel: Vessel | str | None = None,
     speed_kn: float | None = None,
+    depart: Any = None,
+    objective: str = "impact",
+    escort: bool = False,
+    escort_speed_kn: float | None = None,
+    stage_thickness: Any = None,
+    compare: bool = True,
     snap_km: float | None = None,
     neighbourhood: int = 5,
     edge_cost: str = "max",
@@ -56,20 +70,35 @@ def route_chart(
 ) -> Route:
     """The route from `start` to `end` on `chart`.
 
-    vessel: the ice class the chart's ice is priced for (default the chart's, else Arc7 on stage
-        charts). speed_kn: the open-water speed; on an ice chart each leg's time comes from the
-        class's speed in its ice (seaway.ice.speed), on other charts from this speed.
+    vessel: a seaway.vessel.Vessel (a vessel file's: its class, service speed, draft, ice curve)
+        or an ice class (a ship of that class at 12 kn, said); default the chart's class.
+    speed_kn, draft_m, ukc_m: replace the vessel's open-water speed, draft and UKC.
+    depart: the departure (a date numpy.datetime64 takes): every waypoint gets its ETA.
+    objective: "impact" (least ice impact, Grinyak et al. 2022; edge_cost says how a step is
+        priced) or "time" (the quickest route, exact: the line integral of hours per km).
+    escort: where the ship has no speed of its own in ice its class may enter, go under
+        icebreaker escort at escort_speed_kn (default 6 kn, an assumption) and mark those legs;
+        without it such ice is avoided. stage_thickness: the thickness of a stage of development
+        (seaway.ice.andreeva.stage_thickness: "mid" by default, "upper", "lower", {stage: m}).
+    compare: on an ice chart with the impact objective, also find the quickest route and say
+        how much quicker it is when it differs.
     snap_km: None (default): an end on an impassable pixel raises ValueError naming why and the
-        nearest usable point; a distance: such an end moves there when it is at most that far
-        (recorded in Route.notes and .requested).
-    neighbourhood, edge_cost, method, via, turn_penalty, keep_away, zones: as seaway.route.
+        nearest usable point; a distance: such an end moves there when it is at most that far.
+    neighbourhood, method, via, turn_penalty, keep_away, zones: as seaway.route.
     smooth: any-angle smoothing (never costlier; not with via or turn_penalty).
-    draft_m, ukc_m: the ship's draft and under-keel clearance (needs a chart opened with depth).
     progress: called with progress messages (stage, pixels settled), or None for silence.
-    NoRouteError says why from the chart (its ice, land or depth)."""
+    On an ice chart every leg has a time, a speed and (with depart) an ETA; NoRouteError says why
+    from the chart (its ice, land or depth)."""
     say = progress or (lambda message: None)
-    cls = chart.ice_class(vessel)
-    cost = chart.cost_for(vessel)
+    if objective not in OBJECTIVES:
+        raise SeawayError(f"objective must be one of {', '.join(OBJECTIVES)} on a chart, got {objective!r}")
+    given = vessel if vessel is not None else chart.vessel
+    ship = as_vessel(given, speed_kn, ukc_m=ukc_m)
+    cls = chart.ice_class(ship.ice_class if ship is not None else None)
+    if chart.is_ice and (ship is None or ship.ice_class is None):
+        ship = as_vessel(cls, ship.speed_kn if ship is not None else speed_kn, ukc_m=ukc_m)
+    notes = vessel_notes(ship) if chart.is_ice or ship is not None and ship.path else []
+    cost = chart.cost_for(cls)
     asked = (tuple(start), tuple(end))
     if chart.projection is not None:
         start, end = (end_pixel(cost, chart.projection, p, n) for p, n in ((start, "start"), (end, "end")))
@@ -78,91 +107,149 @@ def route_chart(
             "the chart has projected y/x coordinates but names no projection (CF grid_mapping): "
             "--from and --to are ROW,COL pixel indices"
         )
+    draft = draft_m if draft_m is not None else (ship.draft_m if ship is not None else None)
+    if draft is not None and draft_m is None and chart.depth is None:
+        notes.append(
+            f"the draft {draft:g} m is not enforced: the chart has no depth (open it with depth=FILE)"
+        )
+        draft = None
     chart_cost = cost
-    cost, shallow = with_draft(cost, chart.depth, draft_m, ukc_m, say)
-    snap = snap_km is not None
+    cost, shallow = with_draft(cost, chart.depth, draft, ship.ukc_m if ship is not None else ukc_m, say)
+    timing = priced = None
+    if chart.is_ice and chart.layers is not None:
+        timing = ice_time(
+            chart,
+            cls,
+            ship,
+            cost,
+            escort=escort,
+            escort_kn=escort_speed_kn,
+            stage_thickness=stage_thickness,
+            draft_m=draft,
+        )
+        priced = search_cost(cost, timing, objective)
+        notes += time_notes(timing, objective, edge_cost)
+    elif objective == "time":
+        raise SeawayError(
+            "objective time needs an ice chart (a speed in its ice); this chart is a cost raster"
+        )
+    routed = cost if priced is None else priced
+    reasons = end_reasons(shallow, timing)
     (start, end), moved = check_ends(
-        cost,
+        routed,
         chart.land,
         chart.layers,
         (start, end),
         vessel=cls,
-        snap=snap,
-        snap_km=snap_km if snap else DEFAULT_SNAP_KM,
+        snap=snap_km is not None,
+        snap_km=snap_km if snap_km is not None else DEFAULT_SNAP_KM,
         say=lambda note: None,
         neighbourhood=neighbourhood,
-        reasons=shallow,
+        reasons=reasons,
         chart_cost=chart_cost,
         to_user=pixel_latlon(cost, chart.projection),
         asked=asked,
     )
     rows, cols = cost.shape
     say(
-        f"routing on {rows} x {cols} pixels ({chart.description}"
-        f"{f' for {cls}' if cls else ''}; {method}, {neighbourhood}x{neighbourhood} stencil, edge cost {edge_cost})"
+        f"routing on {rows} x {cols} pixels ({chart.description}{f' for {cls}' if cls else ''}; "
+        f"objective {objective}, {method}, {neighbourhood}x{neighbourhood} stencil)"
     )
-    constraints = dict(via=list(via), turn_penalty=turn_penalty, keep_away=keep_away, zones=zones)
+    model = EdgeCost("integral", unit="h") if objective == "time" else EdgeCost(edge_cost)
+    prepared = prepare(routed, land=chart.land, neighbourhood=neighbourhood, keep_away=keep_away, zones=zones)
     try:
-        # With a turn penalty the search settles (pixel, incoming step) states: scale the total.
-        states = neighbourhood**2 - 1 if turn_penalty is not None else 1
+        states = neighbourhood**2 - 1 if turn_penalty is not None else 1  # a turn search: (pixel, step)
         with searching(progress, rows * cols * states):
-            r = route(
-                cost,
-                start,
-                end,
-                land=chart.land,
-                neighbourhood=neighbourhood,
-                edge_cost=edge_cost,
-                method=method,
-                **constraints,
+            r = prepared.route(
+                start, end, model=model, method=method, via=list(via), turn_penalty=turn_penalty
             )
     except NoRouteError:
         used = bool(via) or turn_penalty is not None or bool(keep_away) or bool(zones)
         err = why_no_route(
             chart,
-            cost,
+            routed,
             (start, end),
             asked,
             vessel=cls,
             neighbourhood=neighbourhood,
             depth=chart.depth,
-            draft=(draft_m, ukc_m) if shallow is not None else None,
+            draft=(draft, ship.ukc_m if ship else ukc_m) if shallow is not None else None,
             constrained=used,
+            blocked=blocked_words(shallow, timing),
         )
-        err.notes = tuple(moved)
+        err.notes = tuple(notes) + tuple(moved)
         raise err from None
     say(f"found: cost {r.cost:.6g}, {len(r.pixels)} pixels, {r.stats.search.settled} settled")
     if via or turn_penalty is not None:
         say("not smoothed: smoothing would cut the via-points or ignore the turn penalty")
     elif smooth:
-        say(f"smoothing {r.course_changes} course changes")
         r = r.smoothed()
         done = r.stats.smoothing
         say(
-            f"smoothed: cost {done.cost_before:.6g} -> {r.cost:.6g}, course changes "
-            f"{done.course_changes_before} -> {done.course_changes_after}"
+            f"smoothed: cost {done.cost_before:.6g} -> {r.cost:.6g}, course changes {done.course_changes_before} -> {done.course_changes_after}"
         )
     said = set(r.assumptions)
-    notes = [n for n in chart.notes if n.removeprefix("assumed: ") not in said] + list(moved)
-    r = dataclasses.replace(r, name=name, speed_kn=speed_kn, notes=r.notes + tuple(notes), requested=asked)
-    if speed_kn and chart.is_ice and chart.layers is not None:  # times from the speed in the ice
-        knots = ice_speed(
-            chart.layers,
-            cls,
-            speed_kn,
-            fast_ice=chart.options.fast_ice,
-            depth=chart.depth if draft_m is not None else None,
-            draft=draft_m,
-        )
-        r = r.with_ice_speed(knots)
-        r = dataclasses.replace(
-            r, notes=r.notes + (f"times from the speed in the ice: {knots.attrs['model']}",)
-        )
+    told = [n for n in chart.notes if n.removeprefix("assumed: ") not in said]
+    departure = None if depart is None else np.datetime64(depart, "s")
+    r = dataclasses.replace(
+        r,
+        name=name,
+        speed_kn=ship.speed_kn if ship is not None else None,
+        notes=r.notes + tuple(told) + tuple(notes) + tuple(moved),
+        requested=asked,
+        departure=departure,
+    )
+    if chart.projection is not None:  # vertices in lat/lon for the legs and the outputs
+        y, x = r.coords[:, 0], r.coords[:, 1]
+        r = dataclasses.replace(r, latlon=chart.projection.to_latlon(y, x))
+    if timing is not None:
+        r = r.with_ice_speed(timing.knots, escorted=timing.escorted if timing.escort_kn else None)
+        hours = float(sum(leg.time_h for leg in r.legs()))
+        extra = chart_age(chart.date, departure, hours)
+        if objective == "impact" and compare and np.isfinite(hours):
+            extra += _quickest(
+                timing,
+                routed,
+                chart.land,
+                start,
+                end,
+                hours,
+                method,
+                via,
+                turn_penalty,
+                neighbourhood,
+                keep_away,
+                zones,
+            )
+        r = dataclasses.replace(r, notes=r.notes + tuple(extra))
     if chart.environment:
         r = r.with_environment(chart.environment)
     if chart.depth is not None:  # the chart's depth, or its own depth variable
         r = r.with_environment({"depth": chart.depth})
-    if chart.projection is not None:  # vertices in lat/lon for the legs and the outputs
-        y, x = r.coords[:, 0], r.coords[:, 1]
-        r = dataclasses.replace(r, latlon=chart.projection.to_latlon(y, x))
     return r
+
+
+def _quickest(
+    timing, routed, land, start, end, hours, method, via, turn_penalty, k, keep_away, zones
+) -> list[str]:
+    """The quickest route's time beside the route's, when it is quicker by more than 1 %."""
+    fast = routed.copy(
+        data=np.where(np.isfinite(np.asarray(routed.values, float)), timing.hours_per_km(), np.inf)
+    )
+    try:
+        q = prepare(fast, land=land, neighbourhood=k, keep_away=keep_away, zones=zones).route(
+            start,
+            end,
+            model=EdgeCost("integral", unit="h"),
+            method=method,
+            via=list(via),
+            turn_penalty=turn_penalty,
+        )
+    except NoRouteError:
+        return []
+    if q.cost >= hours * 0.99:
+        return []
+    return [
+        f"the quickest route (objective time) takes {q.cost:.1f} h over {q.length:.0f} km, "
+        f"{hours - q.cost:.1f} h less than this one ({hours:.1f} h, the least ice impact)"
+    ]
