@@ -63,7 +63,7 @@ class IceCurve:
 
     def describe(self) -> str:
         pts = ", ".join(f"{h:g} m {v:g} kn" for h, v in zip(self.thickness_m, self.speed_kn))
-        return f"the ship's ice curve ({pts}{'; ' + self.source if self.source else ''})"
+        return f"the ship's ice curve ({pts})"
 
 
 @dataclass(frozen=True)
