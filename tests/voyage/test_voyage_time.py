@@ -242,3 +242,28 @@ def test_the_vessel_file_drives_a_chart_route_on_the_command_line(tmp_path, caps
     inside = km_between(r, 66, 70)
     v = 19.5 - 17.5 * 1.6 / 2.1
     assert props["time_h"] == pytest.approx((r.length - inside) / (19.5 * KN) + inside / (v * KN), rel=0.01)
+
+
+def test_a_season_routes_the_vessel_files_ship_and_dates_its_charts(tmp_path):
+    """Two identical weekly charts: the Arc7 LNG carrier through the season takes the static
+    chart's time by its ice curve (the season's step times are integrals over float32 hours per
+    km); a voyage five days after a weekly chart crosses a chart over three days old: said."""
+    path = band_chart(tmp_path, stage=93)
+    one = xr.open_dataset(path).load()
+    week = xr.concat([one, one], dim="time").assign_coords(
+        time=np.array(["2026-02-01", "2026-02-08"], dtype="datetime64[ns]")
+    )
+    ship = load("arc7-lng-carrier")
+    season = seaway.open_season(_write(week, tmp_path / "week.nc"))
+    r = season.route(A, B, vessel=ship, depart="2026-02-01")
+    static = seaway.open_chart(path).route(A, B, vessel=ship, objective="time", smooth=False)
+    assert r.cost == pytest.approx(static.summary()["time_h"], rel=1e-3)
+    assert r.stats.voyage.hours_waiting == 0 and not any(n.startswith("warning") for n in r.notes)
+    assert any(n.startswith("vessel: Arc7 LNG carrier") for n in r.notes)
+    late = season.route(A, B, vessel=ship, depart="2026-02-06")
+    assert any("warning: the ice chart of 2026-02-01" in n and "add newer charts" in n for n in late.notes)
+
+
+def _write(ds, path):
+    ds.to_netcdf(path)
+    return str(path)
