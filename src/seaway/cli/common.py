@@ -156,6 +156,21 @@ def fast_ice(text: str):
         raise argparse.ArgumentTypeError(str(exc)) from None
 
 
+def depart_window(text: str) -> tuple:
+    """argparse type for FIRST,LAST[,HOURS] (ISO times; hours between departures, default 24)."""
+    parts = text.replace(" ", "").split(",")
+    try:
+        first, last = (np.datetime64(p.rstrip("Z"), "s") for p in parts[:2])
+        step = float(parts[2]) if len(parts) > 2 else 24.0
+    except (ValueError, IndexError):
+        raise argparse.ArgumentTypeError(
+            f"expected FIRST,LAST[,HOURS], e.g. 2026-07-01,2026-07-10,12, got {text!r}"
+        ) from None
+    if len(parts) > 3 or last < first or not step > 0:
+        raise argparse.ArgumentTypeError(f"need FIRST <= LAST and HOURS > 0, got {text!r}")
+    return first, last, step
+
+
 def vessel_from(args):
     """The Vessel of the command line: --vessel-file (its values), --vessel CLASS (its class, or
     a ship of that class), --speed, --displacement, --draft and --ukc (replacing the file's);

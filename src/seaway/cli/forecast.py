@@ -47,15 +47,11 @@ def run_forecast_route(args) -> int:
     ice = _ice(args, ice_class or "Arc7") if args.chart is not None else None
     if ice is not None and hasattr(ice, "grid") and hasattr(ice.grid, "times"):
         say(f"{args.chart}: a season of {ice.grid.times.size} ice charts")
-    r = forecast.route(
-        args.start,
-        args.end,
+    options = dict(
         vessel=vessel,
         ice=ice,
         ice_class=ice_class,
-        depart=args.depart,
         objective=args.objective or "time",
-        arrive_by=args.arrive_by,
         persist=args.persist,
         grid=args.grid,
         neighbourhood=args.neighbourhood,
@@ -63,6 +59,20 @@ def run_forecast_route(args) -> int:
         name=args.name,
         progress=None if args.quiet else say,
     )
+    if getattr(args, "depart_window", None) is not None:
+        first, last, step = args.depart_window
+        if options["objective"] not in ("time", "fuel"):
+            raise ValueError(
+                "--depart-window chooses by arrival or, with --arrive-by, fuel: give --objective time"
+            )
+        options.pop("objective")
+        choice = forecast.best_departure(
+            args.start, args.end, (first, last), step_h=step, arrive_by=args.arrive_by, **options
+        )
+        print(f"departures tried ({choice.rule}):\n{choice.table()}")
+        r = choice.route
+    else:
+        r = forecast.route(args.start, args.end, depart=args.depart, arrive_by=args.arrive_by, **options)
     for note in r.notes:  # what was assumed, resampled or decided: even with --quiet
         if note not in forecast.notes:
             tell(note)

@@ -10,6 +10,7 @@ import numpy as np
 
 from ..ice.andreeva import check_stage_thickness
 from ..weather.forecast import ROLES, check_roles
+from .common import depart_window
 
 #: --objective: impact (charts' default) and time on charts and seasons; time (forecasts'
 #: default), fuel and safety through a forecast.
@@ -20,7 +21,7 @@ EXAMPLE = (
     "--out voyage.rtz"
 )
 #: Options that mean something only with --forecast.
-_ONLY_WITH = ("forecast_variable", "forecast_crs", "persist", "arrive_by", "displacement")
+_ONLY_WITH = ("forecast_variable", "forecast_crs", "persist", "arrive_by", "displacement", "depart_window")
 
 
 def role_pair(text: str) -> tuple[str, str]:
@@ -137,6 +138,14 @@ def add_voyage_options(rp) -> None:
         metavar="ISO-TIME",
         help="departure in UTC: every waypoint gets its ETA in the table and every output "
         "(default through a forecast: its first time; on a chart: no dates, hours only)",
+    )
+    g.add_argument(
+        "--depart-window",
+        type=depart_window,
+        metavar="FIRST,LAST[,HOURS]",
+        help="through a forecast: find the best departure between FIRST and LAST, tried every HOURS "
+        "(default 24): the one that arrives first, or with --arrive-by the one arriving in time with the "
+        "least fuel (needs the vessel file's fuel curve); the departures tried are printed",
     )
     g.add_argument(
         "--objective",

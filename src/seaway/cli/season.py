@@ -14,6 +14,7 @@ from .common import (
     Progress,
     add_ends,
     add_snap_options,
+    depart_window,
     fast_ice,
     grid,
     neighbourhood,
@@ -68,12 +69,9 @@ def run_season(args) -> int:
         tell(note, "season")
     t = season.grid.times
     say(f"{t.size} charts from {t[0]} to {t[-1]} on {season.grid.shape[0]} x {season.grid.shape[1]} pixels")
-    r = season.route(
-        args.start,
-        args.end,
+    options = dict(
         vessel=vessel_from(args) if args.vessel_file else (args.vessel or "Arc7"),
         speed_kn=args.speed,
-        depart=args.depart,
         speed_table=args.speed_table,
         fast_ice=args.fast_ice,
         concentration_limit=not args.no_concentration_limit,
@@ -83,6 +81,15 @@ def run_season(args) -> int:
         name=args.name,
         progress=None if args.quiet else say,
     )
+    if args.depart_window is not None:
+        first, last, step = args.depart_window
+        choice = season.best_departure(
+            args.start, args.end, (first, last), step_h=step, arrive_by=args.arrive_by, **options
+        )
+        print(f"departures tried ({choice.rule}):\n{choice.table()}")
+        r = choice.route
+    else:
+        r = season.route(args.start, args.end, depart=args.depart, **options)
     voyage = r.stats.voyage
     for said in voyage.assumptions if voyage is not None else ():  # the fast-ice rule: even with --quiet
         tell(f"assumed: {said}", "season")
@@ -142,6 +149,17 @@ def add_season_command(commands) -> None:
         help="open-water speed in knots (default 12, or the vessel file's)",
     )
     sp.add_argument("--depart", metavar="DATE", help="departure (default the first chart's date)")
+    sp.add_argument(
+        "--depart-window",
+        type=depart_window,
+        metavar="FIRST,LAST[,HOURS]",
+        help="find the best departure between FIRST and LAST (tried every HOURS, default 24): the one "
+        "that arrives first (the latest of those that do), or with --arrive-by the one arriving in "
+        "time with the least fuel; the departures tried are printed",
+    )
+    sp.add_argument(
+        "--arrive-by", metavar="DATE", help="with --depart-window: arrive by then, with the least fuel"
+    )
     sp.add_argument(
         "--speed-table",
         type=speed_table,

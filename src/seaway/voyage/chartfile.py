@@ -70,6 +70,13 @@ def read_chart(path, options: ChartOptions, vessel=None, ends=None) -> OpenChart
 
 def _from_dataset(ds, path, description, options, vessel, notes) -> OpenChart:
     variable, land_variable = options.variable, options.land_variable
+    if ds.sizes.get("time", 1) > 1 and any(n in ds for n in ("SA", "CT", "stage_of_development")):
+        raise ChartError(
+            f"{path} is a season of {ds.sizes['time']} ice charts (a time axis): route through it with "
+            "`seaway season FILE` (seaway.open_season: the ice changes during the voyage), or select one chart"
+        )
+    if ds.sizes.get("time", 1) == 1 and "time" in ds.dims:
+        ds = ds.isel(time=0)
     land_name = land_variable or _land_name(ds)
     if land_variable and land_variable not in ds:
         raise ChartError(f"{path} has no variable {land_variable!r}; it has {sorted(ds.data_vars)}")

@@ -16,10 +16,13 @@ import os
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
+import numpy as np
+
 from ..errors import ForecastError
 from ..vessel import Vessel
 from ..weather import ForecastGrid, read_forecasts
 from .chart import OpenChart
+from .departures import DepartureChoice, best_departure
 from .forecastgrid import onto_route_grid
 from .forecastice import forecast_ice, ice_season, route_ice_weather_voyage
 from .forecastroutes import OBJECTIVES, route_on_forecast
@@ -28,7 +31,6 @@ from .season import OpenSeason
 from .ship import as_vessel, vessel_notes
 
 if TYPE_CHECKING:
-    import numpy as np
     import xarray as xr
 
     from ..ice.seasongrid import SeasonGrid
@@ -120,6 +122,24 @@ class OpenForecast:
                     ds, fc, start, end, ship, objective, arrive_by, persist, self.source, notes, say, **common
                 )
         return dataclasses.replace(r, name=name, notes=tuple(self.notes) + tuple(notes) + tuple(r.notes))
+
+    def best_departure(self, start, end, window, *, step_h=6.0, arrive_by=None, **options) -> DepartureChoice:
+        """The departure in `window` (first, last) that arrives first, or with `arrive_by` the
+        one that arrives in time with the least fuel (each departure's least-fuel route to the
+        deadline, Sotnikova 2009; needs the vessel's fuel curve), tried every step_h hours
+        (seaway.voyage.departures); options as route()."""
+        if arrive_by is not None:
+            deadline = np.datetime64(arrive_by, "s")
+            options = {**options, "objective": "fuel"}
+
+            def go(depart, **kw):
+                return self.route(start, end, depart=depart, arrive_by=deadline, **kw)
+        else:
+
+            def go(depart, **kw):
+                return self.route(start, end, depart=depart, **kw)
+
+        return best_departure(go, window, step_h=step_h, arrive_by=arrive_by, **options)
 
 
 def season_grid(season):

@@ -21,6 +21,7 @@ from ..icenav.seasonwhy import closed_reason, explain_season_no_route, usable
 from ..models import IceSeasonTime
 from ..result.schedule import schedule
 from ..vessel import Vessel
+from .departures import DepartureChoice, best_departure
 from .ends import check_ends
 from .route import searching
 from .ship import as_vessel, vessel_notes
@@ -118,6 +119,24 @@ class OpenSeason:
             name=name,
             notes=r.notes + tuple(self.notes) + tuple(said_ship) + tuple(moved) + tuple(ages),
             requested=(tuple(start), tuple(end)),
+        )
+
+    def best_departure(
+        self, start, end, window, *, step_h=24.0, arrive_by=None, **options
+    ) -> DepartureChoice:
+        """The departure in `window` (first, last) that arrives first (or by `arrive_by` with the
+        least fuel), tried every step_h hours: seaway.voyage.departures; options as route()."""
+        ship = as_vessel(options.get("vessel", "Arc7"), options.get("speed_kn"))
+        rate = None
+        if ship is not None and ship.fuel_speeds_kn:
+            rate = float(np.interp(ship.speed_kn, ship.fuel_speeds_kn, ship.fuel_rates_t_per_h))
+        return best_departure(
+            lambda depart, **kw: self.route(start, end, depart=depart, **kw),
+            window,
+            step_h=step_h,
+            arrive_by=arrive_by,
+            fuel_rate_t_per_h=rate,
+            **options,
         )
 
 
