@@ -89,10 +89,12 @@ def ice_time(
         kn = float(DEFAULT_ESCORT_KN if escort_kn is None else escort_kn)
         if not (np.isfinite(kn) and kn > 0):
             raise ValueError(f"the escort speed must be a positive number of knots, got {escort_kn!r}")
-        speed = np.where(stuck, kn, own)
+        # the escort wherever the ship alone is slower: thicker ice is never quicker than thinner
+        escorted = passable & (own < kn)
+        speed = np.where(escorted, kn, own)
         source = "given" if escort_kn is not None else "an assumption, the default"
-        model += f"; under icebreaker escort {kn:g} kn ({source}) where the ship has no speed of its own"
-        return IceTime(knots.copy(data=speed), own, stuck, np.zeros_like(stuck), model, kn, h, limit)
+        model += f"; under icebreaker escort {kn:g} kn ({source}) where the ship alone is slower"
+        return IceTime(knots.copy(data=speed), own, escorted, np.zeros_like(stuck), model, kn, h, limit)
     return IceTime(knots, own, np.zeros_like(stuck), stuck, model, None, h, limit)
 
 
