@@ -194,12 +194,17 @@ def write(path):
     return names
 
 
+def point(lat: float, lon: float):
+    """The point lat, lon in the PLANE."""
+    return shapely.Point(*TO_PLANE.transform(float(lon), float(lat)))
+
+
 def feature_at(lat: float, lon: float, geoms=None, names=None) -> str:
     """The name of the chart's feature at lat, lon (as write() returns them), from the polygons
     in the plane (independent of seaway's reader); "" off the chart."""
     if geoms is None:
         geoms, _, names = build()
-    p = shapely.Point(*TO_PLANE.transform(float(lon), float(lat)))
+    p = point(lat, lon)
     for g, n in zip(geoms, names):
         if g.covers(p):
             return n
