@@ -36,7 +36,12 @@ STANDARD_NAMES = {
     "wind_east": ("eastward_wind",),
     "wind_north": ("northward_wind",),
     "wind_speed": ("wind_speed",),
+    # the ice of a coupled ice-ocean forecast (HYCOM-CICE, TOPAZ, ROMS): priced with the currents
+    "ice_concentration": ("sea_ice_area_fraction",),
+    "ice_thickness": ("sea_ice_thickness",),
 }
+#: Roles that are the ice of a forecast, not its weather (seaway.voyage.forecastice prices them).
+ICE_ROLES = ("ice_concentration", "ice_thickness")
 
 #: Grid-relative vector pairs and the east/north names they become. In the CF standard name table
 #: "x" and "y" name components along the grid's own x and y axes (positive towards increasing

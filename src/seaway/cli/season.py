@@ -9,7 +9,17 @@ import numpy as np
 
 from ..output import export
 from ..voyage import open_season
-from .common import EPILOG, Progress, add_ends, add_snap_options, fast_ice, grid, neighbourhood, tell
+from .common import (
+    EPILOG,
+    Progress,
+    add_ends,
+    add_snap_options,
+    fast_ice,
+    grid,
+    neighbourhood,
+    tell,
+    vessel_from,
+)
 
 
 def dated_chart(text: str) -> tuple[str, str]:
@@ -61,7 +71,7 @@ def run_season(args) -> int:
     r = season.route(
         args.start,
         args.end,
-        vessel=args.vessel,
+        vessel=vessel_from(args) if args.vessel_file else (args.vessel or "Arc7"),
         speed_kn=args.speed,
         depart=args.depart,
         speed_table=args.speed_table,
@@ -118,9 +128,18 @@ def add_season_command(commands) -> None:
         "(or sea_ice_area_fraction) and SA or thickness",
     )
     add_ends(sp)
-    sp.add_argument("--vessel", default="Arc7", metavar="CLASS", help="ice class (default Arc7)")
+    sp.add_argument("--vessel", metavar="CLASS", help="ice class (default Arc7, or the vessel file's)")
     sp.add_argument(
-        "--speed", type=float, default=12.0, metavar="KN", help="open-water speed in knots (default 12)"
+        "--vessel-file",
+        metavar="FILE",
+        help="vessel file (TOML or JSON) or a shipped example (arc7-lng-carrier, pc6-general-cargo, ...): "
+        "its class, service speed and ice curve (the speed in the ice: the ship's curve, else Andreeva 2021)",
+    )
+    sp.add_argument(
+        "--speed",
+        type=float,
+        metavar="KN",
+        help="open-water speed in knots (default 12, or the vessel file's)",
     )
     sp.add_argument("--depart", metavar="DATE", help="departure (default the first chart's date)")
     sp.add_argument(

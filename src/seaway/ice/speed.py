@@ -115,8 +115,8 @@ def ice_speed(
 def _as_sigrid(ds):
     """A SIGRID-style view (CT, CA, SA, land) of a chart with stage_of_development and
     sea_ice_concentration (seaway.samples.kara_sea()); SIGRID charts as they are."""
-    if "CT" in ds and "SA" in ds:
-        return ds
+    if "CT" in ds and ("SA" in ds or any(n in ds for n in THICKNESS_NAMES)):
+        return ds  # SIGRID-style, or a concentration with its thickness (an ocean model's ice)
     stage = ds["stage_of_development"]
     ct = (
         ds["sea_ice_concentration"]

@@ -81,10 +81,13 @@ def category_name(name: str, code: float) -> str:
     return f"{name} {int(code)}"
 
 
-def summarise(name: str, vals: np.ndarray):
-    """The Numeric or Category of values sampled along a leg (NaN ignored)."""
+def summarise(name: str, vals: np.ndarray, weights=None):
+    """The Numeric or Category of values sampled along a leg (NaN ignored); `weights` (the
+    length each sample stands for) make the mean a length-weighted one."""
     vals = np.asarray(vals, float)
-    vals = vals[np.isfinite(vals)]
+    keep = np.isfinite(vals)
+    w = None if weights is None else np.asarray(weights, float)[keep]
+    vals = vals[keep]
     if name in CATEGORICAL:
         if not vals.size:
             return Category(np.nan, "none", "governing" if name in STAGES else "most frequent", 0.0)
@@ -103,7 +106,9 @@ def summarise(name: str, vals: np.ndarray):
         )
     if not vals.size:
         return Numeric(np.nan, np.nan, np.nan, name in LEAST)
-    return Numeric(float(vals.mean()), float(vals.min()), float(vals.max()), name in LEAST)
+    mean = float(np.average(vals, weights=w)) if w is not None and w.sum() > 0 else float(vals.mean())
+    low, high = float(vals.min()), float(vals.max())
+    return Numeric(min(max(mean, low), high), low, high, name in LEAST)  # a constant's mean is itself
 
 
 def values_at(arr, pixels) -> np.ndarray:
@@ -114,11 +119,23 @@ def values_at(arr, pixels) -> np.ndarray:
 
 def along(route, i: int, j: int) -> dict:
     """name -> Numeric or Category of each environment variable between vertices i and j of
-    `route`, sampled every half pixel."""
+    `route`: at the very samples its times are read at (weighted_samples: every half pixel of
+    each step's own path), numbers as length-weighted means, so a leg's ice, speed and time come
+    from the same pixels."""
     if not route.environment:
         return {}
-    p = route.sample_pixels(i, j)
-    return {name: summarise(name, values_at(arr, p)) for name, arr in route.environment.items()}
+    px, km, step = route_samples(route)
+    inside = (step >= i) & (step < j)
+    p, w = px[inside], km[inside]
+    return {name: summarise(name, values_at(arr, p), w) for name, arr in route.environment.items()}
+
+
+def route_samples(route):
+    """weighted_samples(route), computed once per route (its times and legs read the same)."""
+    cached = route.__dict__.get("_samples")
+    if cached is None:
+        cached = route.__dict__["_samples"] = weighted_samples(route)
+    return cached
 
 
 def weighted_samples(route):

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..base.units import KM_PER_NM
-from .environment import weighted_samples
+from .environment import route_samples
 
 
 @dataclass(frozen=True)
@@ -51,7 +51,7 @@ def step_times(route):
     cached = route.__dict__.get("_step_times")
     if cached is not None:
         return cached
-    px, km, step = weighted_samples(route)
+    px, km, step = route_samples(route)
     knots = route.ice_speed.knots
     rc = (np.clip(px[:, 0], 0, knots.shape[0] - 1), px[:, 1] % knots.shape[1])
     v = knots[rc]

@@ -21,7 +21,7 @@ from ..vessel import Vessel
 from ..weather import ForecastGrid, read_forecasts
 from .chart import OpenChart
 from .forecastgrid import onto_route_grid
-from .forecastice import ice_season, route_ice_weather_voyage
+from .forecastice import forecast_ice, ice_season, route_ice_weather_voyage
 from .forecastroutes import OBJECTIVES, route_on_forecast
 from .route import searching
 from .season import OpenSeason
@@ -101,6 +101,12 @@ class OpenForecast:
         notes += resampled
         fc = ForecastGrid(ds, departure=depart, persist=persist, source=self.source)
         notes += list(fc.assumptions)
+        if season is None and fc.ice:  # a coupled ice-ocean forecast: its own ice with its currents
+            if objective != "time":
+                raise ForecastError(
+                    "through a forecast's own ice only the least time is modelled: use objective time"
+                )
+            season = forecast_ice(ds, fc.dry, notes)
         say(f"departure {fc.departure} (forecast {fc.describe()})")
         rows, cols = fc.shape
         common = dict(neighbourhood=neighbourhood, method=method)

@@ -114,7 +114,8 @@ def route_chart(
         )
         draft = None
     chart_cost = cost
-    cost, shallow = with_draft(cost, chart.depth, draft, ship.ukc_m if ship is not None else ukc_m, say)
+    ukc = ukc_m if ukc_m is not None else (ship.ukc_m if ship is not None and draft is not None else None)
+    cost, shallow = with_draft(cost, chart.depth, draft, ukc, say)
     timing = priced = None
     if chart.is_ice and chart.layers is not None:
         timing = ice_time(
@@ -173,7 +174,7 @@ def route_chart(
             vessel=cls,
             neighbourhood=neighbourhood,
             depth=chart.depth,
-            draft=(draft, ship.ukc_m if ship else ukc_m) if shallow is not None else None,
+            draft=(draft, ukc) if shallow is not None else None,
             constrained=used,
             blocked=blocked_words(shallow, timing),
         )

@@ -19,8 +19,12 @@ from ..ice.routegrid import route_grid
 from ..ice.seasongrid import SeasonGrid, read_season
 from ..icenav.seasonwhy import closed_reason, explain_season_no_route, usable
 from ..models import IceSeasonTime
+from ..result.schedule import schedule
+from ..vessel import Vessel
 from .ends import check_ends
 from .route import searching
+from .ship import as_vessel, vessel_notes
+from .timing import CHART_AGE_DAYS
 from .vectorchart import in_degrees
 
 if TYPE_CHECKING:
@@ -44,8 +48,8 @@ class OpenSeason:
         start: tuple[float, float],
         end: tuple[float, float],
         *,
-        vessel: str = "Arc7",
-        speed_kn: float = 12.0,
+        vessel: Vessel | str = "Arc7",
+        speed_kn: float | None = None,
         depart: Any = None,
         speed_table: Mapping[float, Any] | None = None,
         fast_ice: str | float | None = None,
@@ -57,17 +61,28 @@ class OpenSeason:
         progress: Callable[[str], None] | None = None,
     ) -> Route:
         """The earliest-arriving route from `start` to `end` (lat, lon) through the season for
-        the class `vessel` at `speed_kn` in open water, leaving at `depart` (default the first
-        chart's date): Andreeva 2021's speeds, or `speed_table` {WMO stage: knots}; waiting is
-        allowed. fast_ice: the stage of fast ice of unknown stage (None: the season's rule, else
+        `vessel` (a seaway.vessel.Vessel, e.g. from a vessel file: its class, service speed and
+        ice curve; or an ice class at 12 kn) at `speed_kn` in open water (default the vessel's),
+        leaving at `depart` (default the first chart's date): the ship's ice curve, else Andreeva
+        2021's speeds, or `speed_table` {WMO stage: knots}; waiting is allowed. fast_ice: the stage of fast ice of unknown stage (None: the season's rule, else
         "nearby"; seaway.ice.seasonfast). snap_km: an end no chart opens moves at most that far (None: refused, naming
         why). Route.notes record the assumptions; NoRouteError names what closes the way."""
         say = progress or (lambda message: None)
-        speed = "andreeva" if speed_table is None else speed_table
-        limit = {"concentration_limit": concentration_limit}
+        ship = as_vessel(vessel, speed_kn)
+        assert ship is not None
+        curve = ship.ice_curve if speed_table is None else None
+        speed = speed_table if speed_table is not None else (curve if curve is not None else "andreeva")
+        limit = {"concentration_limit": concentration_limit and curve is None}
         model = IceSeasonTime(
-            self.grid, vessel, speed_kn, departure=depart, speed=speed, fast_ice=fast_ice, **limit
+            self.grid,
+            ship.ice_class or "Arc7",
+            ship.speed_kn,
+            departure=depart,
+            speed=speed,
+            fast_ice=fast_ice,
+            **limit,
         )
+        said_ship = vessel_notes(ship)
         assumed = [f"assumed: {said}" for said in model.assumptions]
         snap = snap_km is not None
         # Only an end no chart opens moves (an end closed at departure may open later: the ship waits).
@@ -83,7 +98,7 @@ class OpenSeason:
             why=closed_reason(model),
         )
         say(
-            f"routing {model.ice_class} at {speed_kn:g} kn from {model.departure} "
+            f"routing {model.ice_class} at {ship.speed_kn:g} kn from {model.departure} "
             f"({neighbourhood}x{neighbourhood} stencil, waiting allowed)"
         )
         chart = prepare(self.grid, neighbourhood=neighbourhood)
@@ -97,12 +112,32 @@ class OpenSeason:
             )
             err.notes = tuple(assumed) + tuple(moved)
             raise err from None
+        ages = chart_ages(self.grid.times, r)
         return dataclasses.replace(
             r,
             name=name,
-            notes=r.notes + tuple(self.notes) + tuple(moved),
+            notes=r.notes + tuple(self.notes) + tuple(said_ship) + tuple(moved) + tuple(ages),
             requested=(tuple(start), tuple(end)),
         )
+
+
+def chart_ages(times, r) -> list[str]:
+    """The charts used against the legs that use them: a warning when a leg runs more than
+    CHART_AGE_DAYS after the date of the chart it crosses (the charts are too sparse)."""
+    timed = schedule(r)
+    if timed is None or timed.departure is None or times.size == 0:
+        return []
+    at = np.array([timed.eta(i) for i in range(len(r.coords))], dtype="datetime64[s]")
+    k = np.clip(np.searchsorted(times.astype("datetime64[s]"), at, side="right") - 1, 0, times.size - 1)
+    age = (at - times.astype("datetime64[s]")[k]) / np.timedelta64(1, "D")
+    worst = int(np.argmax(age))
+    if age[worst] <= CHART_AGE_DAYS:
+        return []
+    date = str(times[k[worst]])[:16]
+    return [
+        f"warning: the ice chart of {date} is {age[worst]:.1f} days older than the part of the voyage that "
+        f"crosses it (at {str(at[worst])[:16]}; more than {CHART_AGE_DAYS:g}): add newer charts"
+    ]
 
 
 def open_season(

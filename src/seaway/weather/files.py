@@ -35,6 +35,11 @@ CDO_CODES = {
     "var165": ("wind_east", "table 128: 10 m eastward wind"),
     "var166": ("wind_north", "table 128: 10 m northward wind"),
     "var207": ("wind_speed", "table 128: 10 m wind speed"),
+    "var31": ("ice_concentration", "table 128: sea-ice cover (fraction)"),
+    "var91": ("ice_concentration", "WMO table 2: ice cover (proportion)"),
+    "var92": ("ice_thickness", "WMO table 2: ice thickness (m)"),
+    "var95": (None, "WMO table 2: u-component of ice drift (not a role: seaway does not price the drift)"),
+    "var96": (None, "WMO table 2: v-component of ice drift (not a role: seaway does not price the drift)"),
 }
 _CDO_ABSOLUTE = re.compile(r"^\s*day\s+as\s+%Y%m%d(\.%f)?\s*$")
 
@@ -44,12 +49,12 @@ def unknown_fields_hint(ds) -> str:
     codes = [n for n in map(str, ds.data_vars) if n in CDO_CODES]
     if not codes:
         return ""
-    flags = " ".join(f"--forecast-variable {CDO_CODES[n][0]}={n}" for n in codes)
+    flags = " ".join(f"--forecast-variable {CDO_CODES[n][0]}={n}" for n in codes if CDO_CODES[n][0])
     meaning = "; ".join(f"{n} = {CDO_CODES[n][1]}" for n in codes)
     return (
-        f"; its variables look like GRIB code numbers written by CDO ({meaning} in ECMWF's "
-        f"tables, but a code number alone does not say which table): if they are, map them "
-        f"with {flags} (variables={{role: name}} in the API)"
+        f"; its variables look like GRIB code numbers written by CDO ({meaning}; a code number alone "
+        f"does not say which table it is from): if they are, map them with {flags or 'no role'} "
+        f"(variables={{role: name}} in the API)"
     )
 
 

@@ -24,6 +24,8 @@ GRIB_NAMES = {
     "wind_speed": ("si10", "ws10"),
     "current_east": ("uo", "ocu", "uogrd"),
     "current_north": ("vo", "ocv", "vogrd"),
+    "ice_concentration": ("ci", "siconc", "icec"),
+    "ice_thickness": ("sithick", "sit", "icetk"),
 }
 
 

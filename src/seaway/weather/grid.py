@@ -7,6 +7,7 @@ import numpy as np
 
 from .. import _core
 from ..base.units import KNOTS_PER_MS
+from ..chart.cf import ICE_ROLES
 from ..chart.raster import as_chart
 from ..constraints import hard_only
 from ..engine.methods import check_options
@@ -93,6 +94,15 @@ class ForecastGrid:
     def __init__(self, forecast, variables=None, departure=None, *, persist=False, source=None):
         forecast = decode_time(forecast)
         fields = find_fields(forecast, variables)
+        #: The forecast's own ice (its sea-ice concentration and thickness), by role: not weather,
+        #: priced by the ice models (seaway.voyage.forecastice), left out of the arrays here.
+        self.ice = {r: fields.pop(r) for r in ICE_ROLES if r in fields}
+        if not fields and self.ice:
+            raise ValueError(
+                "the forecast has only ice (sea-ice concentration or thickness) and no weather: "
+                "route through its ice as a season of charts (seaway.open_season), or add its currents, "
+                "winds or waves"
+            )
         if not fields:
             raise ValueError(
                 "the forecast has no field seaway knows; mark them with CF standard "
