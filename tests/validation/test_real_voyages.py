@@ -39,18 +39,19 @@ class Voyage:
     end: tuple[float, float]
     nm: float
     hours: float
+    depart: str
     escort_kn: float | None = None
 
 
 #: Christophe de Margerie, 5-16 Jan 2021, unescorted: 2,474 nm in 10 d 21 h (Paluba.media; PortNews).
-V5 = Voyage("V5", "arc7-lng-carrier", SABETTA, DEZHNEV, 2474.0, 10 * 24 + 21.0)
+V5 = Voyage("V5", "arc7-lng-carrier", SABETTA, DEZHNEV, 2474.0, 10 * 24 + 21.0, "2021-01-05")
 #: The same ship, 7-19 Feb 2021, escorted by 50 Let Pobedy: 2,449 nm (Rosatom) in 11 d 10 h
 #: (Sovcomflot via PortNews); the convoy's average 8.6 kn (Rosatom).
-V6 = Voyage("V6", "arc7-lng-carrier", DEZHNEV, SABETTA, 2449.0, 11 * 24 + 10.0, escort_kn=8.6)
+V6 = Voyage("V6", "arc7-lng-carrier", DEZHNEV, SABETTA, 2449.0, 11 * 24 + 10.0, "2021-02-07", 8.6)
 #: Shturman Ovtsyn, 21 Dec 2016 - 3 Jan 2017, Bering Strait -> Gulf of Ob with 50 Let Pobedy:
 #: "some 2,400 nm" (All About Shipping, 11 Jan 2017); 13 days from the dates (+-1 day); the
 #: convoy's speed is not published: seaway's default escort speed (6 kn, an assumption).
-V9 = Voyage("V9", "arc7-shuttle-tanker", BERING, SABETTA, 2400.0, 13 * 24.0, escort_kn=6.0)
+V9 = Voyage("V9", "arc7-shuttle-tanker", BERING, SABETTA, 2400.0, 13 * 24.0, "2016-12-21", 6.0)
 
 
 def route(path, v: Voyage, rule="mid", stage=None, snap_km=30.0):
@@ -65,6 +66,7 @@ def route(path, v: Voyage, rule="mid", stage=None, snap_km=30.0):
         escort_speed_kn=v.escort_kn,
         stage_thickness=rule,
         snap_km=snap_km,
+        depart=v.depart,
     )
     s = r.summary()
     return r, s["length_nm"], s["time_h"]
@@ -92,6 +94,11 @@ def test_christophe_de_margerie_february_2021_escorted(february):
     lower, upper = route(february, V6, "lower")[2], route(february, V6, "upper")[2]
     assert lower < V6.hours < upper
     assert nm / hours == pytest.approx(V6.escort_kn, rel=0.10)  # the convoy's 8.6 kn
+    said = " ".join(r.notes + tuple(r.assumptions))  # every assumption is said with the route
+    assert "under icebreaker escort 8.6 kn (given)" in said and "the middle of its WMO range" in said
+    assert (
+        "fast ice of unknown stage (FA 08, SA 99)" in said and "ASSUMED thick first-year ice (WMO 93)" in said
+    )
 
 
 def test_christophe_de_margerie_january_2021_on_the_february_chart(february):
@@ -118,6 +125,7 @@ def test_christophe_de_margerie_on_the_nsidc_chart(v):
     # 1 % the chart's projected km may lose (EPSG:3411 is true to scale at 70 N only).
     assert 0.99 * great_circle_nm(v) < nm < v.nm
     assert any("taken as medium first-year ice (WMO stage 91), an assumption" in n for n in r.notes)
+    assert any(n.startswith("warning: the ice chart of 2021-12-31 is") for n in r.notes)  # another year
 
 
 @pytest.mark.needs_data(*NSIDC)
@@ -132,3 +140,4 @@ def test_shturman_ovtsyn_december_2016_on_the_nsidc_chart():
     assert sum(leg.escorted_km for leg in r.legs()) == 0.0
     lower, upper = route(path, V9, "lower", 91)[2], route(path, V9, "upper", 91)[2]
     assert lower < V9.hours < upper
+    assert any("ice chart of 2021-12-31: -1836.0 days at departure" in n for n in r.notes)
