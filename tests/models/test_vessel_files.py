@@ -21,7 +21,8 @@ def test_every_value_of_a_shipped_example_has_its_source_or_is_an_assumption(nam
     assert given <= set(raw["sources"]) and set(raw["sources"]) <= given
     for key, text in raw["sources"].items():
         assert text.startswith("assumption") or any(
-            w in text for w in ("Sotnikova 2009", "Olovyannikov 2025", "CHNL Information Office, 2017")
+            w in text
+            for w in ("Sotnikova 2009", "Olovyannikov 2025", "CHNL Information Office, 2017", "Polar Record")
         ), (key, text)
     profile = load(name)
     assert profile.path == f"{name} (shipped with seaway)" and profile.vessel.check(waves=False) is None

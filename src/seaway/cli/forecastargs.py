@@ -128,8 +128,8 @@ def add_voyage_options(rp) -> None:
         "--vessel-file",
         metavar="FILE",
         help="vessel file (TOML or JSON, seaway.vessel.load) or a shipped example: "
-        "arc7-lng-carrier, pc6-general-cargo, sotnikova-container-ship; its ice class, service "
-        "speed, draft, ice curve and fuel curve; --vessel, --speed, --draft and --displacement "
+        "arc7-lng-carrier, arc7-shuttle-tanker, pc6-general-cargo, sotnikova-container-ship; its ice "
+        "class, service speed, draft, ice curve and fuel curve; --vessel, --speed, --draft and --displacement "
         "override its values",
     )
     g.add_argument(

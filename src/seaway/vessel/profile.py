@@ -91,7 +91,7 @@ FIELDS = {
 }
 REQUIRED = ("name", "service_speed_kn")
 #: The vessel files shipped with the package (load(name) reads them).
-EXAMPLES = ("arc7-lng-carrier", "pc6-general-cargo", "sotnikova-container-ship")
+EXAMPLES = ("arc7-lng-carrier", "arc7-shuttle-tanker", "pc6-general-cargo", "sotnikova-container-ship")
 
 
 #: The plausible range of each number (min, max) and what it is drawn from: a value outside is a
