@@ -47,11 +47,6 @@ def test_an_end_in_fast_ice_is_said_to_be_in_fast_ice(chart):
         opened.route(KARA_GATE, SABETTA, snap_km=20)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="escort is used only where the ship has no speed of its own: in thicker ice the escorted "
-    "ship makes the escort's 8.6 kn, in thinner ice its own 3.3 kn, so thicker ice is quicker",
-)
 def test_thicker_ice_never_makes_an_escorted_voyage_quicker(chart):
     """The Arc7 tanker (14 kn, 2 kn at 1.8 m) with an 8.6 kn escort: thick first-year ice at the
     upper end of its range (2.0 m) cannot give a shorter voyage than at its middle (1.6 m)."""

@@ -84,16 +84,17 @@ def february(tmp_path_factory):
 
 
 def test_christophe_de_margerie_february_2021_escorted(february):
-    """V6 on the chart of its month. The LNG carrier has a speed of its own in every ice the
-    chart holds (thick first-year ice, 1.6 m, < the curve's 2.1 m), so the escort is never
-    used: the model's convoy is the ship on its own."""
+    """V6 on the chart of its month, the escort at the convoy's 8.6 kn wherever the LNG carrier
+    alone is slower (thick first-year ice: 1.6 m at 10/10 gives it 6.2 kn by its curve), its own
+    speed elsewhere. The real convoy sailed at the icebreaker's pace end to end, so the model is
+    quicker than the ship: by at most 25 %; with the escort nowhere quicker than the convoy's
+    average, the model is not slower than the published time either."""
     r, nm, hours = route(february, V6)
     assert abs(nm / V6.nm - 1) <= 0.10
-    assert abs(hours / V6.hours - 1) <= 0.15
-    assert sum(leg.escorted_km for leg in r.legs()) == 0.0
-    lower, upper = route(february, V6, "lower")[2], route(february, V6, "upper")[2]
-    assert lower < V6.hours < upper
-    assert nm / hours == pytest.approx(V6.escort_kn, rel=0.10)  # the convoy's 8.6 kn
+    assert 0.75 * V6.hours <= hours < V6.hours
+    assert sum(leg.escorted_km for leg in r.legs()) > 0
+    assert nm / hours > V6.escort_kn  # escorted at 8.6 kn where slower, quicker elsewhere
+    assert route(february, V6, "lower")[2] < hours < route(february, V6, "upper")[2]
     said = " ".join(r.notes + tuple(r.assumptions))  # every assumption is said with the route
     assert "under icebreaker escort 8.6 kn (given)" in said and "the middle of its WMO range" in said
     assert (
@@ -119,7 +120,10 @@ def test_christophe_de_margerie_on_the_nsidc_chart(v):
     path = str(SHARED_DATA.joinpath(*NSIDC))
     r, nm, medium = route(path, v, stage=91)
     thick = route(path, v, stage=93)[2]
-    assert medium < v.hours < thick
+    if v.escort_kn is None:
+        assert medium < v.hours < thick
+    else:  # the escort at 8.6 kn wherever the ship alone is slower caps the thick ice's slowness
+        assert medium < thick < v.hours
     # Shorter than the ship's track (the chart has no old ice, no fast ice: the route cuts across
     # the pack north of the New Siberian Islands), not shorter than the great circle but for the
     # 1 % the chart's projected km may lose (EPSG:3411 is true to scale at 70 N only).

@@ -25,7 +25,8 @@ Speed of a class in a chart's ice (knots), `speed=`:
 * "andreeva" (default): Andreeva 2021 through seaway.ice.andreeva, V = F * V0, F = f2 * other_factor
   with f2 = 1 - h / h_pass (h_pass the class's Table-1 thickness unless given); h is the
   `thickness` layer if the season has one, else the governing stage's typical thickness (the
-  upper end of its WMO range by default: conservative; `stage_thickness="mid"` the middle);
+  middle of its WMO range by default; `stage_thickness="upper"` the conservative end, "lower",
+  or a table {stage: m});
   `other_factor` is f1 * f3 (1 by default; e.g. andreeva.f1(draft, depth) for depth).
 * a table {WMO stage: knots} or {stage: {max CT tenths: knots, ...}} read on the governing stage
   (55 ice free, 99 unknown) and total concentration; a stage the table lacks raises.
