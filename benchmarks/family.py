@@ -70,9 +70,14 @@ def _with_voyages(chart, corner):
     labels, _ = ndimage.label(np.isfinite(chart.raster), np.ones((3, 3)))
     largest = np.bincount(labels.ravel())[1:].argmax() + 1  # the largest water body
     water = np.argwhere(labels == largest)
+    prepared = seaway.prepare(chart.cost)
     s = _nearest_water(water, corner[0])
-    field = seaway.prepare(chart.cost).cost_field(_point(chart, s))
-    reach = np.argwhere(np.isfinite(np.asarray(getattr(field, "values", field))))
+    for k in range(20):  # a start whose 5 x 5 steps reach most of the water body (not a cove)
+        field = prepared.cost_field(_point(chart, s))
+        reach = np.argwhere(np.isfinite(np.asarray(getattr(field, "values", field))))
+        if len(reach) >= len(water) / 2:
+            break
+        s = tuple(map(int, water[np.random.default_rng(k).integers(len(water))]))
     e = _nearest_water(reach, corner[1])
     pick = np.random.default_rng(21).choice(len(reach), size=(PAIRS, 2), replace=False)
     chart.pixels = [(s, e)] + [(tuple(map(int, reach[a])), tuple(map(int, reach[b]))) for a, b in pick]
@@ -120,7 +125,9 @@ def _aari(tmp):
 
     path = os.path.join(tmp, "panarctic.shp")
     panarctic.write(path, cell_km=250.0)
-    return _sigrid(path, (66.5, 80.0, 58.5, 113.5, 0.05), "sigrid (AARI-shaped)", "SIGRID-3 synthetic, lat/lon")
+    return _sigrid(
+        path, (66.5, 80.0, 58.5, 113.5, 0.05), "sigrid (AARI-shaped)", "SIGRID-3 synthetic, lat/lon"
+    )
 
 
 def _cis(tmp):
@@ -142,6 +149,4 @@ BUILDERS = {
     "game map": lambda tmp: _planar("game map", "game-map coastline", False, game_map()),
     "maze": lambda tmp: _planar("maze", "maze of narrow channels", False, maze()),
 }
-NAMES = [
-    n.strip() for n in os.environ.get("SEAWAY_BENCH_CHARTS", ",".join(BUILDERS)).split(",") if n.strip()
-]
+NAMES = [n.strip() for n in os.environ.get("SEAWAY_BENCH_CHARTS", ",".join(BUILDERS)).split(",") if n.strip()]

@@ -15,9 +15,13 @@ unit squares to them), which makes their searches no harder."""
 
 from __future__ import annotations
 
+import os
+
 import numpy as np
 
 PEERS = ("skimage", "tcod dijkstra", "tcod astar", "pyastar2d")
+#: SEAWAY_BENCH_PEERS (comma-separated) runs fewer peers; scikit-image always runs (the ratios).
+CHOSEN = {"skimage"} | set(os.environ.get("SEAWAY_BENCH_PEERS", ",".join(PEERS)).split(","))
 
 
 def skimage_route(raster, s, e):
@@ -62,9 +66,10 @@ def peer_cases(raster, s, e):
     (the raster scaled by its least cost, once, outside the timing)."""
     least = float(raster[np.isfinite(raster)].min())
     scaled = (raster / min(least, 1.0)).astype(np.float32)
-    return {
+    runs = {
         "skimage": lambda: skimage_route(raster, s, e),
         "tcod dijkstra": lambda: tcod_route(raster, s, e, False),
         "tcod astar": lambda: tcod_route(raster, s, e, True),
         "pyastar2d": lambda: pyastar2d_route(scaled, s, e),
     }
+    return {name: run for name, run in runs.items() if name in CHOSEN}

@@ -8,7 +8,7 @@ Each round runs every case of a voyage once, in a rotated order (a busy machine 
 alike); the medians of the rounds give wall and CPU seconds (time.process_time: all threads of
 the process), pixels settled and CPU nanoseconds per settled pixel; ratio = the wall median over
 scikit-image's. Every case asserts its cost equals Dijkstra's to 1e-9. Also timed: auto's own
-work on a prepared chart (its decision: seaway.engine.methods.refine) and on a fresh chart
+work on a prepared chart (its decision: seaway.engine.methods.resolve) and on a fresh chart
 (preparing it: seaway.prepare). The tables are printed at the end of the run (conftest.py).
 Command (benchmarks/README.md):
 
@@ -23,7 +23,6 @@ import numpy as np
 import pytest
 
 import seaway
-from seaway.chart.locate import locate
 from seaway.engine import methods
 
 from .conftest import VOYAGES
@@ -78,8 +77,7 @@ def _cases(chart, prepared, s, e, ps, pe):
     for m in PREPARED:
         out[("prepared", m)] = lambda m=m: prepared.route(s, e, method=m)
     model = prepared.model
-    lp, le = locate(prepared.chart, s, "start"), locate(prepared.chart, e, "end")
-    out[("prepared", "decision")] = lambda: methods.refine(prepared, model, "landmarks", "auto", lp, le)
+    out[("prepared", "decision")] = lambda: methods.resolve(prepared, model, "auto")
     return out
 
 

@@ -52,7 +52,8 @@ def summary(rows):
             cells.append(f"{v0:.3f} / {statistics.median(every):.3f} / {max(every):.3f}")
         f, p = (_auto_vs_fastest(rows, season, c) for c in ("fresh", "prepared"))
         cells.append(f"{f[0]:.2f} ({f[1]}); {p[0]:.2f} ({p[1]})")
-        cells.append(", ".join(f"{statistics.median(r['ratio'] for r in _pick(rows, season, 'peer', m)):.2f}" for m in PEERS))
+        peers = [[r["ratio"] for r in _pick(rows, season, "peer", m)] for m in PEERS]
+        cells.append(", ".join(f"{statistics.median(p):.2f}" if p else "-" for p in peers))
         dec = statistics.median(r["wall"] for r in _pick(rows, season, "prepared", "decision"))
         prep = statistics.median(r["wall"] for r in _pick(rows, season, "fresh", "prepare"))
         cells.append(f"{1e3 * dec:.2f}; {1e3 * prep:.1f}")
