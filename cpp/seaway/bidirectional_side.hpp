@@ -54,6 +54,9 @@ struct Meeting {
 // many pixels; only then does the backward side start: a short voyage costs no thread and no
 // rounds, a long one loses about this many pixels' time on one core.
 constexpr std::int64_t solo_pixels = 4096;
+// The least count of pixels a side settles in a round (later 1/16 of what it has settled): the
+// stop is decided only at the barriers, so a search overshoots by up to a round per side.
+constexpr std::int64_t round_pixels = 1024;
 
 // One side of the search. Backward == true walks the steps into each pixel; each step is priced
 // as the forward step it is (from -> to), with no time (the model is static). The forward side
@@ -75,8 +78,8 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
     return std::max(0.0, Backward ? d - pot(v) + shift : d + pot(v) - shift);
   };
   heap.push({0.0, std::uint32_t(origin)});
-  // Rounds of a count of settled pixels, the same on both sides (4096, later 1/16 of what the
-  // side has settled): the two threads get equal work whatever the ends' surroundings, and the
+  // Rounds of a count of settled pixels, the same on both sides (round_pixels, later 1/16 of
+  // what the side has settled): the two threads get equal work whatever the ends' surroundings, and the
   // last round overshoots the stop by at most 1/16. The count depends on nothing but this
   // side's own search, so the rounds are the same on every run.
   double mu = inf;
@@ -121,7 +124,7 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
     // Search: settle this round's count of pixels (the forward side's first round adds to the
     // pixels it settled alone).
     if (Backward || passed > 0) settled_now.clear();
-    const std::int64_t quota = std::max<std::int64_t>(4096, stats.settled / 16);
+    const std::int64_t quota = std::max<std::int64_t>(round_pixels, stats.settled / 16);
     while (std::int64_t(settled_now.size()) < quota && !heap.empty()) {
       const HeapEntry top = heap.pop();
       const double dv = mine.get(top.id);

@@ -199,7 +199,7 @@ def test_cancel_token_stops_bidirectional_and_landmark_building():
 def test_bidirectional_is_the_same_bit_for_bit_on_one_core_and_on_two():
     """The rounds are counts of settled pixels and the stop is decided at barriers, so the
     threads' timing cannot change the answer: pinned to one core (the two sides then take turns)
-    and free on two, the route and its cost are identical, over many rounds (4096 pixels each)."""
+    and free on two, the route and its cost are identical, over many rounds (1024 pixels each, after the solo start)."""
     import os
 
     rng = np.random.default_rng(9)
