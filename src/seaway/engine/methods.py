@@ -16,10 +16,12 @@ Methods (all exact except weighted A*):
   mean of the two ends x the step's length; the integral over the same segment).
 * "auto" (the default): "astar" if a weight is given; on a chart with landmarks for the query's
   model, "landmarks"; else "bidirectional" for a static raster model (with the A* potential on
-  a low-contrast chart); else "astar" (time-dependent models). No estimate is needed: every
+  a low-contrast chart); else "astar" (time-dependent models). It estimates nothing: every
   two-thread search first searches alone from the start (cpp/seaway/bidirectional_side.hpp),
-  so a short voyage costs what a one-way search does, and the landmark search's potential
-  includes the straight-line bound, so it prunes at least what bidirectional A* does. Measured in benchmarks/README.md."""
+  so a short voyage costs what a one-way search does, and the landmark potential takes the max
+  with the straight-line bound, so its bounds are at least as tight as bidirectional A*'s.
+  (A fitted estimate of each method's time chose slower methods on charts it was not fitted
+  on: benchmarks/README.md.)"""
 
 from __future__ import annotations
 
