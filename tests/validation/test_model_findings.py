@@ -25,25 +25,21 @@ def chart(tmp_path_factory):
     return str(path)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="seaway.voyage.ends.check_ends raises a bare ValueError for an end on an impassable "
-    "pixel; errors.py and the quickstart promise a SeawayError (SnapError)",
-)
 def test_an_end_in_ice_the_ship_may_not_enter_is_a_seaway_error(chart):
     opened = seaway.open_chart(chart, land="chart", vessel="Arc4", ends=(KARA_GATE, SABETTA))
-    with pytest.raises(seaway.SeawayError):
+    with pytest.raises(seaway.SnapError):
         opened.route(KARA_GATE, SABETTA)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="the refusal of an end in fast ice of unknown stage names it 'unknown (WMO stage 99)', "
-    "not fast ice (and not the stage the fast-ice rule assumed)",
-)
 def test_an_end_in_fast_ice_is_said_to_be_in_fast_ice(chart):
+    """Fast ice of unknown stage (AARI's FA 08, SA 99) is named so, with the stage the fast_ice
+    rule gave it, never 'unknown (WMO stage 99)'."""
     opened = seaway.open_chart(chart, land="chart", vessel="Arc4", ends=(KARA_GATE, SABETTA))
-    with pytest.raises(ValueError, match=r"end 71.27,72.07 is on an impassable pixel \(fast ice"):
+    with pytest.raises(
+        ValueError,
+        match=r"end 71.27,72.07 is on an impassable pixel \(ice an Arc4 ship may not enter: fast ice of "
+        r"unknown stage, assumed thick first-year ice \(WMO stage 93\)",
+    ):
         opened.route(KARA_GATE, SABETTA, snap_km=20)
 
 

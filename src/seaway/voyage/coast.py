@@ -24,7 +24,7 @@ GLOBE_KM = 0.926
 #: any land in a pixel would close straits up to twice as wide (said; --land or --grid then).
 MERGE_MAX_KM = 10.0
 #: At most this many samples a side per pixel (a coarser pixel is sampled more sparsely; said).
-MAX_SIDE = 8
+MAX_SIDE = 12
 VECTOR = (".shp", ".gpkg", ".geojson", ".json", ".zip")
 
 
@@ -57,7 +57,7 @@ def coast_land(chart, source=None):
     if source is None:
         from global_land_mask import globe
 
-        return _sampled(chart, globe.is_land, GLOBE_KM), PACKAGE_COAST, GLOBE_KM
+        return _any_land(chart, globe.is_land, 1.0 / 120.0, 1.0 / 120.0, GLOBE_KM), PACKAGE_COAST, GLOBE_KM
     path = os.fspath(source)
     if not os.path.exists(path):
         raise ChartError(
@@ -65,12 +65,18 @@ def coast_land(chart, source=None):
         )
     if path.lower().endswith(VECTOR) or os.path.isdir(path):
         return _polygons(chart, path), f"{os.path.basename(path)} (land polygons)", 0.0
-    mask, km = _raster(path)
-    return _sampled(chart, mask, km), f"{os.path.basename(path)} (a land mask of {km:.2g} km)", km
+    lookup, dlat, dlon = _raster(path)
+    km = dlat * 111.2
+    return (
+        _any_land(chart, lookup, dlat, dlon, km),
+        f"{os.path.basename(path)} (a land mask of {km:.2g} km)",
+        km,
+    )
 
 
 def _raster(path):
-    """(lookup (lat, lon) -> land, resolution km) of a land mask on a regular lat/lon grid."""
+    """(lookup (lat, lon) -> land, its cells' size in degrees of latitude and longitude) of a land
+    mask on a regular lat/lon grid."""
     if path.lower().endswith((".tif", ".tiff")):
         da = read_geotiff(path)
     else:
@@ -100,15 +106,45 @@ def _raster(path):
         out[inside] = values[i[inside], j[inside]]
         return out
 
-    return lookup, abs(dlat) * 111.2
+    return lookup, abs(dlat), abs(dlon)
+
+
+def _any_land(chart, is_land, dlat_land, dlon_land, km):
+    """Any land of `is_land` in each pixel: on a lat/lon chart a lattice at half the land's cells
+    (in degrees of latitude and of longitude, the pixels' edges included) reduced pixel by pixel;
+    on a projected chart samples across each pixel (_sampled)."""
+    if chart.projection is not None:
+        return _sampled(chart, is_land, km)
+    g = chart.grid
+    lat, lon = _axes(g)
+    lat_first = [str(d).lower() for d in g.dims][0] in ("lat", "latitude")
+    dla, dlo = abs(float(lat[1] - lat[0])), abs(float(lon[1] - lon[0]))
+    lon = np.unwrap(np.asarray(lon, float), period=360.0)
+    fine_lon = np.arange(lon.min() - dlo / 2, lon.max() + dlo / 2 + dlon_land / 4, dlon_land / 2)
+    col_lo = np.searchsorted(fine_lon, lon - dlo / 2 - 1e-9)
+    col_hi = np.searchsorted(fine_lon, lon + dlo / 2 + 1e-9, side="right")
+    out = np.zeros((lat.size, lon.size), bool)
+    wrapped = (fine_lon + 180.0) % 360.0 - 180.0
+    for r in range(lat.size):  # one row of pixels at a time: its lattice rows x every column
+        fine_lat = np.arange(lat[r] - dla / 2, lat[r] + dla / 2 + dlat_land / 4, dlat_land / 2)
+        la, lo = np.meshgrid(np.clip(fine_lat, -90, 90), wrapped, indexing="ij")
+        hit = is_land(la.ravel(), lo.ravel()).reshape(la.shape).any(axis=0)
+        cs = np.concatenate([[0], np.cumsum(hit)])
+        out[r] = cs[col_hi] - cs[col_lo] > 0
+    return out if lat_first else out.T
+
+
+def samples_a_side(chart, km) -> int:
+    """Samples a side of a pixel: at most half the land's resolution apart (at most MAX_SIDE)."""
+    return int(min(MAX_SIDE, max(2, np.ceil(2 * pixel_km(chart) / max(km, 0.05)) + 1)))
 
 
 def _sampled(chart, is_land, km):
     """Any land of `is_land` (lat, lon -> bool) within each pixel: an n x n lattice of samples a
     pixel, n from the pixel's size over the land's resolution (at most MAX_SIDE)."""
     g = chart.grid
-    n = int(min(MAX_SIDE, max(2, np.ceil(pixel_km(chart) / max(km, 0.05)) + 1)))
-    t = (np.arange(n) + 0.5) / n - 0.5
+    n = samples_a_side(chart, km)
+    t = np.linspace(-0.5, 0.5, n)  # the pixel's edges included: land touching it counts
     rows, cols = g.shape
     out = np.zeros((rows, cols), bool)
     if chart.projection is not None:
@@ -194,10 +230,7 @@ def merge_coast(chart, source=None) -> None:
             land=chart.layers["land"].copy(data=np.asarray(chart.layers["land"].values, bool) | mask)
         )
     px = pixel_km(chart)
-    sampled = (
-        f", sampled every {px / min(MAX_SIDE, max(2, np.ceil(px / max(km, 0.05)) + 1)):.1f} km" if km else ""
-    )
     chart.notes.append(
-        f"land: the chart's own and {what}{sampled}: a pixel with any of it is land ({added} pixels more than "
+        f"land: the chart's own and {what}: a pixel with any of it is land ({added} pixels more than "
         f"the chart's); straits narrower than about two pixels ({2 * px:.0f} km) close: a finer --grid opens them on a vector chart; --land chart (land=\"chart\") keeps the chart's own land"
     )

@@ -129,9 +129,8 @@ def check_ends(
             why=why or described,
         )
     except SnapError as exc:  # no usable pixel joins the other end
-        raise ValueError(
-            "; ".join(_refusal(m, given[m.name], np.inf, snap, snap_km, show, unit) for m in exc.moves)
-        ) from None
+        said = "; ".join(_refusal(m, given[m.name], np.inf, snap, snap_km, show, unit) for m in exc.moves)
+        raise SnapError(exc.moves, np.inf, unit, said) from None
 
     def km(m):  # a projected chart: great-circle km between the point asked for and the new one
         if to_user is None:
@@ -141,7 +140,8 @@ def check_ends(
 
     far = [m for m in snapped.moves if not (snap and km(m) <= snap_km)]
     if far:
-        raise ValueError("; ".join(_refusal(m, given[m.name], km(m), snap, snap_km, show, unit) for m in far))
+        said = "; ".join(_refusal(m, given[m.name], km(m), snap, snap_km, show, unit) for m in far)
+        raise SnapError(far, snap_km if snap else 0.0, unit, said)
     notes = []
     for m in snapped.moves:
         notes.append(
