@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 #: The sphere the engine measures on (km): the IUGG mean Earth radius R1.
 EARTH_RADIUS_KM = 6371.0088
@@ -38,7 +39,7 @@ def km_per(units: object) -> float | None:
     return None if m is None else m / 1000.0
 
 
-def _registry():
+def _registry() -> Any:
     global _UREG
     if _UREG is None:
         import pint
@@ -47,4 +48,4 @@ def _registry():
     return _UREG
 
 
-_UREG = None
+_UREG: Any = None
