@@ -48,5 +48,5 @@ def test_coordinates_without_units_are_taken_as_km_and_the_route_says_so():
 
 
 def test_coordinates_in_other_units_are_refused_naming_the_fix():
-    with pytest.raises(ValueError, match=r"'pixels': give planar coordinates in 'm' or 'km'"):
+    with pytest.raises(ValueError, match=r"'pixels': give planar coordinates in a length \('m' or 'km'\)"):
         _route(_season(10.0, "pixels"))

@@ -10,40 +10,12 @@ import numpy as np
 import xarray as xr
 
 from ..base.units import km_per
+from .roles import STANDARD_NAMES
 
 LAT_NAMES = ("lat", "latitude", "nav_lat")
 LON_NAMES = ("lon", "longitude", "long", "nav_lon")
 Y_NAMES = ("y", "yc", "northing")
 X_NAMES = ("x", "xc", "easting")
-
-#: CF standard names searched for each field, first match wins.
-STANDARD_NAMES = {
-    "current_east": (
-        "eastward_sea_water_velocity",
-        "surface_eastward_sea_water_velocity",
-        "barotropic_eastward_sea_water_velocity",
-    ),
-    "current_north": (
-        "northward_sea_water_velocity",
-        "surface_northward_sea_water_velocity",
-        "barotropic_northward_sea_water_velocity",
-    ),
-    "wave_height": ("sea_surface_wave_significant_height",),
-    "wave_from": ("sea_surface_wave_from_direction",),
-    "wave_period": (
-        "sea_surface_wave_mean_period",
-        "sea_surface_wave_mean_period_from_variance_spectral_density_first_frequency_moment",
-        "sea_surface_wave_period_at_variance_spectral_density_maximum",
-    ),
-    "wind_east": ("eastward_wind",),
-    "wind_north": ("northward_wind",),
-    "wind_speed": ("wind_speed",),
-    # the ice of a coupled ice-ocean forecast (HYCOM-CICE, TOPAZ, ROMS): priced with the currents
-    "ice_concentration": ("sea_ice_area_fraction",),
-    "ice_thickness": ("sea_ice_thickness",),
-}
-#: Roles that are the ice of a forecast, not its weather (seaway.voyage.forecastice prices them).
-ICE_ROLES = ("ice_concentration", "ice_thickness")
 
 #: Grid-relative vector pairs and the east/north names they become. In the CF standard name table
 #: "x" and "y" name components along the grid's own x and y axes (positive towards increasing
@@ -90,21 +62,60 @@ GRID_PAIRS = {
 }
 
 
+#: Our roles and cf_xarray's names for them; the attributes that say which is which (standard_name,
+#: units, axis, _CoordinateAxisType, ...) are cf_xarray's table (cf_xarray.criteria), not ours.
+_CF_ROLES = (
+    ("lat", "latitude", LAT_NAMES),
+    ("lon", "longitude", LON_NAMES),
+    ("y", "Y", Y_NAMES),
+    ("x", "X", X_NAMES),
+)
+
+
 def coord_role(name: Hashable, attrs: Mapping[Any, Any]) -> str | None:
-    """'lat', 'lon', 'y' or 'x' for a coordinate, by its name or CF attributes."""
-    lname = str(name).lower()
-    std = str(attrs.get("standard_name", "")).lower()
-    units = str(attrs.get("units", "")).lower()
-    axis = str(attrs.get("axis", "")).upper()
-    if lname in LAT_NAMES or std == "latitude" or units in ("degrees_north", "degree_north", "degrees_n"):
-        return "lat"
-    if lname in LON_NAMES or std == "longitude" or units in ("degrees_east", "degree_east", "degrees_e"):
-        return "lon"
-    if lname in Y_NAMES or std == "projection_y_coordinate" or axis == "Y":
-        return "y"
-    if lname in X_NAMES or std == "projection_x_coordinate" or axis == "X":
-        return "x"
+    """'lat', 'lon', 'y' or 'x' for a coordinate, by its CF attributes (cf_xarray's criteria)
+    or, for a file that writes none, its name."""
+    from cf_xarray.criteria import coordinate_criteria
+
+    for role, cf_name, names in _CF_ROLES:
+        for attr, values in coordinate_criteria[cf_name].items():
+            if str(attrs.get(attr, "")) in values:
+                return role
+        if str(name).lower() in names:
+            return role
     return None
+
+
+#: Attributes of a grid-mapping variable that hold the whole CRS as text (WKT or a PROJ string).
+_CRS_TEXT = ("crs_wkt", "spatial_ref", "proj4_string", "proj4text", "proj4", "proj_params")
+
+
+def grid_mapping_crs(ds: xr.Dataset, name: str, what: str) -> tuple[Any, str]:
+    """(pyproj.CRS, where it was read) of the grid-mapping variable `name` of `ds`: its WKT or
+    PROJ text, else its CF grid-mapping parameters (pyproj.CRS.from_cf). `what` names the file's
+    variable in the errors. Needs pyproj (the [ice] extra)."""
+    if name not in ds.variables:
+        raise ValueError(f"{what} names the grid mapping {name!r}, which the file does not have")
+    try:
+        import pyproj
+    except ImportError:
+        raise ImportError(
+            f'{what} is on a projected grid, which needs pyproj: pip install "seaway[ice]"'
+        ) from None
+    attrs = dict(ds[name].attrs)
+    for key in _CRS_TEXT:
+        if attrs.get(key):
+            try:
+                return pyproj.CRS.from_user_input(attrs[key]), f"{name}.{key}"
+            except pyproj.exceptions.CRSError:
+                continue
+    try:
+        return pyproj.CRS.from_cf(attrs), f"{name} (CF parameters)"
+    except pyproj.exceptions.CRSError as exc:
+        raise ValueError(
+            f"cannot read the projection of {what} from its grid mapping {name!r} ({exc}); "
+            "fix its attributes (crs_wkt, or the CF grid-mapping parameters)"
+        ) from None
 
 
 def planar_in_km(da: xr.DataArray, what: str = "the chart") -> tuple[xr.DataArray, tuple[str, ...]]:

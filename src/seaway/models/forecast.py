@@ -12,7 +12,7 @@ import numpy.typing as npt
 
 from .. import _core
 from ..base.validate import number
-from ..chart.cf import STANDARD_NAMES
+from ..chart.roles import STANDARD_NAMES
 from ..constraints import Zone, timed_zone_engine
 from ..constraints.timed import TimedGrid
 from ..vessel import Vessel

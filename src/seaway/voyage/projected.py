@@ -14,9 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..base.units import km_per
-from ..chart.cf import coord_role
-
-_CRS_ATTRS = ("crs_wkt", "spatial_ref", "proj4_string", "proj4text", "proj4")
+from ..chart.cf import coord_role, grid_mapping_crs
 
 
 @dataclass
@@ -54,26 +52,10 @@ def find_projection(ds, da) -> Projection | None:
     name = da.attrs.get("grid_mapping")
     if not name or _axes(da) is None:
         return None
-    if name not in ds:
-        raise ValueError(f"{da.name} names the grid mapping {name!r}, which the file does not have")
     try:
-        import pyproj
-    except ImportError:
-        raise ValueError('a chart on a projected grid needs pyproj: pip install "seaway[ice]"') from None
-    attrs = ds[name].attrs
-    for key in _CRS_ATTRS:
-        if attrs.get(key):
-            try:
-                return Projection(pyproj.CRS.from_user_input(attrs[key]), f"{name}.{key}")
-            except pyproj.exceptions.CRSError:
-                continue
-    try:
-        return Projection(pyproj.CRS.from_cf(dict(attrs)), f"{name} (CF parameters)")
-    except pyproj.exceptions.CRSError as exc:
-        raise ValueError(
-            f"cannot read the projection of {da.name} from its grid mapping "
-            f"{name!r} ({exc}); fix its attributes (crs_wkt or proj4_string)"
-        ) from None
+        return Projection(*grid_mapping_crs(ds, name, str(da.name)))
+    except ImportError as exc:
+        raise ValueError(str(exc)) from None
 
 
 def in_km(da):

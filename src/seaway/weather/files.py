@@ -22,25 +22,11 @@ import warnings
 import numpy as np
 import xarray as xr
 
+from ..chart.roles import CDO_CODES
 from .forecast import ROLES, check_roles, grib_times, read_forecast
 from .projected import on_grid  # noqa: F401 - its old home; seaway.weather.projected now
 from .roles import as_roles, pick
 
-#: GRIB code numbers that CDO writes as varNNN, with their meaning in ECMWF's tables (a hint in
-#: the error only: a code number alone does not say which table it is from).
-CDO_CODES = {
-    "var229": ("wave_height", "table 140: significant height of wind waves and swell"),
-    "var230": ("wave_from", "table 140: mean wave direction"),
-    "var232": ("wave_period", "table 140: mean wave period"),
-    "var165": ("wind_east", "table 128: 10 m eastward wind"),
-    "var166": ("wind_north", "table 128: 10 m northward wind"),
-    "var207": ("wind_speed", "table 128: 10 m wind speed"),
-    "var31": ("ice_concentration", "table 128: sea-ice cover (fraction)"),
-    "var91": ("ice_concentration", "WMO table 2: ice cover (proportion)"),
-    "var92": ("ice_thickness", "WMO table 2: ice thickness (m)"),
-    "var95": (None, "WMO table 2: u-component of ice drift (not a role: seaway does not price the drift)"),
-    "var96": (None, "WMO table 2: v-component of ice drift (not a role: seaway does not price the drift)"),
-}
 _CDO_ABSOLUTE = re.compile(r"^\s*day\s+as\s+%Y%m%d(\.%f)?\s*$")
 
 

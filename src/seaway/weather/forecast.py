@@ -11,42 +11,8 @@ import xarray as xr
 
 from ..base.files import open_netcdf
 from ..base.units import metres_per
-from ..chart.cf import GRID_VECTORS, STANDARD_NAMES  # noqa: F401 - part of this API
-
-#: The roles a forecast's fields play in the weather models.
-ROLES = tuple(STANDARD_NAMES)
-#: GRIB short names (ECMWF parameter database, as cfgrib names the variables) by role.
-GRIB_NAMES = {
-    "wave_height": ("swh", "htsgw"),
-    "wave_from": ("mwd",),
-    "wave_period": ("mwp", "pp1d"),
-    "wind_east": ("u10", "10u"),
-    "wind_north": ("v10", "10v"),
-    "wind_speed": ("si10", "ws10"),
-    "current_east": ("uo", "ocu", "uogrd"),
-    "current_north": ("vo", "ocv", "vogrd"),
-    "ice_concentration": ("ci", "siconc", "icec"),
-    "ice_thickness": ("sithick", "sit", "icetk"),
-}
-
-
-#: Names users write for a role (for the hint of an unknown role).
-_ALIASES = {
-    "wave_direction": "wave_from",
-    "wave_dir": "wave_from",
-    "mean_wave_direction": "wave_from",
-    "wave_to": "wave_from",
-    "hs": "wave_height",
-    "swh": "wave_height",
-    "significant_wave_height": "wave_height",
-    "u10": "wind_east",
-    "v10": "wind_north",
-    "wind_u": "wind_east",
-    "wind_v": "wind_north",
-    "current_u": "current_east",
-    "current_v": "current_north",
-    "mean_wave_period": "wave_period",
-}
+from ..chart.cf import GRID_VECTORS, grid_mapping_crs  # noqa: F401 - part of this API
+from ..chart.roles import ALIASES, GRIB_NAMES, ROLES, STANDARD_NAMES  # noqa: F401 - part of this API
 
 
 def check_roles(variables: dict | None) -> dict:
@@ -55,7 +21,7 @@ def check_roles(variables: dict | None) -> dict:
     out = dict(variables or {})
     for role in out:
         if role not in ROLES:
-            near = _ALIASES.get(str(role).lower()) or next(
+            near = ALIASES.get(str(role).lower()) or next(
                 iter(difflib.get_close_matches(str(role), ROLES, n=1)), None
             )
             hint = f" (did you mean {near}?)" if near else ""
@@ -147,15 +113,13 @@ def grid_crs(ds: xr.Dataset, crs=None):
         raise ImportError('a projected forecast needs pyproj: pip install "seaway[ice]"') from None
     x_ax, y_ax = _axis(ds, "projection_x_coordinate"), _axis(ds, "projection_y_coordinate")
     if crs is None:
-        mapping = next(
-            (ds[v.attrs["grid_mapping"]] for v in ds.data_vars.values() if v.attrs.get("grid_mapping") in ds),
+        name = next(
+            (v.attrs["grid_mapping"] for v in ds.data_vars.values() if v.attrs.get("grid_mapping") in ds),
             None,
         )
-        if mapping is None:
+        if name is None:
             raise ValueError("the forecast names no grid mapping; pass crs=")
-        crs = mapping.attrs.get("crs_wkt") or mapping.attrs.get("proj4_string") or mapping.attrs.get("proj4")
-        if crs is None:
-            crs = pyproj.CRS.from_cf(dict(mapping.attrs))
+        crs = grid_mapping_crs(ds, name, "the forecast")[0]
     scale = metres_per(x_ax.attrs.get("units") or "m")
     if scale is None:
         raise ValueError(

@@ -7,8 +7,8 @@ import numpy as np
 
 from .. import _core
 from ..base.units import KNOTS_PER_MS
-from ..chart.cf import ICE_ROLES
 from ..chart.raster import as_chart
+from ..chart.roles import ICE_ROLES
 from ..constraints import hard_only
 from ..engine.methods import check_options
 from ..engine.prepared import PreparedChart

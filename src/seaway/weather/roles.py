@@ -8,7 +8,8 @@ seaway.weather.to_latlon rotates to east/north."""
 
 from __future__ import annotations
 
-from ..chart.cf import GRID_PAIRS, STANDARD_NAMES, grid_role
+from ..chart.cf import GRID_PAIRS, grid_role
+from ..chart.roles import STANDARD_NAMES
 from .forecast import role_of
 from .projected import is_projected
 
