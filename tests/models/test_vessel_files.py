@@ -148,7 +148,11 @@ def test_json_vessel_files_and_missing_files(tmp_path):
 @pytest.mark.parametrize(
     "field, value, message",
     [
-        ("beam_m", "1e30", r"beam_m .* must be between 1 and 80 \(the widest ship afloat, the Prelude FLNG, is 74 m"),
+        (
+            "beam_m",
+            "1e30",
+            r"beam_m .* must be between 1 and 80 \(the widest ship afloat, the Prelude FLNG, is 74 m",
+        ),
         ("displacement_t", "1e30", r"displacement_t .* must be between 10 and 700000 \(Seawise Giant"),
         ("length_m", "1e30", r"length_m .* must be between 5 and 500 \(Seawise Giant"),
         ("draft_m", "1" + "0" * 400, r"draft_m .* must be a positive number, got 1000"),
