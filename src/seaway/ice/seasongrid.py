@@ -19,8 +19,10 @@ import numpy.typing as npt
 import xarray as xr
 
 from ..base.files import open_netcdf
+from ..base.memory import SEASON_CHART, check_pixels
 from ..chart.cf import planar_in_km
 from ..chart.raster import Chart, as_chart
+from ..errors import ChartError
 from . import andreeva
 from .forms import check_fast_ice
 from .seasonfast import record_rule, season_layers
@@ -59,6 +61,13 @@ def read_season(charts, grid, *, fast_ice=None, **read_kwargs) -> xr.Dataset:
         raise ValueError(f"chart dates must be dates such as '2026-07-01' or datetime64: {exc}") from None
     _check_increasing(np.array(dates), "sorted(charts)")
     rule = None if fast_ice is None else check_fast_ice(fast_ice)  # refused before any file is read
+    check_pixels(
+        *grid.shape,
+        SEASON_CHART * len(items),
+        f"a season of {len(items)} charts on a grid",
+        "give a coarser grid, a smaller box or fewer charts",
+        ChartError,
+    )
     frames = [read_sigrid3(p, grid, **read_kwargs) for _, p in items]
     ds = xr.concat([f[season_layers(f)] for f in frames], dim="time", coords="minimal", compat="override")
     return record_rule(ds.assign_coords(time=dates), rule)

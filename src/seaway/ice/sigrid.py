@@ -28,6 +28,8 @@ import warnings
 
 import numpy as np
 
+from ..base.memory import SIGRID, check_pixels
+from ..errors import ChartError
 from .codes import FORM_CODES, concentration_tenths, form_code, parse_code, stage_code
 from .geometry import to_grid_crs, wrap_copies
 from .grids import Grid
@@ -99,6 +101,13 @@ def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_tou
     import xarray as xr
     from affine import Affine
 
+    check_pixels(
+        *grid.shape,
+        SIGRID,
+        "rasterising a chart onto a grid",
+        "give a coarser grid or a smaller box",
+        ChartError,
+    )
     expected = expected_records(path, layer)  # a shapefile's parts agree (none is cut short)
     try:
         with warnings.catch_warnings(record=True) as said:  # GDAL's notes: damage is named below

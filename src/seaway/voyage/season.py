@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..base.memory import SEASON_CHART
 from ..engine.api import prepare
 from ..engine.snap import DEFAULT_SNAP_KM
 from ..errors import ChartError, NoRouteError
@@ -181,8 +182,10 @@ def open_season(
         if not os.path.exists(path):
             raise ChartError(f"{path}: no such file")
     notes: list[str] = []
+    per_pixel = SEASON_CHART * len(items)  # bytes: the charts read and routed (seaway.base.memory)
+    what = f"a season of {len(items)} charts on a grid"
     if grid is not None:
-        target = latlon_grid(*grid)
+        target = latlon_grid(*grid, bytes_per_pixel=per_pixel, what=what)
     else:  # as `seaway route` does: the box around the voyage
         bounds = _bounds(items)
         if ends is None:
@@ -191,12 +194,12 @@ def open_season(
                     "the charts are not in degrees: give the grid (south, north, west, east, res)"
                 )
             west, south, east, north = bounds
-            target = latlon_grid(south, north, west, east, 0.05)
+            target = latlon_grid(south, north, west, east, 0.05, bytes_per_pixel=per_pixel, what=what)
             notes.append(
                 f"grid: the charts' extent at 0.05 deg ({south:g} to {north:g} N, {west:g} to {east:g} E)"
             )
         else:
-            target, note = route_grid(*ends, chart_bounds=bounds)
+            target, note = route_grid(*ends, chart_bounds=bounds, bytes_per_pixel=per_pixel, what=what)
             notes.append(note)
     ds = read_season(items, target, fast_ice=fast_ice)
     notes += _check_cover(ds, items, ends, target)
