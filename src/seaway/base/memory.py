@@ -121,7 +121,9 @@ def coarser(pixels: float, bytes_per_pixel: float) -> float:
     return math.sqrt(pixels * bytes_per_pixel / max(limit()[0], 1)) * 1.02
 
 
-def check_shape(rows: int, cols: int, bytes_per_pixel: float, what: str, fix: str, error: type[Exception]) -> None:
+def check_shape(
+    rows: int, cols: int, bytes_per_pixel: float, what: str, fix: str, error: type[Exception]
+) -> None:
     """check_pixels for an array of `rows` x `cols` whose shape the caller chooses; the fix
     ends with a shape that fits, e.g. "give a smaller shape, e.g. (567, 567)"."""
     f = coarser(rows * cols, bytes_per_pixel)
