@@ -11,6 +11,7 @@ limit (cgroup v2 memory.max or v1 memory.limit_in_bytes), and what the address-s
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import resource
@@ -69,26 +70,28 @@ def _read_int(path: str) -> int | None:
         return None
 
 
-def limit() -> tuple[int, str]:
-    """(the bytes one request may take, a phrase saying where that figure comes from)."""
-    if os.environ.get(ENV):
-        return _parse(os.environ[ENV]), f"{ENV}={os.environ[ENV]}"
-    page = os.sysconf("SC_PAGE_SIZE")
-    physical = page * os.sysconf("SC_PHYS_PAGES")
+@functools.lru_cache(maxsize=1)
+def _machine() -> tuple[tuple[int, str], ...]:
+    """The machine's and the container's memory, read once: (bytes allowed, why) each."""
+    physical = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
     found = [(int(SHARE * physical), f"{100 * SHARE:.0f} % of this machine's {gib(physical)}")]
     for path in ("/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"):
         cap = _read_int(path)
         if cap is not None and cap < physical:
             found.append((int(SHARE * cap), f"{100 * SHARE:.0f} % of the container's {gib(cap)} limit"))
+    return tuple(found)
+
+
+def limit() -> tuple[int, str]:
+    """(the bytes one request may take, a phrase saying where that figure comes from)."""
+    if os.environ.get(ENV):
+        return _parse(os.environ[ENV]), f"{ENV}={os.environ[ENV]}"
+    found = list(_machine())
     soft, _ = resource.getrlimit(resource.RLIMIT_AS)
     if soft != resource.RLIM_INFINITY:
-        used = (_read_int_field("/proc/self/statm") or 0) * page
-        found.append(
-            (
-                max(soft - used, 0),
-                f"what the {gib(soft)} address-space limit (ulimit -v) leaves: {gib(soft - used)}",
-            )
-        )
+        used = (_read_int_field("/proc/self/statm") or 0) * os.sysconf("SC_PAGE_SIZE")
+        left = max(soft - used, 0)
+        found.append((left, f"what the {gib(soft)} address-space limit (ulimit -v) leaves: {gib(left)}"))
     return min(found)
 
 
