@@ -101,6 +101,18 @@ def test_the_engine_refuses_a_search_or_landmarks_the_machine_cannot_hold(monkey
         "the 5 MiB seaway may take (SEAWAY_MEMORY_LIMIT=5M); route on a coarser chart (e.g. "
         "cost[::2, ::2]) or on a part of it"
     )
+    # a broadcast view stands for far more memory than it holds: its copy is counted
+    monkeypatch.setenv(memory.ENV, "16G")
+    with pytest.raises(
+        seaway.SeawayError,
+        match=r"^the search on a chart copied to C order of 60,000 x 60,000 pixels .* 60\.3 GiB",
+    ):
+        seaway.route(np.broadcast_to(1.0, (60_000, 60_000)), (0, 0), (1, 1))
+    monkeypatch.setenv(memory.ENV, "15M")
+    with pytest.raises(
+        seaway.SeawayError, match=r"^the search on a chart converted to float64 of 1,000 x 1,000 .* 17 MiB"
+    ):
+        seaway.prepare(cost.astype(np.uint8))
     monkeypatch.setenv(memory.ENV, "20M")
     chart = seaway.prepare(cost)
     with pytest.raises(

@@ -12,7 +12,9 @@ import numpy as np
 import numpy.typing as npt
 
 from .. import _core
+from ..base.memory import SEARCH, check_pixels
 from ..base.validate import number
+from ..errors import SeawayError
 from .cf import coord_role
 from .flags import flags_out, has_flags
 
@@ -123,17 +125,19 @@ def _regular_step(values: npt.NDArray[np.float64], name: str) -> float:
     return float(step)
 
 
+def _plain(a: npt.NDArray[Any]) -> bool:
+    """Is `a` laid out as the engine reads it in place (C order, plain strides, aligned)?"""
+    plain = tuple(int(np.prod(a.shape[i + 1 :], dtype=np.int64)) * a.itemsize for i in range(a.ndim))
+    return bool(a.flags.c_contiguous and a.flags.aligned and a.strides == plain)
+
+
 def engine_layout(a: npt.NDArray[Any]) -> npt.NDArray[Any]:
     """`a` as the engine reads it in place: C order, aligned, and with the plain strides of its
     shape. numpy calls a view C-contiguous when only its size-1 axes are odd (np.ones((1, 3))[::-1]
     has a negative row stride), but the engine's arrays (Eigen) refuse any negative stride; an
     array unpickled from a buffer (a Dask worker) may sit at an odd address. Such arrays are
     copied once; ordinary ones are read in place."""
-    a = np.require(a, requirements=["C_CONTIGUOUS", "ALIGNED"])
-    plain = tuple(int(np.prod(a.shape[i + 1 :], dtype=np.int64)) * a.itemsize for i in range(a.ndim))
-    if a.strides != plain:
-        a = a.copy(order="C")
-    return a
+    return a if _plain(a) else np.array(a, order="C", copy=True)
 
 
 def _land_mask(land: npt.NDArray[np.generic]) -> npt.NDArray[np.uint8]:
@@ -202,7 +206,17 @@ def as_chart(
         raise ValueError(f"the chart has {values.size} pixels; the engine handles fewer than 2**32")
     if values.dtype == np.bool_ or not np.issubdtype(values.dtype, np.number) or np.iscomplexobj(values):
         raise TypeError(f"cost must hold real numbers, got dtype {values.dtype}")
-    if values.dtype not in (np.float32, np.float64):
+    converted = values.dtype not in (np.float32, np.float64)
+    copied = converted or not _plain(values)
+    check_pixels(  # the copy (a broadcast view may stand for far more memory than it holds)
+        *values.shape,
+        SEARCH + (8 if converted else values.itemsize if copied else 0),
+        "the search on a chart"
+        + (" converted to float64" if converted else " copied to C order" if copied else ""),
+        "route on a coarser chart (e.g. cost[::2, ::2]) or on a part of it",
+        SeawayError,
+    )
+    if converted:
         values = values.astype(np.float64)
     values = engine_layout(values)
     lowest = float(np.fmin.reduce(values, axis=None))  # one pass, no temporary array
