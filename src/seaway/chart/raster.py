@@ -209,7 +209,8 @@ def as_chart(
     converted = values.dtype not in (np.float32, np.float64)
     copied = converted or not _plain(values)
     check_pixels(  # the copy (a broadcast view may stand for far more memory than it holds)
-        *values.shape,
+        values.shape[0],
+        values.shape[1],
         SEARCH + (8 if converted else values.itemsize if copied else 0),
         "the search on a chart"
         + (" converted to float64" if converted else " copied to C order" if copied else ""),
