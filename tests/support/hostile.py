@@ -39,7 +39,9 @@ class Judge:
             return None
         except Exception as exc:  # noqa: BLE001 - anything else is a fault of the package
             tb = traceback.extract_tb(exc.__traceback__)
-            where = f"{tb[-1].filename}:{tb[-1].lineno}" if tb else "?"
+            where = (
+                " <- ".join(f"{os.path.basename(f.filename)}:{f.lineno}" for f in reversed(tb[-5:])) or "?"
+            )
             self.faults.append(f"{label}: {type(exc).__name__} at {where}: {one_line(str(exc))}")
             return None
         self.answered += 1

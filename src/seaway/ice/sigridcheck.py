@@ -12,6 +12,8 @@ or end in a traceback from GEOS, GDAL or rasterio.
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 
 from .vectorfile import check_shapefile_records, check_vector_file, one_line
@@ -37,7 +39,9 @@ def expected_records(path, layer=None) -> int | None:
     import pyogrio
 
     try:
-        count = int(pyogrio.read_info(path, layer=layer)["features"])
+        with warnings.catch_warnings():  # GDAL's notes on a damaged file: the read names the damage
+            warnings.simplefilter("ignore")
+            count = int(pyogrio.read_info(path, layer=layer)["features"])
     except Exception as exc:  # pyogrio's DataSourceError, DataLayerError, ...
         raise ValueError(f"{path}: cannot read it as a SIGRID-3 vector file ({one_line(str(exc))})") from None
     return count if count >= 0 else None

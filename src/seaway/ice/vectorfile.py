@@ -17,6 +17,8 @@ from __future__ import annotations
 import os
 import struct
 
+from ..base.validate import one_line
+
 #: The parts of a shapefile GDAL needs besides the .shp.
 SIDECARS = {".dbf": "its attribute table (the SIGRID-3 fields CT, SA, ...)", ".shx": "its index of shapes"}
 
@@ -82,13 +84,6 @@ def check_vector_file(path: str, bounds=None) -> list[str]:
             "lon/lat"
         ) from None
     return []
-
-
-def one_line(text: str, limit: int = 200) -> str:
-    """`text` on one line, at most `limit` characters, unprintable characters (a damaged file's
-    bytes quoted in a library's message) shown as '?'."""
-    text = " ".join("".join(c if c.isprintable() else " " if c.isspace() else "?" for c in text).split())
-    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def _header(path: str, what: str) -> tuple[bytes, int]:

@@ -6,12 +6,14 @@ from __future__ import annotations
 
 import dataclasses
 import os
+import warnings
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..base.memory import SEASON_CHART
+from ..base.validate import one_line
 from ..engine.api import prepare
 from ..engine.snap import DEFAULT_SNAP_KM
 from ..errors import ChartError, NoRouteError
@@ -212,7 +214,12 @@ def _bounds(charts):
 
     boxes = []
     for _, path in charts:
-        info = pyogrio.read_info(path)
+        try:
+            with warnings.catch_warnings():  # GDAL's notes on a damaged file: the read names it
+                warnings.simplefilter("ignore")
+                info = pyogrio.read_info(path)
+        except Exception as exc:  # pyogrio's DataSourceError, ...
+            raise ChartError(f"{path}: cannot read it as a SIGRID-3 vector file ({one_line(exc)})") from None
         if not in_degrees(info):
             return None
         boxes.append(info["total_bounds"])

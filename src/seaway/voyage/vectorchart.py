@@ -4,6 +4,8 @@ ends (seaway.ice.routegrid) unless --grid names one, else the chart's own extent
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 
 from ..ice.grids import latlon_grid
@@ -27,7 +29,9 @@ def sigrid_chart(path, grid, ends=None, notes=None):
         notes += assumed
     if grid is None:
         try:
-            info = pyogrio.read_info(path)
+            with warnings.catch_warnings():  # GDAL's notes on a damaged file: the read names it
+                warnings.simplefilter("ignore")
+                info = pyogrio.read_info(path)
         except Exception as exc:  # pyogrio's DataSourceError, ...
             raise ValueError(
                 f"{path}: cannot read it as a SIGRID-3 vector file ({one_line(str(exc))})"
