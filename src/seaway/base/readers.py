@@ -147,13 +147,15 @@ def open_netcdf(path: PathLike, hint: str, **kwargs: Any) -> xr.Dataset:
     if not os.path.exists(path):
         raise ValueError(f"{path}: no such file")
     if os.path.isfile(path) and os.path.getsize(path) == 0:
-        raise ValueError(f"{path} is empty (0 bytes): the download or copy did not finish; fetch it again")
+        raise ValueError(
+            f"{path}: the file is empty (0 bytes): the download or copy did not finish; fetch it again"
+        )
     check_netcdf(path)
     try:
         return xr.open_dataset(path, **kwargs)
     except Exception as exc:  # netCDF4/h5netcdf raise many types
-        what = _not_netcdf(path) or f"cannot read it as NetCDF ({one_line(exc, 160)})"
-        raise ValueError(f"{path}: {what}; {hint}") from None
+        why = _not_netcdf(path) or one_line(exc, 160)
+        raise ValueError(f"{path}: cannot read it as NetCDF ({why}); {hint}") from None
 
 
 #: The first bytes of NetCDF files: classic (CDF-1, -2, -5) and NetCDF-4 (HDF5).
@@ -161,7 +163,7 @@ NETCDF_MAGIC = (b"CDF\x01", b"CDF\x02", b"CDF\x05", b"\x89HDF\r\n\x1a\n")
 
 
 def _not_netcdf(path: str) -> str | None:
-    """'not a NetCDF file (it starts ...)' when neither a NetCDF magic nor an HDF5 superblock
+    """'it is not NetCDF: it starts ...' when neither a NetCDF magic nor an HDF5 superblock
     (at 0, 512, 1024, ... bytes) is where it should be; None otherwise."""
     try:
         with open(path, "rb") as f:
@@ -174,7 +176,7 @@ def _not_netcdf(path: str) -> str | None:
         return None
     if any(head.startswith(m) for m in NETCDF_MAGIC):
         return None
-    return f"not a NetCDF file (it starts {head[:4].hex()}, NetCDF files 43444601/02/05 or 89484446)"
+    return f"it is not NetCDF: it starts {head[:4].hex()}, NetCDF files 43444601/02/05 or 89484446"
 
 
 def read_geotiff(path: PathLike, band: int = 1) -> xr.DataArray:
