@@ -140,3 +140,22 @@ def test_samples_and_bench_sizes_are_refused_in_one_line_within_bounded_memory()
     )
     assert m, line
     assert int(m["rows"]) ** 2 * (SYNTHETIC + SEARCH) <= _cap(m) * 1.001
+
+
+def test_an_allocation_that_fails_anyway_ends_in_one_line(monkeypatch, capsys):
+    """The backstop behind the estimates: a MemoryError (numpy's _ArrayMemoryError) ends in one
+    line naming the fix, not a traceback."""
+    from seaway.cli import main
+
+    def allocate(*args, **kwargs):  # what numpy raises for a request the machine cannot hold
+        raise MemoryError(
+            "Unable to allocate 56.6 GiB for an array with shape (80000, 190000) and data type int32"
+        )
+
+    monkeypatch.setattr("seaway.cli.route.open_chart", allocate)
+    assert main(["route", "kara", "--from", "70.3,58.49", "--to", "70.5,60", "-q"]) == 1
+    assert capsys.readouterr().err.splitlines() == [
+        "seaway route: error: out of memory (Unable to allocate 56.6 GiB for an array with shape (80000, "
+        "190000) and data type int32); give a coarser grid, a smaller box or fewer charts, or set "
+        "SEAWAY_MEMORY_LIMIT lower"
+    ]
