@@ -55,5 +55,7 @@ def test_objectives_table():
     base = rows[0][1]
     print("\nobjectives on the Kara chart (Arc7 LNG carrier, Kara Gate -> Vilkitsky Strait):")
     for case, m in rows:
-        print(f"  {case:30s} {m:7.3f} s  {m / base:5.2f} x the bare impact search  {NOTES.get('objectives/kara/' + case, '')}")
+        print(
+            f"  {case:30s} {m:7.3f} s  {m / base:5.2f} x the bare impact search  {NOTES.get('objectives/kara/' + case, '')}"
+        )
     assert np.isfinite(base)

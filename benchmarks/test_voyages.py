@@ -1,13 +1,16 @@
-"""One voyage at a time, the way a user asks: every exact method and `auto`, on a fresh and on a
-prepared chart (8 landmarks), winter and summer costs, the corner-to-corner voyage and 8 random
-pairs of connected water pixels, under the default model (edge_cost="max"), each voyage against
-scikit-image's MCP_Geometric (8-connected) on the same voyage in the same run.
+"""One voyage at a time, the way a user asks, on every chart of the family (benchmarks/family.py,
+tuned on and held out): every exact method and `auto`, on a fresh and on a prepared chart (8
+landmarks), under the default model (edge_cost="max"), each voyage against the peers
+(benchmarks/peers.py: scikit-image, python-tcod's Dijkstra and A* on the 5 x 5 stencil,
+pyastar2d) on the same voyage in the same run.
 
 Each round runs every case of a voyage once, in a rotated order (a busy machine slows them
 alike); the medians of the rounds give wall and CPU seconds (time.process_time: all threads of
-the process), pixels settled and CPU nanoseconds per settled pixel; ratio = seaway's wall median
-over scikit-image's. Every case asserts its cost equals Dijkstra's to 1e-9. The tables are
-printed at the end of the run (conftest.py). Command (benchmarks/README.md):
+the process), pixels settled and CPU nanoseconds per settled pixel; ratio = the wall median over
+scikit-image's. Every case asserts its cost equals Dijkstra's to 1e-9. Also timed: auto's own
+work on a prepared chart (its decision: seaway.engine.methods.resolve) and on a fresh chart
+(preparing it: seaway.prepare). The tables are printed at the end of the run (conftest.py).
+Command (benchmarks/README.md):
 
     pytest benchmarks/test_voyages.py -s -p no:randomly
 """
@@ -20,71 +23,68 @@ import numpy as np
 import pytest
 
 import seaway
-from seaway.chart.locate import locate
 from seaway.engine import methods
 
 from .conftest import VOYAGES
+from .family import BUILDERS, NAMES, PAIRS
+from .peers import peer_cases
 
-skgraph = pytest.importorskip("skimage.graph")
+pytest.importorskip("skimage.graph")
+pytest.importorskip("tcod.path")
+pytest.importorskip("pyastar2d")
 ROUNDS = int(os.environ.get("SEAWAY_BENCH_ROUNDS", "3"))
+LANDMARKS = int(os.environ.get("SEAWAY_BENCH_LANDMARKS", "8"))
 FRESH = ("auto", "dijkstra", "astar", "bidirectional")
 PREPARED = ("auto", "dijkstra", "astar", "bidirectional", "landmarks")
-RANDOM_PAIRS = 8
-
-
-def summer(cost):
-    """The winter chart's costs mapped onto 1-2 (open summer ice), same land."""
-    return np.where(np.isfinite(cost), 1.0 + (cost - 1.0) / 29.0, np.inf)
+_BUILT: dict = {}
 
 
 @pytest.fixture(scope="module")
-def seasons(chart):
-    cost, start, end = chart
-    maps = {"winter": cost, "summer": summer(cost)}
-    prepared = {}
-    for name, c in maps.items():
-        p = seaway.prepare(c)
-        t = time.process_time()
-        st = p.prepare_landmarks(8)
-        VOYAGES.setdefault("notes", []).append(
-            f"{name}: 8 landmarks built in {st['seconds']:.2f} s wall, "
-            f"{time.process_time() - t:.2f} s CPU, {st['bytes_per_pixel']:.0f} B/pixel"
-        )
-        prepared[name] = p
-    return maps, prepared
+def family(tmp_path_factory):
+    def get(name):
+        if name not in _BUILT:
+            chart = BUILDERS[name](str(tmp_path_factory.mktemp("chart")))
+            if chart is None:
+                _BUILT[name] = None
+            else:
+                prepared = seaway.prepare(chart.cost)
+                t = time.process_time()
+                st = prepared.prepare_landmarks(LANDMARKS)
+                VOYAGES.setdefault("notes", []).append(
+                    f"{name} ({chart.kind}; {'tuned on' if chart.tuned else 'held out'}): "
+                    f"{chart.raster.shape[0]} x {chart.raster.shape[1]} pixels, "
+                    f"{np.isfinite(chart.raster).mean():.0%} water; {LANDMARKS} landmarks built in "
+                    f"{st['seconds']:.2f} s wall, {time.process_time() - t:.2f} s CPU, "
+                    f"{st['bytes_per_pixel']:.0f} B/pixel"
+                )
+                _BUILT[name] = (chart, prepared)
+        if _BUILT[name] is None:
+            pytest.skip(f"{name}: its data (../shared/data) are absent")
+        return _BUILT[name]
+
+    return get
 
 
-@pytest.fixture(scope="module")
-def voyages(chart):
-    """The corner-to-corner voyage and RANDOM_PAIRS random pairs of water pixels connected to it."""
-    cost, start, end = chart
-    reach = np.argwhere(np.isfinite(seaway.cost_field(cost, start)))
-    pick = np.random.default_rng(21).choice(len(reach), size=(RANDOM_PAIRS, 2), replace=False)
-    return [(start, end)] + [(tuple(map(int, reach[a])), tuple(map(int, reach[b]))) for a, b in pick]
-
-
-def _skimage(cost, s, e):
-    m = skgraph.MCP_Geometric(cost, fully_connected=True)
-    costs, _ = m.find_costs([s], [e])
-    return float(costs[e])
-
-
-def _cases(cost, route, prepared, s, e):
-    """What one round of a voyage runs: the peer on the raster, seaway.route on a fresh chart by
-    each method, and the prepared chart's route by each method."""
-    raster = np.asarray(getattr(cost, "values", cost), float)
-    ps, pe = locate(prepared.chart, s, "start"), locate(prepared.chart, e, "end")
-    out = {("skimage", "peer"): lambda: _skimage(raster, ps, pe)}
+def _cases(chart, prepared, s, e, ps, pe):
+    """What one round of a voyage runs: the peers on the raster, seaway.route on a fresh chart by
+    each method (and seaway.prepare alone), the prepared chart's route by each method (and auto's
+    decision alone)."""
+    out = {("peer", name): run for name, run in peer_cases(chart.raster, ps, pe).items()}
+    cost = chart.cost
     for m in FRESH:
-        out[("fresh", m)] = lambda m=m: route(cost, s, e, method=m)
+        out[("fresh", m)] = lambda m=m: seaway.route(cost, s, e, method=m)
+    out[("fresh", "prepare")] = lambda: seaway.prepare(cost)
     for m in PREPARED:
         out[("prepared", m)] = lambda m=m: prepared.route(s, e, method=m)
+    model = prepared.model
+    out[("prepared", "decision")] = lambda: methods.resolve(prepared, model, "auto")
     return out
 
 
-def time_voyage(label, voyage, cost, prepared, s, e, route=seaway.route):
+def time_voyage(label, chart, prepared, voyage):
     """Every case of one voyage, ROUNDS rounds in rotated order after a warm-up; rows into VOYAGES."""
-    cases = _cases(cost, route, prepared, s, e)
+    (s, e), (ps, pe) = chart.voyages[voyage], chart.pixels[voyage]
+    cases = _cases(chart, prepared, s, e, ps, pe)
     names = list(cases)
     wall = {n: [] for n in names}
     cpu = {n: [] for n in names}
@@ -98,26 +98,36 @@ def time_voyage(label, voyage, cost, prepared, s, e, route=seaway.route):
                 wall[n].append(time.perf_counter() - w0)
                 cpu[n].append(time.process_time() - c0)
     exact = prepared.route(s, e, method="dijkstra").cost
-    peer = statistics.median(wall[("skimage", "peer")])
+    assert last[("peer", "skimage")] > 0
+    peer = statistics.median(wall[("peer", "skimage")])
     rows = VOYAGES.setdefault("rows", [])
     for n in names:
         w, c = statistics.median(wall[n]), statistics.median(cpu[n])
         row = dict(
-            season=label, voyage=voyage, chart=n[0], method=n[1], wall=w, cpu=c, ratio=w / peer, skimage=peer
+            season=label,
+            tuned=chart.tuned,
+            voyage=voyage,
+            chart=n[0],
+            method=n[1],
+            wall=w,
+            cpu=c,
+            ratio=w / peer,
+            skimage=peer,
         )
-        if n[0] != "skimage":
-            r = last[n]
+        r = last[n]
+        if isinstance(r, seaway.Route):
             assert r.cost == pytest.approx(exact, rel=1e-9), n
             used = r.method
             if used == "bidirectional" and methods.low_contrast(prepared):
                 used = "bidirectional A*"  # the potential of seaway.engine.methods
             row.update(used=used, settled=r.stats.search.settled, ns=1e9 * c / max(r.stats.search.settled, 1))
+        elif n == ("prepared", "decision"):
+            row.update(used=r)
         rows.append(row)
 
 
-@pytest.mark.parametrize("voyage", range(1 + RANDOM_PAIRS))
-@pytest.mark.parametrize("season", ["winter", "summer"])
-def test_voyage(seasons, voyages, season, voyage):
-    maps, prepared = seasons
-    s, e = voyages[voyage]
-    time_voyage(season, voyage, maps[season], prepared[season], s, e)
+@pytest.mark.parametrize("voyage", range(1 + PAIRS))
+@pytest.mark.parametrize("name", NAMES)
+def test_voyage(family, name, voyage):
+    chart, prepared = family(name)
+    time_voyage(name, chart, prepared, voyage)

@@ -44,7 +44,8 @@ void def_landmarks(ChartClass& router) {
                });
              },
              py::arg("model"), py::arg("count"), py::arg("seed"), py::arg("cancel") = nullptr,
-             "Pick `count` landmarks farthest-first from `seed` and tabulate their costs (float32)");
+             "Pick `count` landmarks farthest-first in the largest body of water and tabulate "
+             "their costs (float32)");
   router.def("route_landmarks",
              [](PreparedChart& chart, const M& m, const Landmarks& lm, std::int64_t start, std::int64_t target,
                 bool bidirectional, const CancelToken* cancel) {

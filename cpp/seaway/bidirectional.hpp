@@ -10,6 +10,8 @@
 // still: each side scans the pixels it relabelled in the round (those it settled, and its
 // queue) against the other's labels, and mu = min over pixels labelled by both of d_f + d_b
 // (a real route's cost) is updated.
+// The forward side first searches alone (bidirectional_side.hpp: solo_pixels): a voyage it
+// finishes alone is a one-way search's, on one thread; its pixels then join its first round.
 // Stop when top_f + top_b >= mu (top: no key left in a queue is lower) or a queue is empty:
 // then mu is optimal. On an optimal route of cost L < top_f + top_b there is a step (x, y)
 // with x settled forward and y settled backward; relaxing x labelled y forward, so y is
@@ -31,6 +33,7 @@
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <thread>
 #include <type_traits>
 #include <vector>
@@ -58,7 +61,7 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
   const StepBounds b = model.bounds(pg.passability());
   QueueChoice q = choose_queue(b, pg.shortest_step(), pg.longest_step(), reduced_floor, extra_rate);
   // Landmark potentials need buckets a small share of a step wide: many, sparsely filled.
-  if (Potential::worth_caching && q.kind == QueueKind::buckets && q.buckets() > chunked_above)
+  if (Potential::sparse_keys && q.kind == QueueKind::buckets && q.buckets() > chunked_above)
     q.kind = QueueKind::chunked_buckets;
   const double shift_f = pot.active() ? pot(start) : 0.0, shift_b = pot.active() ? pot(target) : 0.0;
 
@@ -72,6 +75,8 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
   Meeting meet;
   SearchStats sides[2];
   std::exception_ptr errors[2];
+  std::thread helper;  // the backward side, started by the forward side after its solo phase
+  std::function<void()> start_backward;
   auto side = [&](auto backward) {
     constexpr bool B = decltype(backward)::value;
     LazyLabels& mine = B ? bw : fw;
@@ -84,9 +89,9 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
       mine.set(origin, 0.0);
       const double shift = B ? shift_b : shift_f;
       auto run = [&](const auto& p) {
-        return with_queue<false, Potential::worth_caching>(q, [&](auto heap) {
-          return bidirectional_side<B>(pg.steps(), model, origin, mine, theirs, std::move(heap), p, shift,
-                                       rounds, meet, cancel);
+        return with_queue<false, Potential::sparse_keys>(q, [&](auto heap) {
+          return bidirectional_side<B>(pg.steps(), model, origin, target, mine, theirs, std::move(heap), p,
+                                       shift, rounds, meet, cancel, start_backward);
         });
       };
       // A potential is asked for at every push: each side keeps the values it computed.
@@ -102,11 +107,9 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
       rounds.abort.store(true);
     }
   };
-  {
-    std::thread helper([&] { side(std::true_type{}); });
-    side(std::false_type{});
-    helper.join();
-  }
+  start_backward = [&] { helper = std::thread([&] { side(std::true_type{}); }); };
+  side(std::false_type{});
+  if (helper.joinable()) helper.join();
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
 

@@ -49,13 +49,24 @@ struct Meeting {
   double cost = inf;
 };
 
+// The forward side searches alone first, as a one-way search (Dijkstra, or A* with the
+// consistent potential), until it settles the target (then its label is the answer) or this
+// many pixels; only then does the backward side start: a short voyage costs no thread and no
+// rounds, a long one loses about this many pixels' time on one core.
+constexpr std::int64_t solo_pixels = 4096;
+// The least count of pixels a side settles in a round (later 1/16 of what it has settled): the
+// stop is decided only at the barriers, so a search overshoots by up to a round per side.
+constexpr std::int64_t round_pixels = 1024;
+
 // One side of the search. Backward == true walks the steps into each pixel; each step is priced
-// as the forward step it is (from -> to), with no time (the model is static).
-template <bool Backward, class Queue, class Model, class Potential>
+// as the forward step it is (from -> to), with no time (the model is static). The forward side
+// first searches alone (solo_pixels above) towards `target`, then calls start_other() to start
+// the backward side.
+template <bool Backward, class Queue, class Model, class Potential, class StartOther>
 SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, std::int64_t origin,
-                               LazyLabels& mine, const LazyLabels& other, Queue heap,
+                               std::int64_t target, LazyLabels& mine, const LazyLabels& other, Queue heap,
                                const Potential& pot, double shift, detail::Rounds& rounds,
-                               Meeting& meet, const SearchControl* cancel) {
+                               Meeting& meet, const SearchControl* cancel, StartOther&& start_other) {
   constexpr int self = Backward ? 1 : 0;
   SearchStats stats;
   std::vector<std::uint32_t> settled_now;  // settled in this round
@@ -67,8 +78,8 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
     return std::max(0.0, Backward ? d - pot(v) + shift : d + pot(v) - shift);
   };
   heap.push({0.0, std::uint32_t(origin)});
-  // Rounds of a count of settled pixels, the same on both sides (4096, later 1/16 of what the
-  // side has settled): the two threads get equal work whatever the ends' surroundings, and the
+  // Rounds of a count of settled pixels, the same on both sides (round_pixels, later 1/16 of
+  // what the side has settled): the two threads get equal work whatever the ends' surroundings, and the
   // last round overshoots the stop by at most 1/16. The count depends on nothing but this
   // side's own search, so the rounds are the same on every run.
   double mu = inf;
@@ -89,10 +100,31 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
     });
   };
 
+  if constexpr (!Backward) {
+    // Alone: the pixels settled here join the first round's (checked at its barrier).
+    while (stats.settled < solo_pixels && !heap.empty()) {
+      const HeapEntry top = heap.pop();
+      const double dv = mine.get(top.id);
+      if (std::signbit(dv)) continue;
+      settle(top.id, dv);
+      if (std::int64_t(top.id) == target) {  // settled by a one-way search: exact
+        meet.pixel = target;
+        meet.cost = dv;
+        break;
+      }
+    }
+    if (meet.pixel >= 0 || heap.empty()) {  // done, or nothing left to reach (no route)
+      stats.heap_peak = heap.peak();
+      stats.state_bytes = heap.capacity_bytes() + settled_now.capacity() * sizeof(std::uint32_t);
+      return stats;
+    }
+    start_other();
+  }
   for (;;) {
-    // Search: settle this round's count of pixels.
-    settled_now.clear();
-    const std::int64_t quota = std::max<std::int64_t>(4096, stats.settled / 16);
+    // Search: settle this round's count of pixels (the forward side's first round adds to the
+    // pixels it settled alone).
+    if (Backward || passed > 0) settled_now.clear();
+    const std::int64_t quota = std::max<std::int64_t>(round_pixels, stats.settled / 16);
     while (std::int64_t(settled_now.size()) < quota && !heap.empty()) {
       const HeapEntry top = heap.pop();
       const double dv = mine.get(top.id);

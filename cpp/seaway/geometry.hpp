@@ -14,6 +14,20 @@
 
 namespace seaway {
 
+// a / d for a, d < 2^32 by a multiply (Lemire et al. 2019: m = floor((2^64 - 1) / d) + 1, then
+// a / d = (m a) >> 64, exact for 32-bit a and d): the searches find a pixel's row at every
+// settle and every bound, and a 64-bit division costs tens of cycles. d = 1 is its own case.
+class FastDiv {
+ public:
+  explicit FastDiv(std::int64_t d = 1) : m_(d > 1 ? ~std::uint64_t(0) / std::uint64_t(d) + 1 : 0) {}
+  std::int64_t operator()(std::int64_t a) const {
+    return m_ ? std::int64_t((static_cast<unsigned __int128>(m_) * std::uint64_t(a)) >> 64) : a;
+  }
+
+ private:
+  std::uint64_t m_;
+};
+
 // Great-circle distance in km between two points given in degrees (haversine form).
 inline double haversine_km(double lat1, double lon1, double lat2, double lon2) {
   const double s1 = std::sin((lat2 - lat1) * deg / 2), s2 = std::sin((lon2 - lon1) * deg / 2);
@@ -80,11 +94,12 @@ struct Geometry {
   }
 };
 
-// Admissible distance-to-target bound: straight-line or great-circle distance from a pixel to
-// the target times a factor (the smallest cost per unit length, times the A* inflation).
+// Admissible distance-to-target bound: straight-line or chord (great-circle) distance from a
+// pixel to the target times a factor (the smallest cost per unit length, times the A* inflation).
 class DistanceBound {
  public:
-  DistanceBound(const Geometry& g, std::int64_t target, double factor) : g_(g), factor_(factor) {
+  DistanceBound(const Geometry& g, std::int64_t target, double factor)
+      : g_(g), factor_(factor), row_of_(g.cols) {
     tr_ = target / g.cols;
     tc_ = target % g.cols;
     if (!g.geographic || factor == 0) return;
@@ -106,18 +121,22 @@ class DistanceBound {
   bool active() const { return factor_ != 0; }
   double operator()(std::int64_t v) const {
     if (factor_ == 0) return 0;
-    const std::int64_t r = v / g_.cols, c = v % g_.cols;
+    const std::int64_t r = row_of_(v), c = v - r * g_.cols;
     if (!g_.geographic) {  // sqrt, not hypot (several times slower): no overflow at chart sizes
       const double y = double(r - tr_) * g_.dy, x = double(c - tc_) * g_.dx;
       return factor_ * std::sqrt(x * x + y * y);
     }
+    // The chord 2R sqrt(a), not the arc 2R asin(sqrt(a)): a metric of its own (straight lines in
+    // space), never longer than a step's great-circle length, so the bound stays consistent;
+    // within 0.2 % of the arc up to 1000 km, and without asin at every push.
     const double a = row_a_[std::size_t(r)] + row_c_[std::size_t(r)] * col_b_[std::size_t(c)];
-    return factor_ * 2 * earth_radius_km * std::asin(std::min(1.0, std::sqrt(a)));
+    return factor_ * 2 * earth_radius_km * std::sqrt(a);
   }
 
  private:
   const Geometry& g_;
   double factor_;
+  FastDiv row_of_;
   std::int64_t tr_ = 0, tc_ = 0;
   std::vector<double> row_a_, row_c_, col_b_;
 };

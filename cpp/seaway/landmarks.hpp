@@ -7,9 +7,12 @@
 // ulp; the bound is therefore scaled by (1 - eps) with eps x (cheapest step) > 2 x ulp of the
 // largest stored cost, so every step's reduced cost c + h(w) - h(v) stays positive and A*
 // (with the bucket queue or the radix heap) stays exact.
-// Landmarks are picked farthest-first: the pixel farthest from a seed, then repeatedly the
-// pixel farthest from every landmark so far (the usual choice on road networks).
+// Landmarks are picked farthest-first in the largest body of water (landmark_choice.hpp): the
+// usual choice on road networks; the avoid rule (Goldberg and Werneck 2005) was measured and
+// not kept (benchmarks/README.md).
 #pragma once
+
+#include <sys/mman.h>
 
 #include <algorithm>
 #include <atomic>
@@ -20,58 +23,15 @@
 #include <vector>
 
 #include "bidirectional.hpp"
+#include "landmark_bound.hpp"
+#include "landmark_choice.hpp"
 #include "prepared_chart.hpp"
 
 namespace seaway {
 
-struct Landmarks {
-  std::vector<std::int64_t> pixels;  // the landmarks' flat indices
-  std::vector<float> table;          // table[v * count + l] = D_l(v); inf if unreachable
-  double largest = 0;                // largest finite stored cost
-  std::size_t count() const { return pixels.size(); }
-  std::size_t bytes() const { return table.capacity() * sizeof(float); }
-};
-
-// max over landmarks of |D_l(t) - D_l(v)|, times `scale`; 0 for landmarks that reach only one
-// of the two (they lie in another water body than v or t).
-class LandmarkBound {
- public:
-  // Uses the `active` landmarks with the largest bound at `start` (all if active >= count;
-  // fewer made each push cheaper but settled more pixels: all 8 were fastest on the benchmark).
-  LandmarkBound(const Landmarks& lm, std::int64_t start, std::int64_t target, double scale, std::size_t active)
-      : lm_(lm), n_(lm.count()), scale_(scale) {
-    std::vector<std::pair<double, std::size_t>> gain;
-    for (std::size_t l = 0; l < n_; ++l) {
-      const double gap = std::fabs(double(lm.table[std::size_t(target) * n_ + l]) -
-                                   double(lm.table[std::size_t(start) * n_ + l]));
-      gain.push_back({gap < inf ? -gap : 0.0, l});
-    }
-    std::stable_sort(gain.begin(), gain.end());
-    for (std::size_t i = 0; i < std::min(active, n_); ++i) {
-      use_.push_back(gain[i].second);
-      at_target_.push_back(lm.table[std::size_t(target) * n_ + gain[i].second]);
-    }
-  }
-  bool active() const { return scale_ > 0; }
-  double operator()(std::int64_t v) const {
-    const float* d = lm_.table.data() + std::size_t(v) * n_;
-    double best = 0;
-    for (std::size_t i = 0; i < use_.size(); ++i) {
-      const double gap = std::fabs(double(at_target_[i]) - double(d[use_[i]]));  // exact; NaN if both inf
-      if (gap < inf && gap > best) best = gap;
-    }
-    return scale_ * best;
-  }
-
- private:
-  const Landmarks& lm_;
-  std::size_t n_;
-  double scale_;
-  std::vector<std::size_t> use_;
-  std::vector<float> at_target_;
-};
-
-// Distances from `count` landmarks picked farthest-first from `seed`. The model must be
+// Distances from `count` landmarks picked farthest-first in the largest body of water
+// (landmark_choice.hpp; `seed` only if the chart has no larger one): the pixel farthest from
+// it, then repeatedly the pixel farthest from every landmark so far. The model must be
 // symmetric (max, mean, integral).
 template <class Model>
 Landmarks build_landmarks(PreparedChart& pg, const Model& model, int count, std::int64_t seed,
@@ -81,6 +41,14 @@ Landmarks build_landmarks(PreparedChart& pg, const Model& model, int count, std:
   const std::int64_t n = pg.geometry().size();
   std::vector<double> field(static_cast<std::size_t>(n)), nearest(static_cast<std::size_t>(n), inf);
   Landmarks lm;
+  lm.table.reserve(std::size_t(n) * std::size_t(count));
+#ifdef MADV_HUGEPAGE
+  {  // huge pages before the first write: a query reads one row per pixel, scattered over the chart
+    const std::uintptr_t a = reinterpret_cast<std::uintptr_t>(lm.table.data()), huge = 2u << 20;
+    const std::uintptr_t lo = (a + huge - 1) & ~(huge - 1), hi = (a + lm.table.capacity() * 4) & ~(huge - 1);
+    if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
+  }
+#endif
   lm.table.resize(std::size_t(n) * std::size_t(count));
   auto farthest = [&](const std::vector<double>& d) {
     std::int64_t best = -1;
@@ -89,7 +57,7 @@ Landmarks build_landmarks(PreparedChart& pg, const Model& model, int count, std:
       if (d[std::size_t(v)] < inf && d[std::size_t(v)] > far) { far = d[std::size_t(v)]; best = v; }
     return best;
   };
-  pg.field(model, seed, field.data(), cancel);
+  pg.field(model, largest_water(pg, seed), field.data(), cancel);
   std::int64_t next = farthest(field);
   for (int l = 0; l < count; ++l) {
     lm.pixels.push_back(next);
@@ -169,8 +137,8 @@ RouteResult route_landmarks_bidirectional(PreparedChart& pg, const Landmarks& lm
                                           const SearchControl* cancel = nullptr) {
   const LandmarkQuery sl(pg, lm, model, start, target);
   if (!(sl.eps < 0.5)) return route_bidirectional(pg, model, start, target, cancel);
-  const AveragePotential<LandmarkBound> pot{LandmarkBound(lm, start, target, 1.0, lm.count()),
-                                            LandmarkBound(lm, target, start, 1.0, lm.count()), 1 - sl.eps};
+  const LandmarkPotential pot(lm, pg.geometry(), start, target, sl.b.per_length ? sl.b.min_rate : 0.0,
+                              1 - sl.eps);
   return route_bidirectional(pg, model, start, target, cancel, pot, 0.5 * sl.eps,
                              sl.b.max_rate + sl.ulp / sl.rmax);
 }

@@ -20,7 +20,8 @@ class StepEnumerator {
   // in place and must outlive the enumerator.
   StepEnumerator(const Geometry& g, const std::vector<Offset>& st, const Geometry::Lengths& lengths,
                  const std::uint8_t* clear, LandRule rule)
-      : g_(&g), st_(&st), lengths_(&lengths), clear_(clear), rule_(rule), half_(half_width(st)) {
+      : g_(&g), st_(&st), lengths_(&lengths), clear_(clear), rule_(rule), half_(half_width(st)),
+        row_of_(g.cols) {
     for (const Offset& o : st) flat_.push_back(o.di * g.cols + o.dj);
   }
 
@@ -39,7 +40,7 @@ class StepEnumerator {
     const Offset* st = st_->data();
     const std::int64_t* flat = flat_.data();
     const std::uint8_t* clear = clear_;
-    const std::int64_t row = v / C, col = v - row * C;
+    const std::int64_t row = row_of_(v), col = v - row * C;
     if (row >= h && row < R - h && col >= h && col < C - h && clear[v] > h) {
       const double* len = lengths_->row(row);
       for (std::int64_t o = 0; o < K; ++o) {
@@ -84,6 +85,7 @@ class StepEnumerator {
   const std::uint8_t* clear_;
   LandRule rule_;
   int half_;
+  FastDiv row_of_;  // v / cols
   std::vector<std::int64_t> flat_;  // each offset's step in flat pixel index
 };
 

@@ -34,12 +34,12 @@ class SnapError(SeawayError):
     than the limit. `moves`: the Move of each such end (seaway.engine.snap); `limit`: the
     largest move allowed; `unit`: "km" (geographic charts) or "chart units"."""
 
-    def __init__(self, moves: Iterable[Any], limit: float, unit: str) -> None:
+    def __init__(self, moves: Iterable[Any], limit: float, unit: str, message: str | None = None) -> None:
         self.moves, self.limit, self.unit = tuple(moves), float(limit), unit
         far = "; ".join(m.sentence(unit) for m in self.moves)
         super().__init__(
-            f"{far}: farther than max_km={self.limit:g}; give ends in water the ship "
-            "can use, or a larger max_km"
+            message
+            or f"{far}: farther than max_km={self.limit:g}; give ends in water the ship can use, or a larger max_km"
         )
 
 

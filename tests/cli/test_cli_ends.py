@@ -158,6 +158,8 @@ def test_a_start_on_real_land_moves_into_the_water_of_the_end(shared_data, tmp_p
             "Arc7",
             "--grid",
             "65,74,-62,-50,0.05",
+            "--land",
+            "chart",  # the reference is the chart's own land
             "--snap",
             "--out",
             str(out),

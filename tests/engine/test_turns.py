@@ -72,7 +72,7 @@ def test_zero_penalty_equals_plain_search():
     geo = dict(lat=60 + 0.5 * np.arange(20), lon=10 + 0.8 * np.arange(30))
     chart = seaway.prepare(u, neighbourhood=5, **geo)
     s, e = (60.0, 10.0), (69.5, 33.2)
-    plain, zero = chart.route(s, e, method="dijkstra"), chart.route(s, e, turn_penalty=0)
+    plain, zero = chart.route(s, e, method="dijkstra"), chart.route(s, e, method="dijkstra", turn_penalty=0)
     assert zero.cost == pytest.approx(plain.cost, rel=1e-12)
     assert zero.stats.search.settled > plain.stats.search.settled  # states, not pixels
     # the penalty is recorded as its table {degrees: cost}: 0 per degree, 0 to 180

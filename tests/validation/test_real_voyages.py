@@ -57,7 +57,8 @@ V9 = Voyage("V9", "arc7-shuttle-tanker", BERING, SABETTA, 2400.0, 13 * 24.0, "20
 def route(path, v: Voyage, rule="mid", stage=None, snap_km=30.0):
     """The quickest route (objective time: what a master aims at) of the voyage, summary."""
     extra = {} if stage is None else {"assume_stage": stage}
-    chart = seaway.open_chart(path, vessel=load(v.vessel), ends=(v.start, v.end), **extra)
+    # land="chart": the synthetic chart's own coastline (the NSIDC chart's 25 km land is its own anyway)
+    chart = seaway.open_chart(path, vessel=load(v.vessel), ends=(v.start, v.end), land="chart", **extra)
     r = chart.route(
         v.start,
         v.end,

@@ -29,6 +29,7 @@ def _ice(args, ice_class):
         grid=args.grid,
         assume_stage=args.assume_stage,
         fast_ice=args.fast_ice,
+        land=getattr(args, "land", None),
     )
     return open_chart(path, vessel=ice_class, ends=(args.start, args.end), options=options)
 

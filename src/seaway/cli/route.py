@@ -26,6 +26,7 @@ def chart_options(args) -> ChartOptions:
         depth=getattr(args, "depth", None),
         depth_variable=getattr(args, "depth_variable", None),
         depth_positive=getattr(args, "depth_positive", None),
+        land=getattr(args, "land", None),
     )
 
 

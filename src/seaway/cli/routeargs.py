@@ -62,6 +62,15 @@ def add_route_command(commands) -> None:
         "GeoTIFF: the band number (default 1)",
     )
     rp.add_argument(
+        "--land",
+        metavar="FILE",
+        help="a finer coastline merged with the chart's land: a land mask on any lat/lon grid "
+        "(NetCDF, GeoTIFF, 1 = land; e.g. GSHHG's) or coast polygons (shapefile, GeoPackage); a pixel "
+        "with any of it is land. Default: the package's coastline (GLOBE, 30 arc-seconds) where the "
+        "chart's pixels are coarser than it and at most 10 km; 'chart': the chart's own land only. "
+        "Which coastline was used, and its resolution, is said and recorded",
+    )
+    rp.add_argument(
         "--land-variable",
         metavar="NAME",
         help="chart variable holding the land mask (default: 'land' if present)",

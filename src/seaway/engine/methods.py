@@ -15,13 +15,13 @@ Methods (all exact except weighted A*):
   mean and integral only: the bound |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
   mean of the two ends x the step's length; the integral over the same segment).
 * "auto" (the default): "astar" if a weight is given; on a chart with landmarks for the query's
-  model, the exact method the cost model of seaway.engine.costmodel expects to be fastest for
-  this query (from a sample of the landmark tables: the pixels each search would settle, times
-  its measured time per pixel): the landmark search on two threads or on one, A*, or
-  bidirectional search; else "bidirectional" for a static raster model (with the A* potential
-  on a low-contrast chart: on the summer benchmark chart it takes 0.7 x one-thread A*'s time),
-  but on charts under SMALL_CHART pixels "astar" on a low-contrast chart and "dijkstra" on
-  others; else "astar" (time-dependent models). Measured in benchmarks/README.md."""
+  model, "landmarks"; else "bidirectional" for a static raster model (with the A* potential on
+  a low-contrast chart); else "astar" (time-dependent models). It estimates nothing: every
+  two-thread search first searches alone from the start (cpp/seaway/bidirectional_side.hpp),
+  so a short voyage costs what a one-way search does, and the landmark potential takes the max
+  with the straight-line bound, so its bounds are at least as tight as bidirectional A*'s.
+  (A fitted estimate of each method's time chose slower methods on charts it was not fitted
+  on: benchmarks/README.md.)"""
 
 from __future__ import annotations
 
@@ -32,7 +32,6 @@ import numpy as np
 
 from ..base.validate import number
 from ..models.base import EDGE_COSTS
-from . import costmodel
 from .result import Search
 
 if TYPE_CHECKING:
@@ -43,9 +42,6 @@ if TYPE_CHECKING:
 EDGE_COST_NAMES = tuple(EDGE_COSTS)
 METHODS = ("auto", "dijkstra", "astar", "bidirectional", "landmarks")
 DIRECTIONS = ("full", "unique")
-#: Below this many pixels "auto" searches on one thread (A* on a low-contrast chart, else
-#: Dijkstra): the whole search takes about as long as starting the second thread.
-SMALL_CHART = 65536
 #: "bidirectional" adds the A* potential (the average of the distance bounds to the end and from
 #: the start, x the chart's smallest cost) when the chart's passable costs span at most this
 #: factor: on the summer chart (costs 1-2) it settles 45 % fewer pixels than without; on the
@@ -94,11 +90,7 @@ def resolve(prepared: PreparedChart, model: CostModel, method: str, weight: floa
     if method == "auto":
         if model.static and prepared.landmarks_for(model) is not None:
             return "landmarks"
-        if not model.static:
-            return "astar"
-        if prepared.chart.values.size < SMALL_CHART:  # a thread costs more than the search
-            return "astar" if model.symmetric and low_contrast(prepared) else "dijkstra"
-        return "bidirectional"
+        return "bidirectional" if model.static else "astar"
     if method == "bidirectional" and not model.static:
         raise ValueError(
             f"method='bidirectional' needs a static raster model (edge_cost in {EDGE_COST_NAMES}); "
@@ -120,30 +112,6 @@ def resolve(prepared: PreparedChart, model: CostModel, method: str, weight: floa
     return method
 
 
-#: The searches the cost model chooses among that are not public methods: what Route.method says.
-PUBLIC = {"bidirectional A*": "bidirectional", "landmarks one thread": "landmarks"}
-
-
-def refine(
-    prepared: PreparedChart,
-    model: CostModel,
-    method: str,
-    requested: str,
-    s: tuple[int, int],
-    e: tuple[int, int],
-) -> str:
-    """The search that answers the query s -> e (located pixels): for "auto" on a chart with
-    landmarks, the cheapest by the cost model (seaway.engine.costmodel); else `method`."""
-    landmarks = prepared.landmarks_for(model)
-    if requested != "auto" or method != "landmarks" or landmarks is None:
-        return method
-    times = costmodel.estimate(
-        prepared, model, prepared.landmark_sample(model), landmarks.table, s, e, low_contrast(prepared)
-    )
-    best: str = min(times, key=lambda m: times[m])
-    return best
-
-
 def search(
     prepared: PreparedChart,
     engine: _core.Model,
@@ -154,18 +122,10 @@ def search(
     model: CostModel,
     cancel: _core.CancelToken | None,
 ) -> Search:
-    """The search between flat pixels s and e by `method` (a public method, or a search the cost
-    model names: "bidirectional A*", "landmarks one thread")."""
+    """The search between flat pixels s and e by `method` (a public method)."""
     router = prepared.router
-    method = {"bidirectional A*": "bidirectional"}.get(method, method)
     # resolve() let "bidirectional" through for static models only, "landmarks" for symmetric
     # static ones with their tables (the capabilities, which the types cannot see)
-    if method == "landmarks one thread":
-        landmarks = prepared.landmarks_for(model)
-        assert landmarks is not None
-        return Search.from_core(
-            router.route_landmarks(cast("_core.RasterRule", engine), landmarks, s, e, False, cancel)
-        )
     if method == "bidirectional":
         return Search.from_core(
             router.route_bidirectional(

@@ -22,7 +22,7 @@ from ..constraints import constrain
 from ..errors import SeawayError
 from ..models.base import CostModel, EdgeCost, as_model
 from ..result.route import Route
-from . import costmodel, methods
+from . import methods
 from .constrained import route_constrained
 from .result import Search, no_route, to_route
 
@@ -118,7 +118,6 @@ class PreparedChart:
             chart.values, chart.land, chart.grid, neighbourhood, directions, land_rule
         )
         self._landmarks, self.landmark_stats = {}, {}
-        self._samples: dict[str, costmodel.Sample] = {}
 
     def prepare_landmarks(self, count: int = 8, *, model: CostModel | str | None = None) -> LandmarkStats:
         """Tabulate the least costs from `count` landmark pixels (float32, 4 bytes per pixel
@@ -139,7 +138,6 @@ class PreparedChart:
             raise ValueError("no pixel of the chart is passable: landmarks need water")
         lm, seconds = interruptible(lambda cancel: methods.build_landmarks(self, count, model, seed, cancel))
         self._landmarks[model.name] = lm
-        self._samples[model.name] = costmodel.make_sample(lm.table, self.chart.shape[1])
         px = [divmod(int(p), self.chart.shape[1]) for p in lm.pixels]
         self.landmark_stats[model.name] = stats = LandmarkStats(
             count=len(px),
@@ -153,10 +151,6 @@ class PreparedChart:
     def landmarks_for(self, model: CostModel) -> _core.Landmarks | None:
         """The landmark tables prepared for `model`, or None."""
         return self._landmarks.get(model.name)
-
-    def landmark_sample(self, model: CostModel) -> costmodel.Sample:
-        """The pixels sampled from `model`'s landmark tables for the cost model of "auto"."""
-        return self._samples[model.name]
 
     @property
     def edge_cost(self) -> str:
@@ -194,17 +188,16 @@ class PreparedChart:
         and with an optional turn penalty (seaway.engine.constrained). See seaway.route."""
         methods.heuristic_weight(method, weight)
         model = self.model if model is None else as_model(model)
-        requested, method = method, methods.resolve(self, model, method, weight)
+        method = methods.resolve(self, model, method, weight)
         w = methods.heuristic_weight(method, weight)  # the resolved method's: auto -> astar is A*
         if (via is not None and len(via)) or turn_penalty is not None:
             return route_constrained(self, start, end, model, method, w, via, turn_penalty)
         s, e = locate(self.chart, start, "start"), locate(self.chart, end, "end")
         model.check_ends(self, s, e)
-        used = methods.refine(self, model, method, requested, s, e)
-        found = self.search(s, e, w, model, used)
+        found = self.search(s, e, w, model, method)
         if not found.found:
             raise no_route(self, model, (("start", s), ("end", e)))
-        return model.finish(to_route(self, found, model, methods.PUBLIC.get(used, used)), found.per_step)
+        return model.finish(to_route(self, found, model, method), found.per_step)
 
     def cost_field(
         self, start: Point, *, model: CostModel | str | None = None

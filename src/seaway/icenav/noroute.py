@@ -53,6 +53,8 @@ def explain_no_route(
     blocked_name="closed by the cost, not by the ice",
     show=None,
     asked=None,
+    passable=None,
+    gets_through=None,
 ) -> NoRouteError:
     """The NoRouteError saying why an `ice_class` ship gets no route from `start` to `end` on
     the ice chart `ds` (a SIGRID-style Dataset: CT, SA, ..., land; or one with a
@@ -63,7 +65,13 @@ def explain_no_route(
         its impassable pixels whose ice the class may enter are closed by something else,
         named `blocked_name` (e.g. "water shallower than draft + UKC").
     show: (row, col) -> the point to report (a projected chart's lat/lon); asked: the ends as
-    the user gave them, for the message (default start, end)."""
+    the user gave them, for the message (default start, end).
+    passable: class name -> bool mask (on the chart's grid) of the pixels that class may cross
+        under the voyage's whole model (its ice table and, e.g., its speed in the ice); default
+        its ice table (Grinyak et al. 2022). gets_through: class name -> whether that class finds
+        a route between the ends under the same model; the weakest class named is the first of
+        LADDER from the way's top level that does (default: the class's ice table, checked
+        along the least-barrier way and by routing)."""
     cls = get_class(ice_class).name
     stage = _stage(ds, fast_ice)
     if cost is None:
@@ -73,7 +81,7 @@ def explain_no_route(
     land = ds["land"] if "land" in ds else None
     prepared = PreparedChart(cost, land=land, neighbourhood=neighbourhood)
     chart = prepared.chart
-    kinds = _Kinds(ds, chart, stage, fast_ice, blocked_name, cls)
+    kinds = _Kinds(ds, chart, stage, fast_ice, blocked_name, cls, passable)
     way = least_barrier(chart, kinds.levels, start, end, neighbourhood)
     reach = nearest_reachable(prepared, start, end)
     unit = "km" if chart.geographic or show else "chart units"
@@ -91,7 +99,17 @@ def explain_no_route(
         return with_reach(err, reach, show, unit, asked[1] if asked else None)
     px, km, _ = weighted_samples(way)  # the pixels it crosses, every half pixel, and their km
     closing = kinds.on(px, km)
-    weakest = _weakest(kinds, way, px, chart, start, end, neighbourhood)
+    if gets_through is not None:
+        weakest = next(
+            (c for c in LADDER[max(kinds.top(px), 1) - 1 :] if kinds.top(px) < NO_CLASS and gets_through(c)),
+            None,
+        )
+        if weakest is None:  # the way's top level is not the whole story: ask every stronger class
+            weakest = next(
+                (c for c in LADDER[LADDER.index(cls) + 1 :] if cls in LADDER and gets_through(c)), None
+            )
+    else:
+        weakest = _weakest(kinds, way, px, chart, start, end, neighbourhood)
     said = "; ".join(f"{name}: {km:.0f} km" for name, km in closing[:SHOWN])
     more = f" and {len(closing) - SHOWN} more kinds" if len(closing) > SHOWN else ""
     through = (
@@ -119,7 +137,7 @@ def _stage(ds, fast_ice):
 class _Kinds:
     """The level and the kind of ice of every pixel the ship may not enter."""
 
-    def __init__(self, ds, chart, stage, fast_ice, blocked_name, cls):
+    def __init__(self, ds, chart, stage, fast_ice, blocked_name, cls, passable=None):
         self.chart, self.blocked_name = chart, blocked_name
         self.stage = chart_order(stage, chart)
         land = chart.land != 0 if chart.land is not None else np.zeros(chart.shape, bool)
@@ -127,15 +145,24 @@ class _Kinds:
         own = table_for(cls)
         self.other = np.zeros(chart.shape, bool)  # closed though the class may enter the ice
         levels = np.where(closed, float(NO_CLASS), 0.0)
-        for code in np.unique(self.stage[closed & np.isfinite(self.stage)]):
-            here = closed & (self.stage == code)
-            if np.isfinite(own.get(float(code), np.inf)):
-                self.other |= here
-                continue
-            first = next(
-                (k for k, c in enumerate(LADDER) if np.isfinite(table_for(c).get(float(code), np.inf))), None
-            )
-            levels[here] = NO_CLASS if first is None else first + 1
+        if passable is not None:  # the voyage's whole model, class by class, weakest first
+            left = closed.copy()
+            for k, c in enumerate(LADDER):
+                opens = left & (chart_order(passable(c), chart) != 0)
+                levels[opens], left = k + 1.0, left & ~opens
+            if cls in LADDER:  # closed for the class though its own model opens it: something else
+                self.other = closed & (chart_order(passable(cls), chart) != 0)
+        else:
+            for code in np.unique(self.stage[closed & np.isfinite(self.stage)]):
+                here = closed & (self.stage == code)
+                if np.isfinite(own.get(float(code), np.inf)):
+                    self.other |= here
+                    continue
+                first = next(
+                    (k for k, c in enumerate(LADDER) if np.isfinite(table_for(c).get(float(code), np.inf))),
+                    None,
+                )
+                levels[here] = NO_CLASS if first is None else first + 1
         levels[self.other] = NO_CLASS
         self.levels = np.where(land, -1.0, levels)
         layer = lambda name: chart_order(ds[name], chart) if name in ds else None

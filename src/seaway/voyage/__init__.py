@@ -14,6 +14,7 @@ from typing import Any
 from ..errors import ChartError
 from .chart import ChartOptions, OpenChart
 from .chartfile import read_chart
+from .coast import GLOBE_KM, MERGE_MAX_KM, PACKAGE_COAST, geographic, merge_coast, pixel_km
 from .depth import read_depth
 from .forecast import OpenForecast, open_forecast
 from .season import OpenSeason, open_season
@@ -65,6 +66,18 @@ def open_chart(
             "give the chart's options either as options=ChartOptions(...) or as keywords, not both"
         )
     chart = read_chart(path, options, vessel, ends)
+    if options.land != "chart" and geographic(chart) and min(chart.grid.shape) > 1:
+        px = pixel_km(chart)
+        if options.land is None and px <= 1.5 * GLOBE_KM:
+            chart.notes.append(f"land: the chart's own ({px:.2f} km pixels, as fine as {PACKAGE_COAST})")
+        elif options.land is None and px > MERGE_MAX_KM:
+            chart.notes.append(
+                f"land: the chart's own, on {px:.0f} km pixels: a route may cross land finer than that (not merged: "
+                f"{PACKAGE_COAST} on such pixels would close straits narrower than {2 * px:.0f} km); --land FILE "
+                "merges a finer land mask or coast polygons, --grid routes a finer grid"
+            )
+        else:
+            merge_coast(chart, options.land)
     if options.depth is not None:
         crs = getattr(chart.layers, "attrs", {}).get("crs")
         chart.depth, said = read_depth(

@@ -36,7 +36,11 @@ class ChartOptions:
         WMO stage code.
     assume_stage: the WMO stage assumed for the ice of a concentration-only chart (default 93).
     depth, depth_variable, depth_positive: a bathymetry file resampled onto the chart (the
-        shallowest depth in each pixel), its variable and sign (seaway.depth)."""
+        shallowest depth in each pixel), its variable and sign (seaway.depth).
+    land: a finer coastline merged with the chart's land (seaway.voyage.coast): None (default)
+        the package's coastline where it is finer than the chart's pixels; "chart" the chart's
+        own land only; or a file: a land mask (NetCDF, GeoTIFF, 1 = land) or coast polygons
+        (shapefile, GeoPackage)."""
 
     variable: str | None = None
     land_variable: str | None = None
@@ -46,6 +50,7 @@ class ChartOptions:
     depth: str | None = None
     depth_variable: str | None = None
     depth_positive: str | None = None
+    land: str | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "fast_ice", check_fast_ice(self.fast_ice))

@@ -16,6 +16,7 @@ from ..chart.raster import as_chart
 from ..engine.snap import DEFAULT_SNAP_KM, SnapError, snap_ends
 from ..ice.classes import with_article
 from ..ice.codes import stage_name
+from ..ice.forms import DEFAULT_FAST_ICE, fast_ice_mask, fast_ice_stage, ice_words
 
 
 def _value(layers, name, rc):
@@ -25,9 +26,10 @@ def _value(layers, name, rc):
     return float(v)
 
 
-def describe(layers, rc, vessel, reasons=(), ice_blocks=True) -> str:
+def describe(layers, rc, vessel, reasons=(), ice_blocks=True, fast_ice=DEFAULT_FAST_ICE) -> str:
     """What makes the pixel impassable, in a navigator's words. ice_blocks: whether the chart's
-    own cost forbids the pixel (else only `reasons`, e.g. too shallow, are given)."""
+    own cost forbids the pixel (else only `reasons`, e.g. too shallow, are given); fast_ice: the
+    rule that gives fast ice of unknown stage its stage (seaway.ice.forms), named for it."""
 
     parts = [f"{why}" for why in reasons]
     if not ice_blocks and parts:
@@ -41,7 +43,10 @@ def describe(layers, rc, vessel, reasons=(), ice_blocks=True) -> str:
             + parts
         )
     ice = []
-    for c, s in (("CA", "SA"), ("CB", "SB"), ("CC", "SC")):
+    fast = _fast_words(layers, rc, fast_ice)
+    if fast:
+        ice.append(fast)
+    for c, s in (("CA", "SA"), ("CB", "SB"), ("CC", "SC")) if not fast else ():
         stage, conc = _value(layers, s, rc), _value(layers, c, rc)
         if np.isfinite(stage) and conc != 0:
             share = f", {conc:g}/10" if np.isfinite(conc) else ""
@@ -63,6 +68,19 @@ def describe(layers, rc, vessel, reasons=(), ice_blocks=True) -> str:
     return "; ".join(parts)
 
 
+def _fast_words(layers, rc, fast_ice) -> str:
+    """Fast ice at pixel rc in words (its stage, or the rule's for fast ice of unknown stage), or
+    "" where the pixel holds no fast ice."""
+    if layers is None or "SA" not in layers or "FA" not in layers:
+        return ""
+    if not bool(fast_ice_mask(layers)[rc]):
+        return ""
+    code, _, where = fast_ice_stage(layers, fast_ice)
+    assumed = bool(np.asarray(where)[rc])
+    stage = (np.nan if code is None else float(code)) if assumed else _value(layers, "SA", rc)
+    return ice_words(stage, True, assumed, "WMO stage")
+
+
 def check_ends(
     cost,
     land,
@@ -79,6 +97,7 @@ def check_ends(
     to_user=None,
     asked=None,
     why=None,
+    fast_ice=DEFAULT_FAST_ICE,
 ):
     """The ends (start, end) the route uses (seaway.engine.snap.snap_ends), and the sentences
     saying how they moved. An impassable end raises ValueError naming why and the nearest
@@ -94,7 +113,7 @@ def check_ends(
 
     def described(r, c):
         blocks = base is None or not np.isfinite(base[r, c]) or (chart.land is not None and chart.land[r, c])
-        return describe(layers, (r, c), vessel, reasons((r, c)) if reasons else (), blocks)
+        return describe(layers, (r, c), vessel, reasons((r, c)) if reasons else (), blocks, fast_ice)
 
     show = to_user or (lambda p: p)
     given = dict(zip(("start", "end"), asked or ends))
@@ -110,9 +129,8 @@ def check_ends(
             why=why or described,
         )
     except SnapError as exc:  # no usable pixel joins the other end
-        raise ValueError(
-            "; ".join(_refusal(m, given[m.name], np.inf, snap, snap_km, show, unit) for m in exc.moves)
-        ) from None
+        said = "; ".join(_refusal(m, given[m.name], np.inf, snap, snap_km, show, unit) for m in exc.moves)
+        raise SnapError(exc.moves, np.inf, unit, said) from None
 
     def km(m):  # a projected chart: great-circle km between the point asked for and the new one
         if to_user is None:
@@ -122,7 +140,8 @@ def check_ends(
 
     far = [m for m in snapped.moves if not (snap and km(m) <= snap_km)]
     if far:
-        raise ValueError("; ".join(_refusal(m, given[m.name], km(m), snap, snap_km, show, unit) for m in far))
+        said = "; ".join(_refusal(m, given[m.name], km(m), snap, snap_km, show, unit) for m in far)
+        raise SnapError(far, snap_km if snap else 0.0, unit, said)
     notes = []
     for m in snapped.moves:
         notes.append(

@@ -21,7 +21,7 @@ from ..errors import NoRouteError, SeawayError
 from ..models import EdgeCost
 from .depth import with_draft
 from .ends import check_ends
-from .noroute import why_no_route
+from .noroute import ClassProbe, why_no_route
 from .projected import end_pixel, pixel_latlon
 from .ship import as_vessel, vessel_notes
 from .timing import blocked_words, chart_age, end_reasons, ice_time, search_cost, time_notes
@@ -135,6 +135,24 @@ def route_chart(
             "objective time needs an ice chart (a speed in its ice); this chart is a cost raster"
         )
     routed = cost if priced is None else priced
+
+    def price(c):  # the search's cost for another class: its ice, its speed (a ship of that class)
+        if c == cls:
+            return routed
+        other = as_vessel(c, ship.speed_kn if ship is not None else speed_kn)
+        cost_c, _ = with_draft(chart.cost_for(c), chart.depth, draft, ukc)
+        t = ice_time(
+            chart,
+            c,
+            other,
+            cost_c,
+            escort=escort,
+            escort_kn=escort_speed_kn,
+            stage_thickness=stage_thickness,
+            draft_m=draft,
+        )
+        return search_cost(cost_c, t, "impact")
+
     reasons = end_reasons(shallow, timing)
     (start, end), moved = check_ends(
         routed,
@@ -147,6 +165,7 @@ def route_chart(
         say=lambda note: None,
         neighbourhood=neighbourhood,
         reasons=reasons,
+        fast_ice=chart.options.fast_ice,
         chart_cost=chart_cost,
         to_user=pixel_latlon(cost, chart.projection),
         asked=asked,
@@ -177,6 +196,14 @@ def route_chart(
             draft=(draft, ukc) if shallow is not None else None,
             constrained=used,
             blocked=blocked_words(shallow, timing),
+            probe=ClassProbe(chart, price, neighbourhood) if timing is not None else None,
+            escorted=(
+                lambda: _escort_gets_through(
+                    chart, cls, ship, cost, stage_thickness, draft, start, end, neighbourhood
+                )
+            )
+            if timing is not None and not escort and timing.closed.any()
+            else None,
         )
         err.notes = tuple(notes) + tuple(moved)
         raise err from None
@@ -254,3 +281,13 @@ def _quickest(
         f"the quickest route (objective time) takes {q.cost:.1f} h over {q.length:.0f} km, "
         f"{hours - q.cost:.1f} h less than this one ({hours:.1f} h, the least ice impact)"
     ]
+
+
+def _escort_gets_through(chart, cls, ship, cost, stage_thickness, draft, start, end, k) -> bool:
+    """Whether the voyage gets through with an icebreaker's escort (the default escort speed)."""
+    t = ice_time(chart, cls, ship, cost, escort=True, stage_thickness=stage_thickness, draft_m=draft)
+    try:
+        prepare(search_cost(cost, t, "impact"), land=chart.land, neighbourhood=k).route(start, end)
+    except NoRouteError:
+        return False
+    return True
