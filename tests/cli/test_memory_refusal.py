@@ -129,7 +129,7 @@ def test_the_issue_grids_are_refused_in_one_line_within_bounded_memory(shared_da
 def test_samples_and_bench_sizes_are_refused_in_one_line_within_bounded_memory():
     out = _child(
         ["bench", "--neighbourhood", "3", "--repeat", "1"],
-        ["--size", "95x115"],
+        ["--size", "600x700"],
         [["--size", "100000x100000"]],
     )
     (line,) = _check(out)
