@@ -143,3 +143,36 @@ def test_json_vessel_files_and_missing_files(tmp_path):
         "max_wind_ms",
         "max_wave_m",
     }
+
+
+@pytest.mark.parametrize(
+    "field, value, message",
+    [
+        (
+            "beam_m",
+            "1e30",
+            r"beam_m .* must be between 1 and 80 \(the widest ship afloat, the Prelude FLNG, is 74 m",
+        ),
+        ("displacement_t", "1e30", r"displacement_t .* must be between 10 and 700000 \(Seawise Giant"),
+        ("length_m", "1e30", r"length_m .* must be between 5 and 500 \(Seawise Giant"),
+        ("draft_m", "1" + "0" * 400, r"draft_m .* must be a positive number, got 1000"),
+        ("max_wave_m", "inf", r"max_wave_m .* must be a positive number, got inf"),
+        ("ukc_m", "nan", r"ukc_m .* must be a non-negative number, got nan"),
+    ],
+)
+def test_implausible_sizes_are_refused_with_the_range_and_its_source(tmp_path, field, value, message):
+    """Issue 27: load() accepted a 1e30 m beam or a 1e30 t displacement; every number has a
+    plausible range (RANGES) with the record it comes from. An integer too large for a float
+    raised OverflowError."""
+    path = _write(tmp_path, f'name = "x"\nservice_speed_kn = 12\n{field} = {value}')
+    with pytest.raises(VesselFileError, match=rf"vessel file {path}: {message}"):
+        load(path)
+
+
+def test_every_number_field_has_a_range_with_its_source():
+    from seaway.vessel.profile import RANGES
+
+    numbers = {k for k, (kind, _, _) in FIELDS.items() if kind in ("positive", "non-negative", "range")}
+    assert numbers <= set(RANGES)
+    for lo, hi, why in RANGES.values():
+        assert 0 <= lo < hi < 1e7 and len(why) > 10

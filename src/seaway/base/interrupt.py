@@ -25,6 +25,8 @@ T = TypeVar("T")
 
 #: callback(settled pixels) while a `reporting` block runs.
 _listener: Callable[[int], None] | None = None
+#: The cancel token of the batch a worker thread runs (`cancelling`), per thread.
+_batch = threading.local()
 POLL_S = 0.1  # how often the waiting main thread looks at the search (and calls the listener)
 PROGRESS_EVERY_S = 1.0  # SettledProgress says at most this often
 
@@ -65,6 +67,19 @@ class SettledProgress:
         self.say(f"searching: {settled:,} pixels settled ({100 * settled / self.pixels:.0f} % of the chart)")
 
 
+@contextlib.contextmanager
+def cancelling(token: _core.CancelToken) -> Iterator[None]:
+    """Within the block, searches run by interruptible() in this thread (not the main thread)
+    are given `token`: a batch of routes on worker threads (seaway.fleet.route_many) sets it on
+    Ctrl-C to stop every running search at once, within 4096 expansions."""
+    previous = getattr(_batch, "token", None)
+    _batch.token = token
+    try:
+        yield
+    finally:
+        _batch.token = previous
+
+
 def _stop(finished: threading.Event, token: _core.CancelToken) -> None:
     """Cancel the search and wait until it has returned, even if more Ctrl-Cs arrive meanwhile:
     the search stops within 4096 expansions and gives its workspace back to the chart's pool,
@@ -86,7 +101,7 @@ def interruptible(search: Callable[[_core.CancelToken | None], T]) -> T:
     cleanup releases the running thread's own lock), so a later join() returned at once and
     the cancelled search kept its workspace."""
     if threading.current_thread() is not threading.main_thread():
-        return search(None)
+        return search(getattr(_batch, "token", None))
     token = _core.CancelToken()
     outcome: dict[str, Any] = {}  # "value": the search's T, or "error": what it raised
     finished = threading.Event()

@@ -48,3 +48,12 @@ def number(
     ):
         raise ValueError(message.format(""))
     return v
+
+
+def one_line(text: object, limit: int = 200) -> str:
+    """`text` on one line, at most `limit` characters, unprintable characters (a damaged
+    file's bytes quoted in a library's message) shown as '?': for quoting another library's
+    error in seaway's own."""
+    text = "".join(c if c.isprintable() else " " if c.isspace() else "?" for c in str(text))
+    text = " ".join(text.split())
+    return text if len(text) <= limit else text[: limit - 3] + "..."

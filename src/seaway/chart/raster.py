@@ -12,7 +12,9 @@ import numpy as np
 import numpy.typing as npt
 
 from .. import _core
+from ..base.memory import SEARCH, check_pixels
 from ..base.validate import number
+from ..errors import SeawayError
 from .cf import coord_role
 from .flags import flags_out, has_flags
 
@@ -123,6 +125,21 @@ def _regular_step(values: npt.NDArray[np.float64], name: str) -> float:
     return float(step)
 
 
+def _plain(a: npt.NDArray[Any]) -> bool:
+    """Is `a` laid out as the engine reads it in place (C order, plain strides, aligned)?"""
+    plain = tuple(int(np.prod(a.shape[i + 1 :], dtype=np.int64)) * a.itemsize for i in range(a.ndim))
+    return bool(a.flags.c_contiguous and a.flags.aligned and a.strides == plain)
+
+
+def engine_layout(a: npt.NDArray[Any]) -> npt.NDArray[Any]:
+    """`a` as the engine reads it in place: C order, aligned, and with the plain strides of its
+    shape. numpy calls a view C-contiguous when only its size-1 axes are odd (np.ones((1, 3))[::-1]
+    has a negative row stride), but the engine's arrays (Eigen) refuse any negative stride; an
+    array unpickled from a buffer (a Dask worker) may sit at an odd address. Such arrays are
+    copied once; ordinary ones are read in place."""
+    return a if _plain(a) else np.array(a, order="C", copy=True)
+
+
 def _land_mask(land: npt.NDArray[np.generic]) -> npt.NDArray[np.uint8]:
     """The land mask as uint8 0/1: bool, or integers/floats holding only 0 (sea) and 1 (land).
     Anything else (NaN, 2, 0.5, -1, strings) is refused rather than silently read as land."""
@@ -189,11 +206,20 @@ def as_chart(
         raise ValueError(f"the chart has {values.size} pixels; the engine handles fewer than 2**32")
     if values.dtype == np.bool_ or not np.issubdtype(values.dtype, np.number) or np.iscomplexobj(values):
         raise TypeError(f"cost must hold real numbers, got dtype {values.dtype}")
-    if values.dtype not in (np.float32, np.float64):
+    converted = values.dtype not in (np.float32, np.float64)
+    copied = converted or not _plain(values)
+    check_pixels(  # the copy (a broadcast view may stand for far more memory than it holds)
+        values.shape[0],
+        values.shape[1],
+        SEARCH + (8 if converted else values.itemsize if copied else 0),
+        "the search on a chart"
+        + (" converted to float64" if converted else " copied to C order" if copied else ""),
+        "route on a coarser chart (e.g. cost[::2, ::2]) or on a part of it",
+        SeawayError,
+    )
+    if converted:
         values = values.astype(np.float64)
-    # C order and aligned (an array unpickled from a buffer, e.g. on a Dask worker, may sit at
-    # an odd address: the engine reads doubles in place, which needs alignment).
-    values = np.require(values, requirements=["C_CONTIGUOUS", "ALIGNED"])
+    values = engine_layout(values)
     lowest = float(np.fmin.reduce(values, axis=None))  # one pass, no temporary array
     if not allow_negative and lowest < 0:
         negative = values < 0
@@ -215,9 +241,11 @@ def as_chart(
             raise ValueError(
                 f"land has shape {land_arr.shape} but cost has shape {values.shape}; give a mask of the same shape"
             )
-        mask = np.ascontiguousarray(_land_mask(land_arr))
+        mask = engine_layout(_land_mask(land_arr))
     if flag_land is not None:
-        mask = flag_land.astype(np.uint8) if mask is None else mask | flag_land.astype(np.uint8)
+        mask = engine_layout(
+            flag_land.astype(np.uint8) if mask is None else mask | flag_land.astype(np.uint8)
+        )
 
     grid = _core.Grid()
     grid.rows, grid.cols = rows, cols

@@ -13,6 +13,7 @@ import argparse
 import os
 import sys
 
+from ..base.validate import one_line
 from ..errors import NoRouteError
 from .bench import add_bench_command, run_bench
 from .common import EPILOG
@@ -55,6 +56,13 @@ def main(argv=None) -> int:
         for note in getattr(exc, "notes", ()):  # what the voyage assumed or changed: said first
             print(f"seaway {args.command}: {note}", file=sys.stderr)
         print(f"seaway {args.command}: error: {exc}", file=sys.stderr)
+        return 1
+    except MemoryError as exc:  # a request the estimates (seaway.base.memory) let through
+        print(
+            f"seaway {args.command}: error: out of memory ({one_line(exc) or 'an allocation failed'}); "
+            "give a coarser grid, a smaller box or fewer charts, or set SEAWAY_MEMORY_LIMIT lower",
+            file=sys.stderr,
+        )
         return 1
     except KeyboardInterrupt:
         print(f"seaway {args.command}: interrupted", file=sys.stderr)

@@ -15,9 +15,11 @@ import numpy.typing as npt
 
 from .. import _core
 from ..base.interrupt import interruptible
+from ..base.memory import SEARCH, check_pixels
 from ..chart.locate import check_overflow, check_tiny, locate, nearest_passable
 from ..chart.raster import Chart, as_chart
 from ..constraints import constrain
+from ..errors import SeawayError
 from ..models.base import CostModel, EdgeCost, as_model
 from ..result.route import Route
 from . import methods
@@ -103,6 +105,13 @@ class PreparedChart:
         self, chart: Chart, neighbourhood: int, directions: str, model: CostModel, land_rule: str
     ) -> None:
         check_tiny(chart, neighbourhood)
+        check_pixels(  # the engine's clearance and one search workspace (seaway.base.memory)
+            *chart.shape,
+            SEARCH,
+            "the search on a chart",
+            "route on a coarser chart (e.g. cost[::2, ::2]) or on a part of it",
+            SeawayError,
+        )
         self.chart, self.model = chart, model
         self.neighbourhood, self.directions = neighbourhood, directions
         self.router = _core.make_router(
@@ -116,6 +125,14 @@ class PreparedChart:
         "auto") answers later queries by A* with the landmark bound. Returns the stats:
         count, seconds, bytes, bytes_per_pixel, pixels."""
         model = self.model if model is None else as_model(model)
+        if isinstance(count, (int, np.integer)) and 1 <= count <= 64:  # (else build_landmarks says)
+            check_pixels(
+                *self.chart.shape,
+                4 * int(count),
+                f"{count} landmark tables",
+                "prepare fewer landmarks",
+                SeawayError,
+            )
         seed = nearest_passable(self.chart, tuple(n // 2 for n in self.chart.shape))
         if seed is None:
             raise ValueError("no pixel of the chart is passable: landmarks need water")

@@ -115,11 +115,13 @@ def route_many(
         )
     n = len(chart_items) * len(vessel_items) * len(voyage_items)
     bar = _Progress(n, cluster is not None if progress is None else bool(progress))
-    if cluster is None:
-        rows = _run_threads(chart_items, vessel_items, voyage_items, opts, threads, bar)
-    else:
-        rows = _run_dask(chart_items, vessel_items, voyage_items, opts, cluster, bar)
-    bar.close()
+    try:  # Ctrl-C stops every running search (seaway.fleet.run) and raises KeyboardInterrupt
+        if cluster is None:
+            rows = _run_threads(chart_items, vessel_items, voyage_items, opts, threads, bar)
+        else:
+            rows = _run_dask(chart_items, vessel_items, voyage_items, opts, cluster, bar)
+    finally:
+        bar.close()
     ids = [(c, v, y) for c, _ in chart_items for v, _ in vessel_items for y, _ in voyage_items]
     table = pd.DataFrame(
         [dict(chart=c, vessel=v, voyage=y, **row) for (c, v, y), row in zip(ids, rows)],

@@ -6,8 +6,10 @@ from __future__ import annotations
 import math
 import sys
 import threading
-from concurrent.futures import ThreadPoolExecutor, as_completed
+from concurrent.futures import ThreadPoolExecutor, as_completed, wait
 
+from .. import _core
+from ..base.interrupt import cancelling
 from .one import _loaded, _route_one, _target
 
 
@@ -70,12 +72,41 @@ def _run_threads(chart_items, vessel_items, voyage_items, opts, threads, bar):
             bar.update(1)
         return rows
     rows = [None] * len(work)
-    with ThreadPoolExecutor(max_workers=threads) as pool:
-        futures = {pool.submit(item, *w): i for i, w in enumerate(work)}
+    token = _core.CancelToken()  # every search of the batch polls it (seaway.base.interrupt)
+
+    def cancellable(*w):
+        with cancelling(token):
+            return item(*w)
+
+    pool = ThreadPoolExecutor(max_workers=threads)
+    futures = {}
+    try:
+        for i, w in enumerate(work):
+            futures[pool.submit(cancellable, *w)] = i
         for fut in as_completed(futures):
             rows[futures[fut]] = fut.result()
             bar.update(1)
+    except BaseException:  # Ctrl-C (or a failure): stop the running searches, start no more
+        token.set()
+        pool.shutdown(wait=False, cancel_futures=True)
+        _await(futures)
+        raise
+    finally:
+        pool.shutdown(wait=True)
     return rows
+
+
+def _await(futures):
+    """Wait until every started item has stopped (each within 4096 expansions of the cancel),
+    absorbing further Ctrl-Cs meanwhile, so that no search outlives route_many. (Items the
+    shutdown cancelled never count as done for wait(): they were never started.)"""
+    started = [f for f in futures if not f.cancelled()]
+    while True:
+        try:
+            wait(started)
+            return
+        except KeyboardInterrupt:
+            continue
 
 
 # -- dask ----------------------------------------------------------------------------------------
@@ -123,9 +154,13 @@ def _run_dask(chart_items, vessel_items, voyage_items, opts, cluster, bar):
         futures = client.compute(tasks)
         index = {f.key: i for i, f in enumerate(futures)}
         parts = [None] * len(futures)
-        for fut in dask_completed(futures):
-            parts[index[fut.key]] = fut.result()
-            bar.update(len(parts[index[fut.key]]))
+        try:
+            for fut in dask_completed(futures):
+                parts[index[fut.key]] = fut.result()
+                bar.update(len(parts[index[fut.key]]))
+        except KeyboardInterrupt:  # the batches not yet started are dropped
+            client.cancel(futures)
+            raise
         return [row for part in parts for row in part]
     finally:
         for obj in own:

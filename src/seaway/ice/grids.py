@@ -9,11 +9,17 @@ Only numpy is needed to build a Grid; pyproj is used when a chart is reprojected
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
+from ..base.memory import ROUTE, SIGRID, check_pixels, coarser
+from ..errors import ChartError
+
 GEOGRAPHIC = "EPSG:4326"
+#: Bytes per pixel of a SIGRID-3 chart rasterised onto a grid and routed (seaway.base.memory).
+CHART = SIGRID + ROUTE
 
 
 @dataclass(frozen=True, eq=False)
@@ -70,29 +76,64 @@ class Grid:
         return xx, yy
 
 
-def _axis(lo, hi, step, name):
-    if not (np.isfinite(lo) and np.isfinite(hi) and hi > lo and step > 0):
-        raise ValueError(
+def _count(lo, hi, step, name) -> int:
+    """The number of pixels along an axis from lo to hi (pixel edges) at `step`."""
+    if not (np.isfinite(lo) and np.isfinite(hi) and hi > lo and np.isfinite(step) and step > 0):
+        raise ChartError(
             f"{name}: need finite low < high and a positive resolution, got {lo!r}, {hi!r}, {step!r}"
         )
-    n = int(round((hi - lo) / step))
+    n = (hi - lo) / step
+    if not np.isfinite(n):
+        raise ChartError(f"{name}: resolution {step:g} is too fine for an extent of {hi - lo:g}")
+    n = round(n)
     if n < 2 or abs(n * step - (hi - lo)) > 1e-6 * step:
-        raise ValueError(f"{name}: extent {hi - lo:g} is not a whole number (>= 2) of resolution {step:g}")
-    return lo + (np.arange(n) + 0.5) * step
+        raise ChartError(f"{name}: extent {hi - lo:g} is not a whole number (>= 2) of resolution {step:g}")
+    return int(n)
 
 
-def latlon_grid(south, north, west, east, resolution) -> Grid:
+def _check(rows, cols, steps, unit, bytes_per_pixel, what):
+    """Refuse a grid whose chart would not fit in memory (seaway.base.memory), before any of
+    it is allocated. The fix names the finest resolution that fits and still divides the box
+    (a whole multiple m of the one asked for, m dividing both pixel counts), if there is one."""
+    f = coarser(rows * cols, bytes_per_pixel)
+    if f <= 1:
+        return
+    m = next(
+        (m for m in range(math.ceil(f), min(math.gcd(rows, cols), 10**6) + 1) if rows % m == 0 == cols % m),
+        None,
+    )
+    if m is None:
+        finer = " x ".join(f"{s * f:.3g}" for s in dict.fromkeys(steps))
+        fix = f"give a coarser grid (a resolution of {finer} {unit} or more) or a smaller box"
+    else:
+        res = " x ".join(f"{s * m:.6g}" for s in dict.fromkeys(steps))
+        fix = f"give a coarser grid (e.g. a resolution of {res} {unit}: {rows // m:,} x {cols // m:,} pixels) or a smaller box"
+    check_pixels(rows, cols, bytes_per_pixel, what, fix, ChartError)
+
+
+def latlon_grid(
+    south, north, west, east, resolution, *, bytes_per_pixel=CHART, what="a chart on a grid"
+) -> Grid:
     """Regular lat/lon grid whose pixel edges are the given extent (degrees); resolution in
-    degrees, one number or (dlat, dlon). Longitudes as the chart has them (-180..180)."""
+    degrees, one number or (dlat, dlon). Longitudes as the chart has them (-180..180).
+    bytes_per_pixel: what a chart on it will take (default: a SIGRID-3 chart read and routed);
+    a grid whose chart would not fit in memory is refused (ChartError naming `what`, the
+    figure and the fix)."""
     dlat, dlon = (resolution, resolution) if np.isscalar(resolution) else resolution
-    lat = _axis(south, north, dlat, "latitude")[::-1]
-    lon = _axis(west, east, dlon, "longitude")
-    return Grid(GEOGRAPHIC, lon, lat.copy())
+    rows, cols = _count(south, north, dlat, "latitude"), _count(west, east, dlon, "longitude")
+    _check(rows, cols, (dlat, dlon), "deg", bytes_per_pixel, what)
+    lat = south + (np.arange(rows) + 0.5) * dlat
+    lon = west + (np.arange(cols) + 0.5) * dlon
+    return Grid(GEOGRAPHIC, lon, lat[::-1].copy())
 
 
-def projected_grid(crs, xmin, xmax, ymin, ymax, resolution_km) -> Grid:
+def projected_grid(
+    crs, xmin, xmax, ymin, ymax, resolution_km, *, bytes_per_pixel=CHART, what="a chart on a grid"
+) -> Grid:
     """Projected grid: `crs` (e.g. 'EPSG:3413', NSIDC polar stereographic north, or a PROJ
-    string in metres), extent of pixel edges and resolution in km."""
-    x = _axis(xmin, xmax, resolution_km, "x")
-    y = _axis(ymin, ymax, resolution_km, "y")[::-1]
-    return Grid(str(crs), x, y.copy())
+    string in metres), extent of pixel edges and resolution in km; refused as latlon_grid."""
+    cols, rows = _count(xmin, xmax, resolution_km, "x"), _count(ymin, ymax, resolution_km, "y")
+    _check(rows, cols, (resolution_km,), "km", bytes_per_pixel, what)
+    x = xmin + (np.arange(cols) + 0.5) * resolution_km
+    y = ymin + (np.arange(rows) + 0.5) * resolution_km
+    return Grid(str(crs), x, y[::-1].copy())

@@ -12,15 +12,17 @@ scale error) and the route exports as GPX/RTZ; the box may cross the antimeridia
 past 180 are read through the chart's polygons shifted by 360) and reaches the pole when the
 margin does (the grid then spans all longitudes and wraps). Charts in degrees clip the box to
 their own extent (nothing beyond it is known) and keep 1/1000 of their extent if that is
-finer. Large boxes are coarsened so the grid stays under MAX_PIXELS.
+finer. Large boxes are coarsened so the grid stays under MAX_PIXELS, and under what the
+machine's memory holds at the chart's bytes per pixel (seaway.base.memory; then said).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from ..base.memory import fits
 from ..base.units import EARTH_RADIUS_KM, KM_PER_DEG  # noqa: F401 - EARTH_RADIUS_KM: part of this API
-from .grids import Grid, latlon_grid
+from .grids import CHART, Grid, latlon_grid
 
 DLAT = 0.05  # degrees: 5.6 km, the issue's Kara Sea grid
 MIN_MARGIN_KM = 300.0
@@ -45,10 +47,21 @@ def _great_circle(a, b, n=64):
 
 
 def route_grid(
-    start, end, *, chart_bounds=None, dlat=DLAT, margin_km=None, max_pixels=MAX_PIXELS
+    start,
+    end,
+    *,
+    chart_bounds=None,
+    dlat=DLAT,
+    margin_km=None,
+    max_pixels=MAX_PIXELS,
+    bytes_per_pixel=CHART,
+    what="a chart on a grid",
 ) -> tuple[Grid, str]:
     """(Grid, a sentence saying what was chosen) for a route from `start` to `end` ((lat, lon)
-    in degrees). chart_bounds: (west, south, east, north) of a chart in degrees, or None."""
+    in degrees). chart_bounds: (west, south, east, north) of a chart in degrees, or None.
+    bytes_per_pixel: what a chart on the grid takes (seaway.base.memory), to fit in memory."""
+    memory = int(0.9 * fits(bytes_per_pixel))  # (room for the edges' rounding outwards below)
+    max_pixels, squeezed = min(max_pixels, memory), memory < max_pixels
     lat, lon, km = _great_circle(start, end)
     margin = max(MIN_MARGIN_KM, 0.25 * km) if margin_km is None else float(margin_km)
     south = max(lat.min() - margin / KM_PER_DEG, -90.0)
@@ -95,10 +108,20 @@ def route_grid(
     south = north - np.ceil((north - south) / dlat - 1e-9) * dlat
     nlat = int(round((north - south) / dlat))
     nlon = int(round((east - west) / dlon))
-    grid = latlon_grid(south, north, west, east, ((north - south) / nlat, (east - west) / nlon))
+    grid = latlon_grid(
+        south,
+        north,
+        west,
+        east,
+        ((north - south) / nlat, (east - west) / nlon),
+        bytes_per_pixel=bytes_per_pixel,
+        what=what,
+    )
     note = (
         f"grid: lat {south:.2f}..{north:.2f}, lon {west:.2f}..{east:.2f} at {dlat:.4g} x "
         f"{dlon:.4g} deg ({dlat * KM_PER_DEG:.1f} km north-south), {nlat} x {nlon} pixels: the "
         f"great circle between the ends widened by {margin:.0f} km (set it with --grid)"
     )
+    if squeezed and rows * cols > max_pixels:
+        note += f"; coarsened to fit in memory ({max_pixels:,} pixels at most)"
     return grid, note

@@ -19,8 +19,10 @@ import numpy.typing as npt
 import xarray as xr
 
 from ..base.files import open_netcdf
+from ..base.memory import SEASON_CHART, check_pixels
 from ..chart.cf import planar_in_km
 from ..chart.raster import Chart, as_chart
+from ..errors import ChartError
 from . import andreeva
 from .forms import check_fast_ice
 from .seasonfast import record_rule, season_layers
@@ -59,6 +61,13 @@ def read_season(charts, grid, *, fast_ice=None, **read_kwargs) -> xr.Dataset:
         raise ValueError(f"chart dates must be dates such as '2026-07-01' or datetime64: {exc}") from None
     _check_increasing(np.array(dates), "sorted(charts)")
     rule = None if fast_ice is None else check_fast_ice(fast_ice)  # refused before any file is read
+    check_pixels(
+        *grid.shape,
+        SEASON_CHART * len(items),
+        f"a season of {len(items)} charts on a grid",
+        "give a coarser grid, a smaller box or fewer charts",
+        ChartError,
+    )
     frames = [read_sigrid3(p, grid, **read_kwargs) for _, p in items]
     ds = xr.concat([f[season_layers(f)] for f in frames], dim="time", coords="minimal", compat="override")
     return record_rule(ds.assign_coords(time=dates), rule)
@@ -99,7 +108,34 @@ def as_season(season) -> xr.Dataset:
     if "land" not in ds:
         ds = ds.assign(land=xr.zeros_like(ds["CT"], dtype=bool))
     _check_increasing(ds["time"].values, "ds.sortby('time')")
+    for name, lo, hi, what in PLAUSIBLE:
+        if name in ds:
+            _check_range(ds[name], lo, hi, what)
     return ds
+
+
+#: What a season's layers may hold (NaN: unknown): anything else is a damaged file or a wrong unit.
+#: Models' round-off (ROMS: thickness -0.00015 m, concentration -6e-6) is let through.
+PLAUSIBLE = (
+    ("CT", -0.01, 10.01, "total concentration in tenths (0-10)"),
+    ("SA", 0.0, 99.0, "WMO stage codes (0-99)"),
+    ("thickness", -0.01, 50.0, "ice thickness in m (0-50: the thickest ice measured is about 30 m)"),
+)
+
+
+def _check_range(da: xr.DataArray, lo: float, hi: float, what: str) -> None:
+    values = np.asarray(da.values)
+    if not np.issubdtype(values.dtype, np.number) or np.iscomplexobj(values):
+        raise ValueError(f"the season's {da.name} must hold numbers ({what}), got dtype {values.dtype}")
+    with np.errstate(invalid="ignore"):
+        bad = ~np.isnan(values) & ((values < lo) | (values > hi))
+    if bad.any():
+        where = tuple(int(i) for i in np.argwhere(bad)[0])
+        raise ValueError(
+            f"the season's {da.name} holds {int(bad.sum())} value(s) outside its range, e.g. "
+            f"{values[where]:g} at {dict(zip(da.dims, where))}: it holds {what}; the file is damaged "
+            "or in other units: fetch it again, or convert it"
+        )
 
 
 class SeasonGrid:

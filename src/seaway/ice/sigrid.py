@@ -28,9 +28,13 @@ import warnings
 
 import numpy as np
 
+from ..base.memory import SIGRID, check_pixels
+from ..errors import ChartError
 from .codes import FORM_CODES, concentration_tenths, form_code, parse_code, stage_code
 from .geometry import to_grid_crs, wrap_copies
 from .grids import Grid
+from .sigridcheck import FIX, check_contents, expected_records, geometries
+from .vectorfile import one_line
 
 _STAGES = ("SA", "SB", "SC")
 _PARTIALS = ("CA", "CB", "CC")
@@ -50,36 +54,6 @@ def _require():
             f"seaway.ice.sigrid needs the optional packages pyogrio, shapely, "
             f"rasterio, pyproj and antimeridian ({exc.name} is missing): {EXTRA}"
         ) from exc
-
-
-def _check_contents(path, meta, fields, wkb):
-    """Errors naming the file for what would otherwise read as an empty or wrong chart."""
-    import shapely
-
-    if len(wkb) == 0:
-        raise ValueError(f"{path}: the layer has no features (an empty SIGRID-3 chart)")
-    if not {"CT", "SA", "POLY_TYPE"} & set(fields):
-        raise ValueError(
-            f"{path}: none of the SIGRID-3 fields CT, SA, POLY_TYPE is present "
-            f"(fields: {sorted(fields)}); is it a SIGRID-3 ice chart?"
-        )
-    geoms = shapely.from_wkb(wkb)
-    kinds = shapely.get_type_id(geoms)
-    other = ~np.isin(kinds, [-1, 3, 6, 7])  # missing, Polygon, MultiPolygon, GeometryCollection
-    if other.any():
-        types = sorted({g.geom_type for g in geoms[other]})
-        raise ValueError(
-            f"{path}: {int(other.sum())} of {len(geoms)} features are not polygons "
-            f"({', '.join(types)}); SIGRID-3 charts are polygon layers"
-        )
-    if not meta["crs"]:
-        box = shapely.total_bounds(geoms)
-        if np.all(np.isfinite(box)) and (np.abs(box[[0, 2]]).max() > 360 or np.abs(box[[1, 3]]).max() > 90):
-            raise ValueError(
-                f"{path}: the file states no CRS and its coordinates (x {box[0]:.6g}.."
-                f"{box[2]:.6g}, y {box[1]:.6g}..{box[3]:.6g}) are not degrees; supply "
-                "the .prj file (or set the CRS) so it can be reprojected"
-            )
 
 
 def _decode(fields: dict, n: int, rule: str) -> dict:
@@ -127,28 +101,44 @@ def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_tou
     import xarray as xr
     from affine import Affine
 
+    check_pixels(
+        *grid.shape,
+        SIGRID,
+        "rasterising a chart onto a grid",
+        "give a coarser grid or a smaller box",
+        ChartError,
+    )
+    expected = expected_records(path, layer)  # a shapefile's parts agree (none is cut short)
     try:
-        with warnings.catch_warnings():  # GDAL's ring winding notes: rings are regrouped anyway
-            warnings.filterwarnings("ignore", message=".*winding order", category=RuntimeWarning)
+        with warnings.catch_warnings(record=True) as said:  # GDAL's notes: damage is named below
+            warnings.simplefilter("always")
             meta, _, wkb, field_data = pyogrio.raw.read(path, layer=layer)
     except Exception as exc:  # pyogrio's DataSourceError, DataLayerError, ...
-        raise ValueError(f"{path}: cannot read it as a SIGRID-3 vector file ({exc})") from None
+        raise ValueError(f"{path}: cannot read it as a SIGRID-3 vector file ({one_line(str(exc))})") from None
     fields = {str(k).upper(): v for k, v in zip(meta["fields"], field_data)}
-    _check_contents(path, meta, fields, wkb)
-    geoms, repaired = to_grid_crs(shapely.from_wkb(wkb), meta["crs"] or "EPSG:4326", grid.crs)
+    geoms, without = geometries(path, wkb, expected)
+    check_contents(path, meta, fields, geoms)
+    gdal = sorted({str(w.message) for w in said if "winding order" not in str(w.message)})
+    try:
+        geoms, repaired = to_grid_crs(geoms, meta["crs"] or "EPSG:4326", grid.crs)
+        if grid.geographic:
+            shapes = wrap_copies(geoms, grid.x[0], grid.x[-1])
+        else:
+            shapes = [(g, i) for i, g in enumerate(geoms) if not g.is_empty]
+        index = rasterio.features.rasterize(
+            shapes,
+            out_shape=grid.shape,
+            fill=-1,
+            dtype="int32",
+            transform=Affine(*grid.transform()),
+            all_touched=all_touched,
+        )
+    except (shapely.errors.ShapelyError, ValueError, RuntimeError) as exc:  # GEOS, PROJ, GDAL
+        note = f"; GDAL said: {gdal[0]}" if gdal else ""
+        raise ValueError(
+            f"{path}: its polygons cannot be used ({one_line(str(exc) + note)}); {FIX}"
+        ) from None
     n = len(geoms)
-    if grid.geographic:
-        shapes = wrap_copies(geoms, grid.x[0], grid.x[-1])
-    else:
-        shapes = [(g, i) for i, g in enumerate(geoms) if not g.is_empty]
-    index = rasterio.features.rasterize(
-        shapes,
-        out_shape=grid.shape,
-        fill=-1,
-        dtype="int32",
-        transform=Affine(*grid.transform()),
-        all_touched=all_touched,
-    )
     if (index < 0).all():
         box = shapely.total_bounds(geoms)
         raise ValueError(
@@ -205,6 +195,7 @@ def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_tou
         concentration_rule=concentration,
         polygons=n,
         repaired_polygons=repaired,
+        features_without_geometry=without,
         Conventions="CF-1.8",
     )
     return ds

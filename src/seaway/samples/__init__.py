@@ -13,7 +13,9 @@ from functools import lru_cache
 import numpy as np
 
 from ..base.fields import distance_km, gaussian, resample, smooth_noise
+from ..base.memory import KARA, KARA_DAY, ROUTE, check_shape
 from ..base.units import EARTH_RADIUS_KM, KM_PER_DEG  # noqa: F401 - EARTH_RADIUS_KM: part of this API
+from ..errors import SeawayError
 from ..ice import classes as ice_classes
 from ..ice.codes import STAGE_CODES
 
@@ -229,8 +231,17 @@ def kara_sea(shape=(1900, 2300)):
     seaway.route(u, (70.3, 58.5), (77.7, 103.99))``"""
     if isinstance(shape, (int, np.integer)) or len(shape) != 2:
         raise ValueError(f"shape must be (rows, cols), got {shape!r}")
+    _fits(shape, KARA + ROUTE, "the synthetic Kara Sea")
     _grid(shape)
     return _kara_sea(tuple(int(n) for n in shape)).copy(deep=True)
+
+
+def _fits(shape, bytes_per_pixel, what, fix="give a smaller shape"):
+    """Refuse a sample too large for the machine's memory (seaway.base.memory) before making
+    it, naming a shape that fits."""
+    rows, cols = (int(n) for n in shape)
+    if rows >= 2 and cols >= 2:
+        check_shape(rows, cols, bytes_per_pixel, what, fix, SeawayError)
 
 
 def kara_season(days=7, start="2026-07-01", melt_m_per_day=0.1, melted_m=0.5, shape=(380, 460)):
@@ -246,6 +257,14 @@ def kara_season(days=7, start="2026-07-01", melt_m_per_day=0.1, melted_m=0.5, sh
         raise ValueError(f"days must be a whole number of days >= 1, got {days!r}")
     if not (np.isfinite(melt_m_per_day) and melt_m_per_day >= 0):
         raise ValueError(f"melt_m_per_day must be >= 0 (m of ice a day), got {melt_m_per_day!r}")
+    if isinstance(shape, (int, np.integer)) or len(shape) != 2:
+        raise ValueError(f"shape must be (rows, cols), got {shape!r}")
+    _fits(
+        shape,
+        KARA + KARA_DAY * days + ROUTE,
+        f"{days} days of the synthetic Kara Sea",
+        "give fewer days or a smaller shape",
+    )
     ds = kara_sea(shape)
     h0, ct0 = ds.ice_thickness.values, ds.sea_ice_concentration.values
     ct, sa, h = [], [], []

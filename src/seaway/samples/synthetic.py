@@ -6,7 +6,9 @@ from __future__ import annotations
 import numpy as np
 
 from ..base.fields import resample, smooth_noise
+from ..base.memory import SEARCH, SYNTHETIC, check_shape
 from ..base.validate import number
+from ..errors import SeawayError
 
 
 def synthetic_endpoints(shape=(1900, 2300)):
@@ -26,6 +28,7 @@ def synthetic_sea(shape=(1900, 2300), land_fraction=0.3, seed=0):
     rows, cols = (int(n) for n in shape)
     if rows < 20 or cols < 20:
         raise ValueError(f"shape must be at least (20, 20), got {shape!r}")
+    check_shape(rows, cols, SYNTHETIC + SEARCH, "the synthetic sea", "give a smaller shape", SeawayError)
     number(land_fraction, "land_fraction", minimum=0, maximum=0.9, what="a number in [0, 0.9)")
     if land_fraction == 0.9:
         raise ValueError("land_fraction must be a number in [0, 0.9), got 0.9")

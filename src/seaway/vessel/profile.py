@@ -123,7 +123,10 @@ def _fail(path: str, key: str, message: str) -> NoReturn:
 
 
 def _number(path: str, key: str, value: Any, minimum: float = 0.0, strict: bool = True) -> float:
-    ok = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+    try:  # (an integer too large for a float, e.g. 1 followed by 400 zeros, is not finite either)
+        ok = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+    except OverflowError:
+        ok = False
     if not ok or value < minimum or (strict and value == minimum):
         _fail(path, key, f"must be a {'positive' if strict else 'non-negative'} number, got {value!r}")
     if key in RANGES:

@@ -13,8 +13,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..base.memory import FORECAST_FIELD, SEARCH, check_pixels
 from ..base.units import KM_PER_DEG
 from ..chart.cf import coord_role
+from ..errors import ForecastError
 from ..ice.grids import latlon_grid
 from ..ice.routegrid import route_grid
 from ..weather import is_projected, on_grid
@@ -55,6 +57,11 @@ def _resolution_km(ds, crs) -> float:
     return float(min(steps)) * scale / 1000.0 if steps else 10.0
 
 
+def fields(ds) -> int:
+    """The 2-D fields of a forecast: each variable's frames (times, levels) summed."""
+    return sum(int(np.prod(v.shape[:-2], dtype=np.int64)) for v in ds.data_vars.values() if v.ndim >= 2)
+
+
 def onto_route_grid(ds, source, target=None, *, grid=None, ends=None, crs=None):
     """(the forecast on the lat/lon grid it is routed on, notes): unchanged on a lat/lon grid
     without `target`; else resampled onto `target` ((lat, lon, dims): an ice chart's grid),
@@ -66,15 +73,25 @@ def onto_route_grid(ds, source, target=None, *, grid=None, ends=None, crs=None):
             latlon_axes(ds, source)
         return ds, []
     notes = []
+    per_pixel = FORECAST_FIELD * fields(ds) + SEARCH  # bytes (seaway.base.memory)
+    what = f"{source} ({fields(ds)} fields and frames) resampled onto a grid"
     if target is None:
         if grid is not None:
-            box = latlon_grid(*grid)
+            box = latlon_grid(*grid, bytes_per_pixel=per_pixel, what=what)
             notes.append(f"grid: the lat/lon grid --grid {','.join(f'{v:g}' for v in grid)}")
         else:
             km = _resolution_km(ds, crs)
-            box, note = route_grid(*ends, dlat=km / KM_PER_DEG)
+            box, note = route_grid(*ends, dlat=km / KM_PER_DEG, bytes_per_pixel=per_pixel, what=what)
             notes.append(f"{note}; about the forecast's {km:g} km resolution")
         target = (box.y, box.x, ("lat", "lon"))
     lat, lon, dims = target
+    check_pixels(
+        len(lat),
+        len(lon),
+        per_pixel,
+        what,
+        "give a coarser grid or a smaller box, or fewer forecast times",
+        ForecastError,
+    )
     out, said = on_grid(ds, lat, lon, dims, source=source, crs=crs)
     return out, notes + said

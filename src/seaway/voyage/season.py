@@ -6,11 +6,14 @@ from __future__ import annotations
 
 import dataclasses
 import os
+import warnings
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..base.memory import SEASON_CHART
+from ..base.validate import one_line
 from ..engine.api import prepare
 from ..engine.snap import DEFAULT_SNAP_KM
 from ..errors import ChartError, NoRouteError
@@ -181,8 +184,10 @@ def open_season(
         if not os.path.exists(path):
             raise ChartError(f"{path}: no such file")
     notes: list[str] = []
+    per_pixel = SEASON_CHART * len(items)  # bytes: the charts read and routed (seaway.base.memory)
+    what = f"a season of {len(items)} charts on a grid"
     if grid is not None:
-        target = latlon_grid(*grid)
+        target = latlon_grid(*grid, bytes_per_pixel=per_pixel, what=what)
     else:  # as `seaway route` does: the box around the voyage
         bounds = _bounds(items)
         if ends is None:
@@ -191,12 +196,12 @@ def open_season(
                     "the charts are not in degrees: give the grid (south, north, west, east, res)"
                 )
             west, south, east, north = bounds
-            target = latlon_grid(south, north, west, east, 0.05)
+            target = latlon_grid(south, north, west, east, 0.05, bytes_per_pixel=per_pixel, what=what)
             notes.append(
                 f"grid: the charts' extent at 0.05 deg ({south:g} to {north:g} N, {west:g} to {east:g} E)"
             )
         else:
-            target, note = route_grid(*ends, chart_bounds=bounds)
+            target, note = route_grid(*ends, chart_bounds=bounds, bytes_per_pixel=per_pixel, what=what)
             notes.append(note)
     ds = read_season(items, target, fast_ice=fast_ice)
     notes += _check_cover(ds, items, ends, target)
@@ -209,7 +214,12 @@ def _bounds(charts):
 
     boxes = []
     for _, path in charts:
-        info = pyogrio.read_info(path)
+        try:
+            with warnings.catch_warnings():  # GDAL's notes on a damaged file: the read names it
+                warnings.simplefilter("ignore")
+                info = pyogrio.read_info(path)
+        except Exception as exc:  # pyogrio's DataSourceError, ...
+            raise ChartError(f"{path}: cannot read it as a SIGRID-3 vector file ({one_line(exc)})") from None
         if not in_degrees(info):
             return None
         boxes.append(info["total_bounds"])

@@ -4,12 +4,14 @@ ends (seaway.ice.routegrid) unless --grid names one, else the chart's own extent
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 
 from ..ice.grids import latlon_grid
 from ..ice.routegrid import route_grid
 from ..ice.sigrid import read_sigrid3
-from ..ice.vectorfile import check_vector_file
+from ..ice.vectorfile import check_vector_file, one_line
 
 
 def sigrid_chart(path, grid, ends=None, notes=None):
@@ -25,11 +27,16 @@ def sigrid_chart(path, grid, ends=None, notes=None):
     assumed = check_vector_file(path)
     if notes is not None:
         notes += assumed
-    if grid is None and ends is not None:
+    if grid is None:
         try:
-            info = pyogrio.read_info(path)
+            with warnings.catch_warnings():  # GDAL's notes on a damaged file: the read names it
+                warnings.simplefilter("ignore")
+                info = pyogrio.read_info(path)
         except Exception as exc:  # pyogrio's DataSourceError, ...
-            raise ValueError(f"{path}: cannot read it as a SIGRID-3 vector file ({exc})") from None
+            raise ValueError(
+                f"{path}: cannot read it as a SIGRID-3 vector file ({one_line(str(exc))})"
+            ) from None
+    if grid is None and ends is not None:
         box = info["total_bounds"]
         try:
             target, note = route_grid(*ends, chart_bounds=box if in_degrees(info) else None)
@@ -37,9 +44,8 @@ def sigrid_chart(path, grid, ends=None, notes=None):
             raise ValueError(f"{path}: {exc}") from None
         if notes is not None:
             notes.append(note)
-        return read_sigrid3(path, target)
+        return _said(read_sigrid3(path, target), notes)
     if grid is None:
-        info = pyogrio.read_info(path)
         west, south, east, north = info["total_bounds"]
         if not (-180 <= west <= east <= 360 and -90 <= south <= north <= 90):
             raise ValueError(
@@ -51,7 +57,18 @@ def sigrid_chart(path, grid, ends=None, notes=None):
         east = west + np.ceil((east - west) / res - 1e-9) * res
         grid = (south, north, west, east, res)
     south, north, west, east, res = grid
-    return read_sigrid3(path, latlon_grid(south, north, west, east, res))
+    return _said(read_sigrid3(path, latlon_grid(south, north, west, east, res)), notes)
+
+
+def _said(ds, notes):
+    """The chart, with what its reading found said in `notes`: features without geometry."""
+    empty = int(ds.attrs.get("features_without_geometry", 0))
+    if empty and notes is not None:
+        notes.append(
+            f"{ds.attrs['source']}: {empty} of its {ds.attrs['polygons']} features have no geometry "
+            "(null records): they add no ice"
+        )
+    return ds
 
 
 def in_degrees(info) -> bool:

@@ -70,11 +70,26 @@ def _time_axis(ds, departure):
     return t.size, float((t[0] - departure) / np.timedelta64(1, "h")), step
 
 
+#: No forecast field (currents, winds, waves, periods, directions, ice) reaches this magnitude.
+PLAUSIBLE_MAX = 1e6
+
+
 def _frames(field, chart_dims, frames) -> np.ndarray:
     dims = (("time",) if "time" in field.dims else ()) + chart_dims
     if set(field.dims) != set(dims):
         raise ValueError(f"forecast field {field.name!r} has dims {field.dims}; expected {dims}")
-    a = np.asarray(field.transpose(*dims).values, dtype=np.float32)
+    raw = np.asarray(field.transpose(*dims).values)
+    if not np.issubdtype(raw.dtype, np.number) or np.iscomplexobj(raw):
+        raise ValueError(f"forecast field {field.name!r} must hold real numbers, got dtype {raw.dtype}")
+    with np.errstate(invalid="ignore"):
+        bad = np.abs(raw) > PLAUSIBLE_MAX
+    if bad.any():  # (a float32 cast would overflow, or warn: no forecast field holds such values)
+        raise ValueError(
+            f"forecast field {field.name!r} holds {int(bad.sum())} values no forecast has (e.g. "
+            f"{raw.flat[int(np.argmax(bad))]!r}; any field's magnitude stays below {PLAUSIBLE_MAX:g}): "
+            "the file is damaged, or the field is in other units; fetch it again"
+        )
+    a = raw.astype(np.float32)
     if a.ndim == 2:
         a = np.broadcast_to(a, (frames,) + a.shape)
     return np.ascontiguousarray(a)
