@@ -43,7 +43,7 @@ class IceSeasonTime(CostModel):
     hours waited), charts_used (dates), ice_class."""
 
     name = "ice season time"
-    time_dependent = True
+    time_dependent = smoothable = True
     #: Warn when the voyage outlasts the last chart's usual validity (it is recorded either way).
     _warn_late = True
 
@@ -118,7 +118,12 @@ class IceSeasonTime(CostModel):
         assert route.step_costs is not None and per_step.depart_h is not None
         hours, cum = route.cost, np.concatenate([[0.0], np.cumsum(route.step_costs)])
         depart = per_step.depart_h
-        used = np.unique(np.searchsorted(self.valid_from_h, depart, side="right") - 1)
+        used = np.searchsorted(self.valid_from_h, depart, side="right") - 1
+        smoothed = route.stats.smoothing is not None
+        if smoothed:  # a leg sails through every chart valid while it is under way
+            last = np.searchsorted(self.valid_from_h, cum[1:], side="right") - 1
+            used = np.concatenate([np.arange(a, b + 1) for a, b in zip(used, last)] + [used])
+        used = np.unique(used)
         times = self.season.times[self.season.times.size - self.valid_from_h.size :]
         voyage = Voyage.along(
             hours,
@@ -139,7 +144,7 @@ class IceSeasonTime(CostModel):
                 f"({times[-1]}) and its usual validity; the last chart was assumed to hold"
             )
             voyage = dataclasses.replace(voyage, assumptions=voyage.assumptions + (said,))
-            if self._warn_late:
+            if self._warn_late and not smoothed:  # said once, when the search found it
                 warnings.warn(said, stacklevel=3)
         route.stats = dataclasses.replace(route.stats, voyage=voyage)
         return route
