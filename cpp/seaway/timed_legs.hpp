@@ -7,9 +7,9 @@
 // sailed by the model's own step (Model::sail: exactly what the engine charges for that step
 // started then, without a wait). Any other leg is sailed piece by piece: the piece inside pixel
 // c, entered at time t, takes Model::piece_hours(c, length, course, t) — the model's rule for
-// that pixel at that time (the ice chart valid then, the weather then on the piece's course) —
-// and the ship enters the next piece when it leaves this one. A piece along a pixel border is
-// charged the slower side.
+// that pixel at that time (the ice chart valid then, the weather then on the piece's course),
+// as the engine reads a step's at the time the ship starts it — and the ship enters the next
+// pixel when it leaves this one. A piece along a pixel border is charged the slower side.
 //
 // Forbidden (inf): a leg whose closed path touches a pixel closed on the chart (land, or the
 // chart's own impassable pixels) or leaves it; a piece whose pixels are not Model::open for the
@@ -50,13 +50,15 @@ class TimedLegs {
       const double r_km = chart_.lengths().row(std::int64_t(p.r))[o];
       return t_h + m_.sail(v, flat(std::int64_t(q.r), std::int64_t(q.c)), int(o), r_km, t_h);
     }
-    double t = t_h;
-    for (const LegPiece& k : pieces) {
+    double t = t_h, entered = t_h;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      const LegPiece& k = pieces[i];
       if (!open(k.start, t, t)) return inf;
+      if (i == 0 || !same(k.inside, pieces[i - 1].inside)) entered = t;  // a path vertex cut it
       const Course heading = course(k.from, k.to);
       double h = 0;
       for_each_pixel(k.inside, [&](std::int64_t r, std::int64_t c) {
-        h = std::max(h, m_.piece_hours(flat(r, c), k.len, heading, t));
+        h = std::max(h, m_.piece_hours(flat(r, c), k.len, heading, entered));
       });
       if (!(h < inf) || !open(k.inside, t, t + h)) return inf;
       t += h;
@@ -80,6 +82,9 @@ class TimedLegs {
     if (g_.wrap) c = ((c % g_.cols) + g_.cols) % g_.cols;
     if (r < 0 || r >= g_.rows || c < 0 || c >= g_.cols) return -1;
     return r * g_.cols + c;
+  }
+  static bool same(const Touch& a, const Touch& b) {
+    return a.r0 == b.r0 && a.r1 == b.r1 && a.c0 == b.c0 && a.c1 == b.c1;
   }
   bool on_water(const Touch& t) const {
     bool ok = true;

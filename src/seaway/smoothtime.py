@@ -46,6 +46,18 @@ def why_not(route) -> str | None:
     return None
 
 
+def on_clock(route, smooth: bool = True):
+    """The route smoothed on the clock (smooth=True), or as found with a note saying why not
+    (why_not); smooth=False: as found. What route_time, route_ice_weather, route_season and the
+    voyages built on them return."""
+    if not smooth:
+        return route
+    why = why_not(route)
+    if why is not None:
+        return dataclasses.replace(route, notes=tuple(route.notes) + (why,))
+    return smooth_on_clock(route)
+
+
 def smooth_on_clock(route):
     """The route with its zig-zag removed under its own time model, never later (see the module);
     ValueError naming why for a route that cannot be (why_not)."""
