@@ -26,7 +26,7 @@ struct Capabilities {
 // The static rules over the chart's cost raster (max, mean, integral).
 inline constexpr Capabilities raster_rule{true, true, true, false, true};
 // Hours on the clock: a step's cost depends on when it starts; legs are priced on the clock by
-// the model's own rule (sail, piece_hours, open: timed_legs.hpp).
+// the model's own rule (sail, move_hours, open: timed_legs.hpp).
 inline constexpr Capabilities on_the_clock{false, false, false, true, true};
 // A cost on one forecast frame: fixed in time, but not the chart's raster and not symmetric.
 inline constexpr Capabilities on_one_frame{false, false, false, false, false};

@@ -84,6 +84,7 @@ class LegSplitter {
     return pieces_;
   }
   const Touch& end() const { return end_; }
+  const std::vector<LegPiece>& pieces() const { return pieces_; }
 
  private:
   Geometry g_;

@@ -92,8 +92,8 @@ class ZonedTime {
     return h < inf && closed_during(bits(v, w, o), t_h, t_h + h) ? inf : h;
   }
   template <class Course>
-  double piece_hours(std::int64_t c, double len, const Course& heading, double t_h) const {
-    return inner_.piece_hours(c, len, heading, t_h);
+  double move_hours(std::int64_t a, std::int64_t b, double la, double lb, const Course& heading, double t_h) const {
+    return inner_.move_hours(a, b, la, lb, heading, t_h);
   }
   bool open(std::int64_t c, double t0_h, double t1_h) const {
     return inner_.open(c, t0_h, t1_h) && !closed_during(z_.mask[std::size_t(c)], t0_h, t1_h);

@@ -137,17 +137,17 @@ class WeatherTime {
     return speed > 1e-9 ? speed : 0;
   }
 
-  // Legs on the clock (timed_legs.hpp): the step v -> w sailed from t_h, and a piece of len_km
-  // inside pixel c on `heading` from t_h, in hours (inf where forbidden); whether pixel c stays
-  // within the wind and wave limits from t0_h to t1_h (the fields are linear between frames:
-  // their largest values are at the ends or at a frame's time).
+  // Legs on the clock (timed_legs.hpp): the step v -> w sailed from t_h, and a move of la km
+  // in pixel a then lb km in pixel b on `heading` from t_h (the step's rule between a and b),
+  // in hours (inf where forbidden); whether pixel c stays within the wind and wave limits from
+  // t0_h to t1_h (the fields are linear between frames: largest at the ends or a frame's time).
   double sail(std::int64_t v, std::int64_t w, int o, double r_km, double t_h) const {
     const double speed = speed_over_ground(v, w, o, t_h, v_.speed_kn);
     return speed > 1e-9 ? r_km / km_per_nm / speed : inf;
   }
-  double piece_hours(std::int64_t c, double len_km, const Course& heading, double t_h) const {
-    const double speed = speed_on_course(c, c, heading, t_h, v_.speed_kn);
-    return speed > 1e-9 ? len_km / km_per_nm / speed : inf;
+  double move_hours(std::int64_t a, std::int64_t b, double la, double lb, const Course& heading, double t_h) const {
+    const double speed = speed_on_course(a, b, heading, t_h, v_.speed_kn);
+    return speed > 1e-9 ? (la + lb) / km_per_nm / speed : inf;
   }
   bool open(std::int64_t c, double t0_h, double t1_h) const {
     auto calm = [&](double t) {

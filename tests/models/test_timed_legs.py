@@ -93,17 +93,21 @@ def test_a_leg_along_a_meridian_in_a_uniform_current_by_hand():
 def test_ice_that_opens_at_a_known_time_by_hand():
     # A planar season of 10 km pixels, 1 x 12: a band of closed ice (stage 93, 0 kn) at columns
     # 5-6 on the first chart, open water (12 kn) everywhere from the second at 5 h. A leg from
-    # column 0 to 11 reaches the band's border (x = 4.5 pixels = 45 km) after 45 / 22.224 h =
-    # 2.02 h: closed. Left at 3 h it reaches the border at 5.02 h, after the ice opened.
+    # column 0 to 11 moves from pixel 4 into pixel 5 as the engine's step from 4 to 5 does: that
+    # move starts at the centre of pixel 4, 40 km on (1.80 h), and must start once the ice has
+    # opened: a leg left before 3.20 h is closed, one left later sails 110 km at 12 kn.
     stage = np.full((2, 1, 12), 55)
     stage[0, 0, 5:7] = 93
     ds = planar_season(stage, hours=[0.0, 5.0])
     r = route_season(ds, (0, 0), (0, 11), speed=cases.TABLE, concentration_limit=False, smooth=False)
     legs = r.model.timed_legs(r.chart, 5)
     kmh = 1.0 / float(np.float32(1.0 / (12.0 * KM_PER_NM)))  # 12 kn as the engine reads it (float32)
-    assert legs.arrive((0, 0), (0, 11), 0.0) == math.inf
-    assert legs.arrive((0, 0), (0, 11), 2.97) == math.inf  # at the border at 4.99 h: still closed
-    assert legs.arrive((0, 0), (0, 11), 3.0) == pytest.approx(3.0 + 110.0 / kmh, rel=1e-12)
+    opens = 5.0 - 40.0 / kmh
+    assert opens == pytest.approx(3.2001, abs=1e-4)
+    for t0 in (0.0, 3.0, opens - 1e-6):
+        assert legs.arrive((0, 0), (0, 11), t0) == math.inf
+    for t0 in (opens + 1e-6, 3.5):
+        assert legs.arrive((0, 0), (0, 11), t0) == pytest.approx(t0 + 110.0 / kmh, rel=1e-12)
     assert legs.arrive((0, 7), (0, 11), 0.0) == pytest.approx(40.0 / kmh, rel=1e-12)  # beyond it
     # The engine's route waits before the band until it opens, then goes straight on.
     assert r.cost == pytest.approx(5.0 + 70.0 / kmh, rel=1e-12)

@@ -1,10 +1,12 @@
 """An independent reference for legs sailed on the clock (nothing here calls seaway): a leg is
 sampled densely along its path (lat/lon charts: the great circle through index space, as a
-polyline with a vertex every <= 4 pixels; planar charts: the straight segment),
-and the ship is moved sample by sample, each stretch at the speed of the pixel it lies in,
-read at the time the ship entered that pixel (the ice chart valid then, the weather then on
-the course of the path across that pixel); the leg is closed where a sample touches land or a pixel the model
-closes at the time the ship is at that sample.
+polyline with a vertex every <= 4 pixels; planar charts: the straight segment) and read as the
+chain of the pixels the samples fall in: the move from pixel a to the next, b, runs from the
+middle of a's stretch of the leg to the middle of b's (from the leg's start, to its end, for
+the first and last), is priced as one step from a to b started when the ship starts the move
+(the ice chart valid then, the mean of a's and b's weather then, on the course from the move's
+start to its end), and every pixel a sample of the move touches must be open through the whole
+move (checked at 33 times); land or a pixel off the chart closes the leg.
 
 It reports whether the leg only grazes a closed pixel (within 1e-3 pixel of one: a corner the
 samples step over), where the C++ pricer's exact test may close it."""
@@ -32,7 +34,7 @@ class Grid:
             self.dy, self.dx = dy, dx
 
     def samples(self, p, q, n):
-        """(index-space points (n + 1, 2), lengths of the n stretches, their courses) along the
+        """(index-space points, lengths of the stretches between them: about n) along the
         leg's path: on lat/lon charts the great circle through index space as a polyline with a
         vertex every <= 4 pixels (the path the package's legs follow), straight between them;
         a stretch's length is its share of its polyline piece's great-circle length."""
@@ -40,7 +42,7 @@ class Grid:
         if not self.geographic:
             pts = p + np.linspace(0.0, 1.0, n + 1)[:, None] * (q - p)
             d = np.diff(pts, axis=0)
-            return pts, np.hypot(d[:, 0] * self.dy, d[:, 1] * self.dx), np.zeros(n)
+            return pts, np.hypot(d[:, 0] * self.dy, d[:, 1] * self.dx)
         span = float(np.hypot(*(q - p)))
         m = 1 if span <= 4.0 else int(math.ceil(span / 4.0))
         corners = self._great_circle(p, q, m)
@@ -50,20 +52,17 @@ class Grid:
             f = np.linspace(0.0, 1.0, per + 1)[1:, None]
             pts.append(a + f * (b - a))
             length.append(np.full(per, self._km(a, b) / per))
-        pts = np.concatenate(pts)
-        # Each stretch on the course of its piece: the great-circle course from where the path
-        # enters its pixel (or turns, at a polyline vertex) to where it leaves it (or turns).
-        pixel = np.floor((pts[:-1] + pts[1:]) / 2 + 0.5).astype(np.int64)
-        segment = np.repeat(np.arange(m), per)
-        cut = np.flatnonzero(np.any(np.diff(pixel, axis=0) != 0, axis=1) | (np.diff(segment) != 0)) + 1
-        first, last = np.concatenate([[0], cut]), np.concatenate([cut, [len(pixel)]])
-        a, b = pts[first], pts[last]
-        la1, la2 = np.radians(self.lat0 + a[:, 0] * self.dlat), np.radians(self.lat0 + b[:, 0] * self.dlat)
-        dlo = np.radians((b[:, 1] - a[:, 1]) * self.dlon)
-        course = np.arctan2(
-            np.sin(dlo) * np.cos(la2), np.cos(la1) * np.sin(la2) - np.sin(la1) * np.cos(la2) * np.cos(dlo)
+        return np.concatenate(pts), np.concatenate(length)
+
+    def course(self, a, b):
+        """The initial great-circle course (radians) from a to b (index space); 0 on planar grids."""
+        if not self.geographic:
+            return 0.0
+        la1, la2 = np.radians(self.lat0 + np.array([a[0], b[0]]) * self.dlat)
+        dl = math.radians((b[1] - a[1]) * self.dlon)
+        return math.atan2(
+            math.sin(dl) * math.cos(la2), math.cos(la1) * math.sin(la2) - math.sin(la1) * math.cos(la2) * math.cos(dl)
         )
-        return pts, np.concatenate(length), np.repeat(course, last - first)
 
     def _great_circle(self, p, q, m):
         """m + 1 points of the great circle p -> q (index space), ends exact."""
@@ -90,44 +89,53 @@ class Grid:
         return 2 * R_KM * math.asin(math.sqrt(min(max(x, 0.0), 1.0)))
 
 
-def sail(grid, p, q, t0, hours_per_km, is_open, land, n=20000):
+def sail(grid, p, q, t0, move_hours, is_open, land, n=20000):
     """(arrival hours, grazes) of the leg p -> q left at t0 without waiting, in about n stretches.
 
-    hours_per_km(pixel, entered_h, course_rad) -> hours per km in that pixel for a ship that
-    entered it at entered_h (inf: closed); is_open(pixel, t_h) -> bool; land: (rows, cols) bool,
-    the pixels closed whatever the time."""
-    pts, length, course = grid.samples(p, q, n)
+    move_hours(a, b, la, lb, course, t) -> hours of the step from pixel a (la km of it) to pixel
+    b (lb km) started at t (inf: closed); is_open(pixel, t) -> bool; land: (rows, cols) bool, the
+    pixels closed whatever the time."""
+    pts, length = grid.samples(p, q, n)
     mid = np.floor((pts[:-1] + pts[1:]) / 2 + 0.5).astype(np.int64)
     rows, cols = land.shape
     off = (mid[:, 0] < 0) | (mid[:, 0] >= rows) | (mid[:, 1] < 0) | (mid[:, 1] >= cols)
     if off.any() or land[mid[:, 0], mid[:, 1]].any():
         return math.inf, False
-    # Runs of stretches in one pixel on one course: one speed each.
-    cut = np.flatnonzero(np.any(np.diff(mid, axis=0) != 0, axis=1) | (np.diff(course) != 0)) + 1
-    t, times, entered, here = t0, [np.array([t0])], t0, None
-    for a, b in zip(np.concatenate([[0], cut]), np.concatenate([cut, [len(length)]])):
-        pixel = (int(mid[a, 0]), int(mid[a, 1]))
-        if pixel != here:
-            here, entered = pixel, t
-        rate = hours_per_km(pixel, entered, float(course[a]))
-        if not rate < math.inf:
+    s = np.concatenate([[0.0], np.cumsum(length)])
+    cut = np.flatnonzero(np.any(np.diff(mid, axis=0) != 0, axis=1)) + 1
+    first, last = np.concatenate([[0], cut]), np.concatenate([cut, [len(length)]])
+    pixel = [(int(mid[i, 0]), int(mid[i, 1])) for i in first]
+    size = s[last] - s[first]
+    middle = (s[first] + s[last]) / 2
+    cells = len(first)
+    t, moves = t0, []
+    for i in range(max(cells - 1, 1)):
+        j = min(i + 1, cells - 1)
+        la = size[i] if i == 0 else size[i] / 2
+        lb = 0.0 if cells == 1 else (size[j] if i + 2 == cells else size[j] / 2)
+        d0, d1 = (0.0 if i == 0 else middle[i]), (s[-1] if i + 2 >= cells else middle[j])
+        at = [np.array([np.interp(d, s, pts[:, k]) for k in (0, 1)]) for d in (d0, d1)]
+        h = move_hours(pixel[i], pixel[j], la, lb, grid.course(*at), t)
+        if not h < math.inf:
             return math.inf, False
-        times.append(t + np.cumsum(length[a:b]) * rate)
-        t = float(times[-1][-1])
-    times = np.concatenate(times)
+        moves.append((d0, d1, t, t + h))
+        t += h
 
     def closed(margin):
-        for dr in (-margin, margin):
-            for dc in (-margin, margin):
-                r = np.floor(pts[:, 0] + 0.5 + dr).astype(np.int64)
-                c = np.floor(pts[:, 1] + 0.5 + dc).astype(np.int64)
-                off = (r < 0) | (r >= rows) | (c < 0) | (c >= cols)
-                if off.any() or land[r, c].any():
-                    return True
-                for k in np.unique(np.column_stack([r, c]), axis=0):
-                    at = (r == k[0]) & (c == k[1])
-                    if not all(is_open((int(k[0]), int(k[1])), float(x)) for x in _spread(times[at])):
+        for d0, d1, ta, tb in moves:
+            inside = (s >= d0 - 1e-12) & (s <= d1 + 1e-12)
+            x = pts[inside]
+            near = set()
+            for dr in (-margin, margin):
+                for dc in (-margin, margin):
+                    r = np.floor(x[:, 0] + 0.5 + dr).astype(np.int64)
+                    c = np.floor(x[:, 1] + 0.5 + dc).astype(np.int64)
+                    if ((r < 0) | (r >= rows) | (c < 0) | (c >= cols)).any() or land[r, c].any():
                         return True
+                    near |= set(zip(r.tolist(), c.tolist()))
+            times = np.linspace(ta, tb, 33)
+            if not all(is_open(px, float(tt)) for px in near for tt in times):
+                return True
         return False
 
     if closed(1e-9):
@@ -135,49 +143,51 @@ def sail(grid, p, q, t0, hours_per_km, is_open, land, n=20000):
     return float(t), closed(1e-3)
 
 
-def _spread(times, most=64):
-    """At most `most` of the times a pixel is held, its first and last among them."""
-    if times.size <= most:
-        return times
-    return times[np.unique(np.linspace(0, times.size - 1, most).round().astype(int))]
+def frame(valid_from_h, t):
+    return max(int(np.searchsorted(valid_from_h, t, side="right")) - 1, 0)
 
 
-def season_rate(h, valid_from_h):
-    """hours_per_km for a season of charts h (frames, rows, cols), chart k from valid_from_h[k]."""
+def season_move(h, valid_from_h):
+    """move_hours through a season of charts h (frames, rows, cols), chart k from valid_from_h[k]."""
 
-    def rate(pixel, entered, course):
-        k = max(int(np.searchsorted(valid_from_h, entered, side="right")) - 1, 0)
-        return float(h[k][pixel])
+    def hours(a, b, la, lb, course, t):
+        k = frame(valid_from_h, t)
+        return la * float(h[k][a]) + (lb * float(h[k][b]) if lb > 0 else 0.0)
 
-    return rate
+    return hours
 
 
 def season_open(h, valid_from_h):
     def is_open(pixel, t):
-        k = max(int(np.searchsorted(valid_from_h, t, side="right")) - 1, 0)
-        return bool(np.isfinite(h[k][pixel]))
+        return bool(np.isfinite(h[frame(valid_from_h, t)][pixel]))
 
     return is_open
 
 
-def speed_in(weather, pixel, t, course, v0):
-    """Speed over ground (kn) in one pixel on `course` from a speed v0 through calm water, the
-    weather (support.reference_weather.Weather) read at t: Khokhlov's loss, the current holding
-    the track (Olovyannikov 2025); 0 beyond the limits."""
-    if "wind" in weather.f and weather.at("wind", t, pixel) > weather.max_wind:
+def speed_between(weather, a, b, t, course, v0):
+    """Speed over ground (kn) of a step from pixel a to pixel b on `course` from a speed v0
+    through calm water, the weather (support.reference_weather.Weather) read at t at both ends:
+    Khokhlov's loss in the mean waves, the mean current holding the track (Olovyannikov 2025); 0
+    beyond the limits."""
+    at = weather.at
+    if "wind" in weather.f and max(at("wind", t, a), at("wind", t, b)) > weather.max_wind:
         return 0.0
     v = v0
     if "hs" in weather.f:
-        hs = weather.at("hs", t, pixel)
-        if hs > weather.max_wave:
+        ha, hb = at("hs", t, a), at("hs", t, b)
+        if max(ha, hb) > weather.max_wave:
             return 0.0
         if weather.khokhlov:
-            frm = math.radians(weather.at("wdir", t, pixel)) if "wdir" in weather.f else course
-            q = abs(math.remainder(frm - course, 2 * math.pi))
-            h3 = 1.32 * hs
+            q = 0.0
+            if "wdir" in weather.f:
+                x, y = math.radians(at("wdir", t, a)), math.radians(at("wdir", t, b))
+                frm = math.atan2(math.sin(x) + math.sin(y), math.cos(x) + math.cos(y))
+                q = abs(math.remainder(frm - course, 2 * math.pi))
+            h3 = 1.32 * 0.5 * (ha + hb)
             v = v - (0.745 * h3 - 0.275 * q * h3) * (1 - 1.35e-6 * weather.d * v)
     if "ce" in weather.f:
-        ce, cn = weather.at("ce", t, pixel) * KNOTS_PER_MS, weather.at("cn", t, pixel) * KNOTS_PER_MS
+        ce = 0.5 * (at("ce", t, a) + at("ce", t, b)) * KNOTS_PER_MS
+        cn = 0.5 * (at("cn", t, a) + at("cn", t, b)) * KNOTS_PER_MS
         along = cn * math.cos(course) + ce * math.sin(course)
         cross = ce * math.cos(course) - cn * math.sin(course)
         if abs(cross) >= v:
@@ -186,21 +196,21 @@ def speed_in(weather, pixel, t, course, v0):
     return v if v > 1e-9 else 0.0
 
 
-def weather_rate(weather, v0_kn, ice=None):
-    """hours_per_km through the weather at v0_kn through calm water, or (ice = (h, valid_from_h))
-    at the speed of the ice chart valid when the ship entered the pixel."""
+def weather_move(weather, v0_kn, ice=None):
+    """move_hours through the weather at v0_kn through calm water, or (ice = (h, valid_from_h))
+    at the move's speed through the ice of the chart valid when it starts."""
 
-    def rate(pixel, entered, course):
+    def hours(a, b, la, lb, course, t):
         v0 = v0_kn
         if ice is not None:
-            h = season_rate(*ice)(pixel, entered, course)
-            if not h < math.inf:
+            ice_h = season_move(*ice)(a, b, la, lb, course, t)
+            if not ice_h < math.inf:
                 return math.inf
-            v0 = 1.0 / (KM_PER_NM * h)
-        sog = speed_in(weather, pixel, entered, course, v0)
-        return 1.0 / (KM_PER_NM * sog) if sog > 0 else math.inf
+            v0 = (la + lb) / KM_PER_NM / ice_h
+        sog = speed_between(weather, a, b, t, course, v0)
+        return (la + lb) / KM_PER_NM / sog if sog > 0 else math.inf
 
-    return rate
+    return hours
 
 
 def weather_open(weather, ice=None):
