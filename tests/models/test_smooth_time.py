@@ -41,7 +41,9 @@ def _kept(raw, smooth):
 
 
 @pytest.mark.parametrize("kind", CASES)
-@pytest.mark.parametrize("seed, smooth", [(1, False), (2, False), (5, False), (1, True), (2, True), (5, True)])
+@pytest.mark.parametrize(
+    "seed, smooth", [(1, False), (2, False), (5, False), (1, True), (2, True), (5, True)]
+)
 def test_never_later_never_through_a_closed_pixel_and_the_waits_kept(kind, seed, smooth):
     # Fields independent in every pixel (a leg meets every pixel's weather where a long engine
     # step reads only its two ends: few shortcuts pay), or varying smoothly (fewer vertices).
@@ -89,7 +91,9 @@ def test_a_wait_for_the_ice_to_open_is_kept_by_hand():
     rest = math.hypot((4 - at[0]) * 10.0, 70.0) / kmh
     assert s.cost == pytest.approx(5.0 + rest, rel=1e-12) and s.cost <= raw.cost
     assert hours_s == pytest.approx(5.0 - first, rel=1e-9) and since_s <= since
-    assert s.stats.smoothing.waits_added == 0 and s.stats.voyage.charts_used == raw.stats.voyage.charts_used[:2]
+    assert (
+        s.stats.smoothing.waits_added == 0 and s.stats.voyage.charts_used == raw.stats.voyage.charts_used[:2]
+    )
 
 
 def test_a_zone_closed_until_ten_hours_is_waited_for_and_never_entered_while_closed():
@@ -154,6 +158,8 @@ def test_the_kara_sea_voyage_of_the_issue_has_fewer_legs_and_is_no_later(tmp_pat
     argv += ["--to=73.5,80", "--depart", "2026-10-01T06:00", "--vessel-file", "pc6-general-cargo"]
     assert main(["route", *argv]) == 0
     out, err = capsys.readouterr()
-    assert "smoothed on the clock" in err and "not smoothed" not in err and "; 2 legs, 1 course changes" in out
+    assert (
+        "smoothed on the clock" in err and "not smoothed" not in err and "; 2 legs, 1 course changes" in out
+    )
     assert main(["route", *argv, "--no-smooth", "-q"]) == 0
     assert "; 5 legs, 4 course changes" in capsys.readouterr().out

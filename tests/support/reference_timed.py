@@ -61,7 +61,8 @@ class Grid:
         la1, la2 = np.radians(self.lat0 + np.array([a[0], b[0]]) * self.dlat)
         dl = math.radians((b[1] - a[1]) * self.dlon)
         return math.atan2(
-            math.sin(dl) * math.cos(la2), math.cos(la1) * math.sin(la2) - math.sin(la1) * math.cos(la2) * math.cos(dl)
+            math.sin(dl) * math.cos(la2),
+            math.cos(la1) * math.sin(la2) - math.sin(la1) * math.cos(la2) * math.cos(dl),
         )
 
     def _great_circle(self, p, q, m):

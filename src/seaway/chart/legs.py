@@ -85,7 +85,9 @@ class TimedLegs:
 
     def __init__(self, chart: Chart, model: _core.TimeModel, neighbourhood: int = 3) -> None:
         self.chart = chart
-        self.router = _core.make_router(chart.values, chart.land, chart.grid, neighbourhood, "full", "segment")
+        self.router = _core.make_router(
+            chart.values, chart.land, chart.grid, neighbourhood, "full", "segment"
+        )
         closed = ~(np.isfinite(chart.values) & (chart.values >= 0))
         if chart.land is not None:
             closed |= chart.land.astype(bool)

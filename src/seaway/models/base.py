@@ -143,7 +143,12 @@ class CostModel:
         return f"{type(self).__name__}({self.name!r})"
 
 
-_TIME_MODELS = (_core.TravelTimeModel, _core.ZonedTravelTimeModel, _core.IceSeasonModel, _core.IceWeatherModel)
+_TIME_MODELS = (
+    _core.TravelTimeModel,
+    _core.ZonedTravelTimeModel,
+    _core.IceSeasonModel,
+    _core.IceWeatherModel,
+)
 
 
 class _OnChart:
