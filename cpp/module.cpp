@@ -1,6 +1,8 @@
 // The private compiled module seaway._core: wiring only; each area registers itself.
 #include <pybind11/pybind11.h>
 
+#include "seaway/pages.hpp"
+
 namespace py = pybind11;
 
 void register_search(py::module_& m);
@@ -22,4 +24,5 @@ PYBIND11_MODULE(_core, m) {
   register_constraints(m);
   register_smooth(m);  // after every model class (constraints: the zoned ones), for its signatures
   register_capabilities(m);  // last: every model class is registered
+  m.attr("page_strategy") = seaway::pages::strategy;  // the search labels' memory (cpp/seaway/pages.hpp)
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "heap.hpp"
+#include "compat.hpp"
 
 namespace seaway {
 
@@ -43,7 +44,7 @@ class BucketRing {
   // The bucket of a pushed key, counted in. Keys are never below the current bucket (a step
   // costs >= 0), and never a ring or more above it (a step costs < span); rounding is clamped
   // at both ends.
-  __attribute__((always_inline)) std::uint64_t add(double key) {
+  SEAWAY_ALWAYS_INLINE std::uint64_t add(double key) {
     std::uint64_t k = std::uint64_t(key * inv_width_);
     if (!started_) {  // the first key (an A* bound) may lie far from zero: start the ring there
       current_ = highest_ = k;
@@ -117,7 +118,7 @@ class BasicBucketQueue {
       for (std::uint32_t id : ring_[keys_.slot(k)]) f(HeapEntry{keys_.floor(k), id});
   }
 
-  __attribute__((always_inline)) void push(const HeapEntry& e) {
+  SEAWAY_ALWAYS_INLINE void push(const HeapEntry& e) {
     if constexpr (Overflow) {
       // Beyond the window of the current bucket (the last one popped, even when the ring is
       // empty now): the ring would fold the key onto a lower bucket.

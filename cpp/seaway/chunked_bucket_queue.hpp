@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bucket_queue.hpp"
+#include "compat.hpp"
 
 namespace seaway {
 
@@ -37,7 +38,7 @@ class ChunkedBucketQueue {
     }
   }
 
-  __attribute__((always_inline)) void push(const HeapEntry& e) {
+  SEAWAY_ALWAYS_INLINE void push(const HeapEntry& e) {
     const std::size_t b = keys_.slot(keys_.add(e.key));
     if (head_[b] == none || fill_[b] == per_chunk) {  // a new chunk on top of the bucket's stack
       const std::uint32_t c = take_chunk();

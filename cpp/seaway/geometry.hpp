@@ -73,7 +73,7 @@ struct Geometry {
     for (std::int64_t r = 0; r < rows; ++r)
       for (std::int64_t k = 0; k < n; ++k)
         out.table[std::size_t(r * n + k)] =
-            haversine_km(lat(r), 0.0, lat(r + st[k].di), st[k].dj * dlon);
+            haversine_km(lat(r), 0.0, lat(r + st[std::size_t(k)].di), st[std::size_t(k)].dj * dlon);
     return out;
   }
 

@@ -12,7 +12,6 @@
 // not kept (benchmarks/README.md).
 #pragma once
 
-#include <sys/mman.h>
 
 #include <algorithm>
 #include <atomic>
@@ -26,6 +25,7 @@
 #include "landmark_bound.hpp"
 #include "landmark_choice.hpp"
 #include "prepared_chart.hpp"
+#include "pages.hpp"
 
 namespace seaway {
 
@@ -42,13 +42,11 @@ Landmarks build_landmarks(PreparedChart& pg, const Model& model, int count, std:
   std::vector<double> field(static_cast<std::size_t>(n)), nearest(static_cast<std::size_t>(n), inf);
   Landmarks lm;
   lm.table.reserve(std::size_t(n) * std::size_t(count));
-#ifdef MADV_HUGEPAGE
   {  // huge pages before the first write: a query reads one row per pixel, scattered over the chart
     const std::uintptr_t a = reinterpret_cast<std::uintptr_t>(lm.table.data()), huge = 2u << 20;
     const std::uintptr_t lo = (a + huge - 1) & ~(huge - 1), hi = (a + lm.table.capacity() * 4) & ~(huge - 1);
-    if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
+    if (hi > lo) pages::prefer_huge(reinterpret_cast<void*>(lo), hi - lo);
   }
-#endif
   lm.table.resize(std::size_t(n) * std::size_t(count));
   auto farthest = [&](const std::vector<double>& d) {
     std::int64_t best = -1;

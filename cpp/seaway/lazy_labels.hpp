@@ -8,7 +8,6 @@
 // assumed 4 KiB (x86-64, aarch64 default) for the count of written pages.
 #pragma once
 
-#include <sys/mman.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -19,6 +18,8 @@
 #include <vector>
 
 #include "geometry.hpp"
+#include "compat.hpp"
+#include "pages.hpp"
 
 namespace seaway {
 
@@ -51,8 +52,8 @@ class LazyLabels {
   explicit LazyLabels(std::int64_t n)
       : n_(std::size_t(n)), cost_(map(n_ * 8)), pred_(map(n_)), written_((n_ >> 9) + 1) {}
   ~LazyLabels() {
-    munmap(cost_, n_ > 0 ? n_ * 8 : 1);
-    munmap(pred_, n_ > 0 ? n_ : 1);
+    pages::put(cost_, n_ * 8);
+    pages::put(pred_, n_);
   }
   LazyLabels(const LazyLabels&) = delete;
   LazyLabels& operator=(const LazyLabels&) = delete;
@@ -61,13 +62,13 @@ class LazyLabels {
     // An unwritten page is not read: reading it would map the kernel's zero page, and the
     // owner's first write would then replace that mapping, a fault that flushes the TLB of
     // every core running the process (an interrupt to the other side's thread).
-    if (__atomic_load_n(&written_[std::size_t(v) >> 9], __ATOMIC_RELAXED) != this_search) return inf;
-    const std::uint64_t b = __atomic_load_n(static_cast<const std::uint64_t*>(cost_) + v, __ATOMIC_RELAXED);
+    if (compat::load_relaxed(&written_[std::size_t(v) >> 9]) != this_search) return inf;
+    const std::uint64_t b = compat::load_relaxed(static_cast<const std::uint64_t*>(cost_) + v);
     return decode(b);
   }
   void set(std::int64_t v, double d) {  // by one thread only: the owner of these labels
-    __atomic_store_n(static_cast<std::uint64_t*>(cost_) + v, encode(d), __ATOMIC_RELAXED);
-    __atomic_store_n(&written_[std::size_t(v) >> 9], this_search, __ATOMIC_RELAXED);  // v's 4 KiB page
+    compat::store_relaxed(static_cast<std::uint64_t*>(cost_) + v, encode(d));
+    compat::store_relaxed(&written_[std::size_t(v) >> 9], this_search);  // v's 4 KiB page
   }
   void set(std::int64_t v, double d, int pred) {
     set(v, d);
@@ -86,11 +87,11 @@ class LazyLabels {
         written_[p] = zeroed_earlier;
       }
   }
-  // Give every page back to the kernel (zero pages again on the next write). Linux only: there
-  // MADV_DONTNEED makes private anonymous pages read back as zeros; elsewhere (macOS) it is a hint.
+  // Give every page back (zero pages again on the next write; pages.hpp: MADV_DONTNEED on Linux,
+  // a new zeroed block in the portable build).
   void release() {
-    madvise(cost_, n_ > 0 ? n_ * 8 : 1, MADV_DONTNEED);
-    madvise(pred_, n_ ? n_ : 1, MADV_DONTNEED);
+    cost_ = pages::give_back(cost_, n_ * 8);
+    pred_ = pages::give_back(pred_, n_);
     std::fill(written_.begin(), written_.end(), std::uint8_t(0));
   }
 
@@ -126,14 +127,7 @@ class LazyLabels {
     std::memcpy(&d, &b, 8);
     return d;
   }
-  static void* map(std::size_t bytes) {
-    void* p = mmap(nullptr, bytes ? bytes : 1, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (p == MAP_FAILED) throw std::bad_alloc();
-#ifdef MADV_NOHUGEPAGE
-    madvise(p, bytes ? bytes : 1, MADV_NOHUGEPAGE);
-#endif
-    return p;
-  }
+  static void* map(std::size_t bytes) { return pages::take(bytes); }
   std::size_t n_;
   void* cost_;
   void* pred_;
@@ -149,12 +143,7 @@ template <class Bound>
 class CachedBound {
  public:
   CachedBound(const Bound& b, std::int64_t n) : b_(b), n_(std::size_t(n)), written_((n_ >> 9) + 1) {
-    void* p = mmap(nullptr, n_ * 8 + 8, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (p == MAP_FAILED) throw std::bad_alloc();
-#ifdef MADV_NOHUGEPAGE
-    madvise(p, n_ * 8 + 8, MADV_NOHUGEPAGE);  // as LazyLabels: memory only where bounds were kept
-#endif
-    cache_ = static_cast<std::uint64_t*>(p);
+    cache_ = static_cast<std::uint64_t*>(pages::take(n_ * 8 + 8));  // as LazyLabels: lazily mapped
   }
   // Bytes of the pages holding a bound (4 KiB: 512 of them).
   std::size_t resident_bytes() const {
@@ -162,7 +151,7 @@ class CachedBound {
     for (std::uint8_t w : written_) pages += w;
     return pages * 4096 + written_.size();
   }
-  ~CachedBound() { munmap(cache_, n_ * 8 + 8); }
+  ~CachedBound() { pages::put(cache_, n_ * 8 + 8); }
   CachedBound(const CachedBound&) = delete;
   bool active() const { return b_.active(); }
   double operator()(std::int64_t v) const {

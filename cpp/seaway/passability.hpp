@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "geometry.hpp"
+#include "compat.hpp"
 
 namespace seaway {
 
@@ -75,12 +76,12 @@ Passability compute_clearance(const Geometry& g, const T* cost, const std::uint8
   // (restrict: the rows do not overlap, so the compiler may vectorise the byte loop)
   auto rows_pass2 = [&](std::int64_t r_begin, std::int64_t r_end) {
     for (std::int64_t r = r_begin; r < r_end; ++r) {
-      std::uint8_t* __restrict out_row = clearance + r * C;
+      std::uint8_t* SEAWAY_RESTRICT out_row = clearance + r * C;
       std::copy(scratch + r * C, scratch + (r + 1) * C, out_row);
       for (int d = 1; d < cap; ++d)
         for (std::int64_t rr : {r - d, r + d}) {
           if (rr < 0 || rr >= R) continue;
-          const std::uint8_t* __restrict h = scratch + rr * C;
+          const std::uint8_t* SEAWAY_RESTRICT h = scratch + rr * C;
           const std::uint8_t gap = std::uint8_t(d);
           const std::int64_t n = C;  // a local: a byte store could alias the captured C
           for (std::int64_t c = 0; c < n; ++c)

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "heap.hpp"
+#include "compat.hpp"
 
 namespace seaway {
 
@@ -63,7 +64,7 @@ class RadixHeap {
     return b;
   }
   std::size_t bucket(std::uint64_t k) const {
-    return k == last_ ? 0 : std::size_t(64 - __builtin_clzll(k ^ last_));
+    return k == last_ ? 0 : std::size_t(64 - compat::clz64(k ^ last_));
   }
 
   std::array<std::vector<HeapEntry>, 65> buckets_;

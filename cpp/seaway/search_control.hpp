@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "constants.hpp"
+#include "compat.hpp"
 
 namespace seaway {
 
@@ -24,7 +25,7 @@ struct Cancelled : std::runtime_error {
 
 // Counts one settled pixel (or state) and polls the control every poll_every of them;
 // `report`: publish the count (false for the second side of a two-thread search).
-__attribute__((always_inline)) inline void count_settled(std::int64_t& settled,
+SEAWAY_ALWAYS_INLINE inline void count_settled(std::int64_t& settled,
                                                          const SearchControl* control,
                                                          bool report = true) {
   if ((++settled & (poll_every - 1)) != 0 || !control) return;

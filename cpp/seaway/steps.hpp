@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry.hpp"
+#include "compat.hpp"
 #include "stencil.hpp"
 
 namespace seaway {
@@ -33,7 +34,7 @@ class StepEnumerator {
   // w its other end, o its offset, from -> to the step as the model prices it, r its length and
   // cell(m) the flat index of the m-th pixel of the offset's length shares.
   template <bool Backward = false, class F>
-  __attribute__((always_inline)) void each(std::int64_t v, F&& f) const {
+  SEAWAY_ALWAYS_INLINE void each(std::int64_t v, F&& f) const {
     // Locals, not members: the callback's byte stores could alias members, locals stay in registers.
     const std::int64_t R = g_->rows, C = g_->cols, K = std::int64_t(flat_.size());
     const int h = half_;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 
 #include "lazy_labels.hpp"
+#include "compat.hpp"
 
 namespace seaway {
 
@@ -31,7 +32,7 @@ class TurnStates {
   void settle(std::int64_t s) { cost_[std::size_t(s)] = encode(-get(s)); }
   void drop(std::int64_t s) { pred_[std::size_t(s)] = dropped; }
   void prefetch(std::uint32_t s) const {
-    if (s != 0xffffffffu) __builtin_prefetch(&cost_[s]);
+    if (s != 0xffffffffu) compat::prefetch(&cost_[s]);
   }
   int pred(std::int64_t s) const { return pred_[std::size_t(s)]; }
   bool expanded(std::int64_t s) const { return std::signbit(get(s)) && pred_[std::size_t(s)] != dropped; }

@@ -316,3 +316,6 @@ def speed_over_ground_kn(v_kn: float, current_kn: float, q_rad: float) -> float:
 def wave_danger(
     hs_m: float, wave_length_m: float, alpha_rad: float, ship_length_m: float, speed_kn: float
 ) -> float: ...
+
+#: The search labels' memory strategy this build uses: "linux-madvise" or "portable-calloc".
+page_strategy: str

@@ -73,5 +73,5 @@ def smooth(route, *, refine: bool = True, max_sweeps: int = 10):
         sweeps=int(sweeps),
         shortcut_legs=len(w) - 1,
     )
-    out.stats = dataclasses.replace(route.stats, smoothing=done)
+    out = dataclasses.replace(out, stats=dataclasses.replace(route.stats, smoothing=done))
     return out

@@ -37,3 +37,31 @@ def test_the_stub_classes_have_their_methods():
         cls = getattr(_core, name)
         missing = sorted(m for m in methods if not m.startswith("__") and not hasattr(cls, m))
         assert missing == [], f"_core.{name} lacks {missing} named in _core.pyi"
+
+
+def test_the_build_uses_the_page_strategy_asked():
+    """cpp/seaway/pages.hpp: Linux's mmap/madvise by default there, the portable calloc build
+    elsewhere or when forced (.ci/portable sets SEAWAY_EXPECT_PAGES to check it runs that one)."""
+    import os
+    import sys
+
+    expect = os.environ.get("SEAWAY_EXPECT_PAGES")
+    if expect is None:
+        expect = "linux-madvise" if sys.platform.startswith("linux") else "portable-calloc"
+    assert _core.page_strategy == expect
+
+
+def test_released_labels_read_as_unreached():
+    """A prepared chart gives its labels' pages back between big searches (LazyLabels.release):
+    the next searches, on either page strategy, find the same costs as fresh ones."""
+    import numpy as np
+
+    import seaway
+
+    rng = np.random.default_rng(5)
+    cost = rng.uniform(1, 9, (300, 400))
+    chart = seaway.prepare(cost)
+    first = [chart.route((0, 0), (299, 399), method=m).cost for m in ("dijkstra", "astar", "bidirectional")]
+    again = [chart.route((5, 7), (290, 380), method="dijkstra").cost for _ in range(3)]
+    fresh = seaway.route(cost, (5, 7), (290, 380), method="dijkstra").cost
+    assert np.allclose(first, first[0], rtol=1e-12) and np.allclose(again, fresh, rtol=1e-12)

@@ -216,6 +216,6 @@ def test_ice_tongue_weaker_classes_go_around(tongue, ice_class):
     assert r.cost == pytest.approx(r.length)  # u = 1 in open water for these classes
     assert 120 < r.length < 125
     arc7 = ice_impact(tongue, "Arc7")
-    detour = sum(2 * s for s in r.leg_lengths)  # Arc7 on this path pays u = 2 throughout
+    detour = sum(2 * s for s in r.step_lengths)  # Arc7 on this path pays u = 2 throughout
     assert detour > 192  # which is why Arc7 crosses instead
     assert np.isfinite(arc7[r.pixels[:, 0], r.pixels[:, 1]]).all()

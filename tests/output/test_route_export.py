@@ -27,7 +27,7 @@ def equator():
 
 def test_legs_course_distance_time_cost(equator):
     r = equator
-    r.speed_kn = 10.0
+    r = r.with_speed(10.0)
     legs = r.legs()
     assert len(legs) == 2 and r.course_changes == 1
     east, north = legs
@@ -45,7 +45,7 @@ def test_legs_course_distance_time_cost(equator):
 
 
 def test_str_prints_a_table(equator):
-    equator.speed_kn = 12
+    equator = equator.with_speed(12)
     text = str(equator)
     lines = text.splitlines()
     assert lines[0].startswith("seaway route: 00-00.00N 000-00.00E -> 01-00.00N 002-00.00E")
@@ -89,7 +89,7 @@ def test_geojson_split_at_the_antimeridian(tmp_path):
 
 def test_gpx_and_rtz_read_back(tmp_path):
     r = _antimeridian_route()
-    r.speed_kn = 14
+    r = r.with_speed(14)
     export.write(r, tmp_path / "r.gpx")
     root = ET.parse(tmp_path / "r.gpx").getroot()
     assert root.tag == f"{GPX}gpx" and root.get("version") == "1.1"
@@ -108,7 +108,7 @@ def test_gpx_and_rtz_read_back(tmp_path):
 
 
 def test_csv_read_back(tmp_path, equator):
-    equator.speed_kn = 10
+    equator = equator.with_speed(10)
     export.write(equator, tmp_path / "r.csv")
     with open(tmp_path / "r.csv", newline="") as f:
         lines = f.readlines()

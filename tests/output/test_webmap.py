@@ -36,7 +36,7 @@ def ice_route():
     cost = xr.DataArray(np.where(stage == 93, 1.0, 3.0), dims=("lat", "lon"), coords={"lat": lat, "lon": lon})
     r = seaway.route(cost, (78, 22), (77, 58), land=land).smoothed()
     r = r.with_environment({"stage_of_development": stage})
-    r.speed_kn = 12.0
+    r = r.with_speed(12.0)
     return r
 
 

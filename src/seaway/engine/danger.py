@@ -82,9 +82,9 @@ def least_danger_route(
     r = to_route(prepared, found, model, method)
     r = model.finish(r, StepValues())
     danger_h = np.asarray(danger_h, dtype=float)
-    r.stats = dataclasses.replace(
-        r.stats,
-        danger=Danger(hours=float(danger_h.sum()), step_h=danger_h, legs=danger_stretches(r, danger_h, 0.0)),
+    danger = Danger(hours=float(danger_h.sum()), step_h=danger_h, legs=danger_stretches(r, danger_h, 0.0))
+    return dataclasses.replace(
+        r,
+        stats=dataclasses.replace(r.stats, danger=danger),
+        name="seaway route (through danger: no route avoids the danger zones)",
     )
-    r.name = "seaway route (through danger: no route avoids the danger zones)"
-    return r

@@ -32,8 +32,14 @@ PROJ string is the Dataset attribute ``crs``).
 
 from . import andreeva, classes, codes, impact, polaris
 from .classes import CLASSES, IceClass, class_names, get_class
-from .impact import ICE_IMPACT, chart_impact, ice_impact
+from .codes import stage_name
+from .concentration import concentration_chart
+from .forms import check_fast_ice
+from .impact import ICE_IMPACT, chart_impact, governing_stage, ice_impact
+from .polaris import polaris_chart
 from .seasongrid import SeasonGrid, as_season, read_season
+from .sigrid import read_sigrid3
+from .speed import ice_speed
 
 __all__ = [
     "andreeva",
@@ -48,6 +54,13 @@ __all__ = [
     "ICE_IMPACT",
     "ice_impact",
     "chart_impact",
+    "governing_stage",
+    "stage_name",
+    "check_fast_ice",
+    "ice_speed",
+    "polaris_chart",
+    "concentration_chart",
+    "read_sigrid3",
     "SeasonGrid",
     "as_season",
     "read_season",

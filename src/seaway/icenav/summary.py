@@ -88,7 +88,7 @@ def summarize(route, chart, *, time_cost=None, polaris=None, fast_ice=DEFAULT_FA
     assumptions (sentences: what the ice types assume), and with `polaris`: rio_min (the worst
     RIO met: lowest), rio_max, elevated_risk (any sample in an elevated-risk pixel),
     elevated_distance, special_consideration (should be False)."""
-    legs = np.asarray(route.leg_lengths, dtype=float)
+    legs = np.asarray(route.step_lengths, dtype=float)
     spx, skm, step = weighted_samples(route)
     stage_raster, conc_raster, names, assumptions = _ice_types(chart, fast_ice)
     stage, conc = _layer(stage_raster, spx), _layer(conc_raster, spx)

@@ -58,13 +58,15 @@ class FoundRoute(Protocol):
     def step_costs(self) -> npt.NDArray[np.float64] | None: ...
     def costs(self) -> npt.NDArray[np.float64]: ...
 
-    speed_kn: float | None
-    #: seaway.result.stats.RouteStats (a layer above): a model replaces its `voyage` or `fuel`
-    #: with dataclasses.replace.
-    stats: Any
+    @property
+    def speed_kn(self) -> float | None: ...
+    #: seaway.result.stats.RouteStats (a layer above): a model gives back a copy of the route
+    #: (dataclasses.replace: a Route is immutable) with its `voyage` or `fuel` replaced.
+    @property
+    def stats(self) -> Any: ...
 
 
-#: The route a model finishes: a Route, given back as it came with the model's results added.
+#: The route a model finishes: a Route, given back as a copy with the model's results added.
 RouteT = TypeVar("RouteT", bound=FoundRoute)
 
 

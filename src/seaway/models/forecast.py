@@ -114,9 +114,8 @@ class TravelTime(_OnForecast):
             forecast=fc.describe(),
         )
         voyage = dataclasses.replace(voyage, assumptions=tuple(fc.assumed(voyage.arrival)))
-        route.stats = dataclasses.replace(route.stats, voyage=voyage)
-        route.speed_kn = self.vessel.speed_kn
-        return route
+        stats = dataclasses.replace(route.stats, voyage=voyage)
+        return dataclasses.replace(route, stats=stats, speed_kn=self.vessel.speed_kn)  # type: ignore[type-var]
 
     def no_route(self, where: str, prepared: Prepared) -> str:
         return (
@@ -195,8 +194,8 @@ class Fuel(_OnForecast):
             f"{self.at_hours:g} h after the forecast's first time, for the whole voyage",
         )
         voyage = dataclasses.replace(voyage, step_h=hours, assumptions=said)
-        route.stats = dataclasses.replace(route.stats, fuel=use, voyage=voyage)
-        return route
+        stats = dataclasses.replace(route.stats, fuel=use, voyage=voyage)
+        return dataclasses.replace(route, stats=stats)  # type: ignore[type-var]
 
     def no_route(self, where: str, prepared: Prepared) -> str:
         return f"no route {where} at any engine setting within the vessel's limits"
@@ -233,8 +232,7 @@ class WaveDanger(_OnForecast):
         return self._engine
 
     def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
-        route.speed_kn = self.speed_kn
-        return route
+        return dataclasses.replace(route, speed_kn=self.speed_kn)  # type: ignore[type-var]
 
     def no_route(self, where: str, prepared: Prepared) -> str:
         return f"no route at sea {where}"

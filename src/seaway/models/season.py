@@ -146,8 +146,7 @@ class IceSeasonTime(CostModel):
             voyage = dataclasses.replace(voyage, assumptions=voyage.assumptions + (said,))
             if self._warn_late and not smoothed:  # said once, when the search found it
                 warnings.warn(said, stacklevel=3)
-        route.stats = dataclasses.replace(route.stats, voyage=voyage)
-        return route
+        return dataclasses.replace(route, stats=dataclasses.replace(route.stats, voyage=voyage))  # type: ignore[type-var]
 
     def no_route(self, where: str, prepared: Prepared) -> str:
         return (
@@ -208,10 +207,8 @@ class IceWeatherTime(IceSeasonTime):
         route = super().finish(route, per_step)
         v = route.stats.voyage
         said = tuple(self.forecast.assumed(v.arrival)) + v.assumptions
-        route.stats = dataclasses.replace(
-            route.stats, voyage=dataclasses.replace(v, forecast=self.forecast.describe(), assumptions=said)
-        )
-        return route
+        voyage = dataclasses.replace(v, forecast=self.forecast.describe(), assumptions=said)
+        return dataclasses.replace(route, stats=dataclasses.replace(route.stats, voyage=voyage))  # type: ignore[type-var]
 
     def no_route(self, where: str, prepared: Prepared) -> str:
         return (

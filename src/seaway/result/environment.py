@@ -144,7 +144,7 @@ def weighted_samples(route):
     lat/lon charts), each piece's length scaled so a step's pieces add up to its length (km on
     geographic charts, grid units on planar ones). Sums over them are line integrals along the
     route, smoothed or not."""
-    v, steps = route.vertices, route.leg_lengths
+    v, steps = route.vertices, route.step_lengths
     half = (route.neighbourhood - 1) // 2
     if route.points is None and len(v) > 1:  # engine steps between pixel centres: vectorised
         return _step_samples(v, steps)

@@ -21,7 +21,7 @@ from .table import route_table
 from .timing import SpeedField
 
 
-@dataclass
+@dataclass(frozen=True)
 class Route:
     """A route a search returned: its pixels, cost and model, and what a navigator reads from it.
 
@@ -104,7 +104,7 @@ class Route:
         return self.latlon is not None or self.chart.geographic
 
     @property
-    def leg_lengths(self) -> np.ndarray:
+    def step_lengths(self) -> np.ndarray:
         """Length of each step: km on geographic charts, grid units on planar charts."""
         if len(self.pixels if self.points is None else self.points) < 2:
             return np.zeros(0)
@@ -118,7 +118,7 @@ class Route:
     @property
     def length(self) -> float:
         """Total length: km on geographic charts, grid units on planar charts."""
-        return float(self.leg_lengths.sum())
+        return float(self.step_lengths.sum())
 
     # -- readable form -----------------------------------------------------------------------
     def segments(self):
@@ -131,10 +131,17 @@ class Route:
 
     def costs(self) -> np.ndarray:
         """Cost of each step between consecutive vertices (they sum to .cost)."""
-        if self.step_costs is None:
+        if self.step_costs is not None:
+            return np.asarray(self.step_costs, float)
+        cached = self.__dict__.get("_costs")
+        if cached is None:
             seg, v = self.segments(), self.vertices
-            self.step_costs = np.array([seg.leg(a, b)[0] for a, b in zip(v[:-1], v[1:])])
-        return np.asarray(self.step_costs, float)
+            cached = self.__dict__["_costs"] = np.array([seg.leg(a, b)[0] for a, b in zip(v[:-1], v[1:])])
+        return np.asarray(cached, float)
+
+    def with_speed(self, speed_kn: float | None) -> Route:
+        """A copy whose legs are timed at `speed_kn` in open water (None: no times)."""
+        return dataclasses.replace(self, speed_kn=speed_kn)
 
     @property
     def waypoint_index(self) -> np.ndarray:

@@ -71,7 +71,7 @@ def _static(route) -> Schedule | None:
     if route.ice_speed is not None:
         steps = np.asarray(step_times(route)[0], float)
     elif route.speed_kn:
-        steps = np.asarray(route.leg_lengths, float) / (float(route.speed_kn) * KM_PER_NM)
+        steps = np.asarray(route.step_lengths, float) / (float(route.speed_kn) * KM_PER_NM)
     else:
         return None
     arrive = np.concatenate([[0.0], np.cumsum(steps)])
