@@ -113,15 +113,13 @@ def _done(route, kept, depart, arrival, added, v=None):
         step_costs=np.diff(reached),
         method=f"{route.method}+smoothed",
     )
-    out.stats = dataclasses.replace(
-        route.stats,
-        smoothing=Smoothing(
-            cost_before=route.cost,
-            course_changes_before=route.course_changes,
-            course_changes_after=out.course_changes,
-            sweeps=0,
-            shortcut_legs=len(kept) - 1,
-            waits_added=int(added),
-        ),
+    done = Smoothing(
+        cost_before=route.cost,
+        course_changes_before=route.course_changes,
+        course_changes_after=out.course_changes,
+        sweeps=0,
+        shortcut_legs=len(kept) - 1,
+        waits_added=int(added),
     )
+    out = dataclasses.replace(out, stats=dataclasses.replace(route.stats, smoothing=done))
     return route.model.finish(out, StepValues(depart_h=np.asarray(depart), wait_h=depart - reached[:-1]))
