@@ -11,7 +11,10 @@ Both passes run in C++ (cpp/seaway/smooth.hpp). Legs are priced by seaway.chart.
 engine's model extended to arbitrary legs: exact line integral for "integral"; the max/mean
 rule applied to the chain of pixels a leg crosses). Every
 accepted change lowers the cost or keeps it (to a relative 1e-12 for rounding), so the smoothed
-route never costs more than the route it came from, under the model that route was found with."""
+route never costs more than the route it came from, under the model that route was found with.
+
+A route on a clock (a time model) is smoothed by seaway.smoothtime instead: its legs sailed on
+the clock under its own model, never later, its waits kept."""
 
 from __future__ import annotations
 

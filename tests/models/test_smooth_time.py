@@ -163,3 +163,21 @@ def test_the_kara_sea_voyage_of_the_issue_has_fewer_legs_and_is_no_later(tmp_pat
     )
     assert main(["route", *argv, "--no-smooth", "-q"]) == 0
     assert "; 5 legs, 4 course changes" in capsys.readouterr().out
+
+
+def test_a_season_opened_from_a_file_is_smoothed_unless_asked_not_to(tmp_path, capsys):
+    import seaway
+    from support.seasons import retreating_edge
+
+    path = tmp_path / "week.nc"
+    retreating_edge(days=4).to_netcdf(path)
+    season = seaway.open_season(str(path))
+    a, b = (71.0, 70.0), (76.0, 74.0)
+    s, raw = season.route(a, b), season.route(a, b, smooth=False)
+    assert s.method == raw.method + "+smoothed" and s.cost <= raw.cost and len(s.pixels) < len(raw.pixels)
+    argv = ["season", str(path), "--from=71,70", "--to=76,74"]
+    assert main(argv) == 0
+    out, err = capsys.readouterr()
+    assert "smoothed through the charts" in err and f"{s.cost:.2f} h" in out
+    assert main([*argv, "--no-smooth", "-q"]) == 0
+    assert f"{raw.cost:.2f} h" in capsys.readouterr().out

@@ -112,7 +112,8 @@ class IceSeasonTime(CostModel):
 
     def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
         """The route's Voyage: every wait, the charts its steps crossed (the one valid when each
-        step departs) and the ice class."""
+        step departs; a smoothed route's legs: every chart valid while they are under way) and
+        the ice class."""
         # found routes carry their step costs; the season's search reports each step's
         # departure (IceSeasonModel, cpp/models.hpp)
         assert route.step_costs is not None and per_step.depart_h is not None
