@@ -1,4 +1,4 @@
-// Smoothing a time route (seaway.smoothing documents it and binds it): string pulling on the
+// Smoothing a time route (seaway.smoothtime documents it, register_smooth.cpp binds it): string pulling on the
 // clock. From each kept vertex, left at the time the new route leaves it, the route is replaced
 // by one straight leg (TimedLegs, timed_legs.hpp) to the farthest vertex ahead that the leg
 // reaches no later than the route did and without crossing a pixel closed then. Vertices the

@@ -181,3 +181,28 @@ def test_a_season_opened_from_a_file_is_smoothed_unless_asked_not_to(tmp_path, c
     assert "smoothed through the charts" in err and f"{s.cost:.2f} h" in out
     assert main([*argv, "--no-smooth", "-q"]) == 0
     assert f"{raw.cost:.2f} h" in capsys.readouterr().out
+
+
+def test_a_leg_across_the_antimeridian_is_the_rolled_seasons_leg():
+    # A 360-degree chart of open water (5 deg of longitude, 0.5 deg of latitude): from 152.5 E to
+    # 152.5 W across the seam the smoothed route is one leg, as in the season rolled half a turn.
+    stage = np.full((2, 8, 72), 55)
+    lat, lon = 80.5 - 0.5 * np.arange(8), np.arange(-177.5, 180.0, 5.0)
+    ds = planar_season(stage, hours=[0.0, 48.0]).rename(y="lat", x="lon").assign_coords(lat=lat, lon=lon)
+    rolled = ds.copy(data={k: np.roll(v.values, 36, axis=-1) for k, v in ds.data_vars.items()})
+    got = []
+    for season, c0, c1 in ((ds, 66, 5), (rolled, 30, 41)):
+        raw = route_season(
+            season,
+            (lat[7], lon[c0]),
+            (lat[1], lon[c1]),
+            speed=cases.TABLE,
+            concentration_limit=False,
+            smooth=False,
+        )
+        got.append((raw, raw.smoothed()))
+    (raw, s), (raw_rolled, s_rolled) = got
+    assert s.pixels.tolist() == [[7, 66], [1, 5]] and s_rolled.pixels.tolist() == [[7, 30], [1, 41]]
+    assert s.cost == pytest.approx(s_rolled.cost, rel=1e-12) and s.cost < raw.cost
+    kmh = 1.0 / float(np.float32(1.0 / (12.0 * KM_PER_NM)))
+    assert s.cost == pytest.approx(s.length / kmh, rel=1e-9) and s.length < raw.length < 1300
