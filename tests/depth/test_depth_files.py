@@ -51,8 +51,12 @@ def test_conventions_from_cf_attributes_guesses_said_and_bad_units(tmp_path):
     assert any("states no units: ASSUMED metres" in n for n in z.notes)
     flipped = open_bathymetry(tmp_path / "guess_z.nc", positive="down")
     np.testing.assert_allclose(flipped.depth.values, -depth)
-    bad = _write(tmp_path / "km.nc", "depth", depth / 1000, {"units": "km", "positive": "down"}, lat, lon)
-    with pytest.raises(ValueError, match=r"km.nc: depth is in 'km'; depths must be in metres"):
+    km = open_bathymetry(
+        _write(tmp_path / "km.nc", "depth", depth / 1000, {"units": "km", "positive": "down"}, lat, lon)
+    )
+    np.testing.assert_allclose(km.depth.values, depth, atol=1e-9)
+    bad = _write(tmp_path / "kg.nc", "depth", depth, {"units": "kg", "positive": "down"}, lat, lon)
+    with pytest.raises(ValueError, match=r"kg.nc: depth is in 'kg'; depths must be a length"):
         open_bathymetry(bad)
     (tmp_path / "junk.nc").write_bytes(b"not a netcdf file at all")
     with pytest.raises(ValueError, match="junk.nc"):

@@ -126,3 +126,40 @@ def test_what_cannot_be_routed_is_refused_naming_the_fix(tmp_path):
         on_grid(nomap, [74.0], [58.0], source="nomap.nc")
     out, _ = on_grid(nomap, [74.0], [88.0], crs=CRS)  # the projection given instead
     assert float(out["uu"].isel(time=0).squeeze()) == pytest.approx(np.sqrt(3) / 2, abs=1e-6)
+
+
+def test_one_unit_table_reads_every_spelling_of_km():
+    """CF / UDUNITS spellings are read by one table (seaway.base.units, pint): a forecast axis
+    in "kilometers" or "kilometres" was read as metres (1000 x off) by a table of its own."""
+    import numpy as np
+    import xarray as xr
+
+    from seaway.base.units import km_per, metres_per
+    from seaway.weather.forecast import grid_crs
+
+    assert [km_per(u) for u in ("m", "metres", "meter", "km", "kilometers", "kilometres", "100 m")] == [
+        0.001,
+        0.001,
+        0.001,
+        1.0,
+        1.0,
+        1.0,
+        0.1,
+    ]
+    assert (
+        metres_per("ft") == pytest.approx(0.3048)
+        and metres_per("degrees_north") is None
+        and metres_per("") is None
+    )
+    for units in ("kilometers", "kilometres", "km"):
+        ds = xr.Dataset(
+            {
+                "u": (("y", "x"), np.zeros((2, 2)), {"grid_mapping": "crs"}),
+                "crs": ((), 0, {"crs_wkt": "EPSG:3413"}),
+            },
+            coords={
+                "x": ("x", [0.0, 10.0], {"standard_name": "projection_x_coordinate", "units": units}),
+                "y": ("y", [0.0, 10.0], {"standard_name": "projection_y_coordinate", "units": units}),
+            },
+        )
+        assert grid_crs(ds)[3] == 1000.0

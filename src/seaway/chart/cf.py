@@ -9,6 +9,8 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from ..base.units import km_per
+
 LAT_NAMES = ("lat", "latitude", "nav_lat")
 LON_NAMES = ("lon", "longitude", "long", "nav_lon")
 Y_NAMES = ("y", "yc", "northing")
@@ -105,21 +107,6 @@ def coord_role(name: Hashable, attrs: Mapping[Any, Any]) -> str | None:
     return None
 
 
-#: CF / UDUNITS spellings of the length units a planar chart's y/x coordinates come in, in km.
-KM_PER_UNIT = {
-    "m": 1e-3,
-    "meter": 1e-3,
-    "meters": 1e-3,
-    "metre": 1e-3,
-    "metres": 1e-3,
-    "km": 1.0,
-    "kilometer": 1.0,
-    "kilometers": 1.0,
-    "kilometre": 1.0,
-    "kilometres": 1.0,
-}
-
-
 def planar_in_km(da: xr.DataArray, what: str = "the chart") -> tuple[xr.DataArray, tuple[str, ...]]:
     """(da with its planar y/x coordinates in km, what was assumed or converted, in words) for
     models that price steps per km. A lat/lon grid is returned as it is; coordinates in metres
@@ -136,13 +123,13 @@ def planar_in_km(da: xr.DataArray, what: str = "the chart") -> tuple[xr.DataArra
         units = str(da[d].attrs.get("units", "")).strip().lower()
         if not units:
             bare.append(str(d))
-        elif units not in KM_PER_UNIT:
+        elif km_per(units) is None:
             raise ValueError(
-                f"{what}'s {d} coordinate is in {units!r}: give planar coordinates in 'm' or 'km' "
+                f"{what}'s {d} coordinate is in {units!r}: give planar coordinates in a length ('m' or 'km') "
                 "(a lat/lon grid needs latitude/longitude coordinates)"
             )
-        elif KM_PER_UNIT[units] != 1.0:
-            km = np.asarray(da[d].values, float) * KM_PER_UNIT[units]
+        elif km_per(units) != 1.0:
+            km = np.asarray(da[d].values, float) * km_per(units)
             da = da.assign_coords({d: (d, km, {**da[d].attrs, "units": "km"})})
     said = []
     if bare:

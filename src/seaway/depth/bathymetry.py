@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..base.files import open_netcdf, read_geotiff
+from ..base.units import metres_per
 from ..chart.cf import coord_role
 
 #: CF standard names of depth below the surface (positive down) and of elevation (positive up).
@@ -52,19 +53,6 @@ _ELEVATION_WORDS = (
     "relief",
 )
 _DEPTH_WORDS = ("depth", "bathymetry", "bathy", "h", "deptho", "sounding", "soundings")
-_UNITS = {
-    "m": 1.0,
-    "meter": 1.0,
-    "meters": 1.0,
-    "metre": 1.0,
-    "metres": 1.0,
-    "1 m": 1.0,
-    "ft": 0.3048,
-    "feet": 0.3048,
-    "foot": 0.3048,
-    "fathom": 1.8288,
-    "fathoms": 1.8288,
-}
 
 
 @dataclass
@@ -151,13 +139,13 @@ def _scale(path, name, attrs, notes):
     if not units:
         notes.append(f"{path}: {name} states no units: ASSUMED metres")
         return 1.0
-    if units not in _UNITS:
+    scale = metres_per(units)
+    if scale is None:
         raise ValueError(
-            f"{path}: {name} is in {attrs.get('units')!r}; depths must be in metres "
-            "(m), feet (ft) or fathoms: convert the file, or set its units attribute "
-            "if it is wrong"
+            f"{path}: {name} is in {attrs.get('units')!r}; depths must be a length (m, ft, fathoms, ...): "
+            "convert the file, or set its units attribute if it is wrong"
         )
-    return _UNITS[units]
+    return scale
 
 
 def _latlon_dims(path, da):

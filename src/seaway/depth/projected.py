@@ -7,16 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-UNITS = {
-    "km": 1000.0,
-    "kilometre": 1000.0,
-    "kilometer": 1000.0,
-    "m": 1.0,
-    "metre": 1.0,
-    "meter": 1.0,
-    "meters": 1.0,
-    "metres": 1.0,
-}
+from ..base.units import metres_per
 
 
 def projected_depth(raw, factor, y, x, crs, units="km"):
@@ -25,7 +16,7 @@ def projected_depth(raw, factor, y, x, crs, units="km"):
     import pyproj
     import xarray as xr
 
-    scale = UNITS.get(str(units).strip().lower())
+    scale = metres_per(units)
     if scale is None:
         raise ValueError(f"the chart's y/x are in {units!r}; give them in km or m")
     crs = pyproj.CRS.from_user_input(crs)

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..base.units import km_per
 from ..chart.cf import coord_role
 
 _CRS_ATTRS = ("crs_wkt", "spatial_ref", "proj4_string", "proj4text", "proj4")
@@ -81,23 +82,10 @@ def in_km(da):
     y, x = _axes(da)
     out = []
     for c in (y, x):
-        units = str(c.attrs.get("units", "")).lower()
-        scale = 1.0 if units in ("km", "kilometre", "kilometer", "kilometres", "kilometers") else 1e-3
-        if units not in (
-            "m",
-            "meter",
-            "meters",
-            "metre",
-            "metres",
-            "km",
-            "kilometre",
-            "kilometer",
-            "kilometres",
-            "kilometers",
-        ):
+        scale = km_per(c.attrs.get("units"))
+        if scale is None:
             raise ValueError(
-                f"{da.name}: the projected coordinate {c.name} has units "
-                f"{c.attrs.get('units')!r}; give metres or km"
+                f"{da.name}: the projected coordinate {c.name} has units {c.attrs.get('units')!r}; give metres or km"
             )
         out.append(np.asarray(c.values, float) * scale)
     da = da.drop_vars([n for n in da.coords if n not in da.dims or n in (y.name, x.name)], errors="ignore")

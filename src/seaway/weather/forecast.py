@@ -10,6 +10,7 @@ import numpy as np
 import xarray as xr
 
 from ..base.files import open_netcdf
+from ..base.units import metres_per
 from ..chart.cf import GRID_VECTORS, STANDARD_NAMES  # noqa: F401 - part of this API
 
 #: The roles a forecast's fields play in the weather models.
@@ -155,7 +156,11 @@ def grid_crs(ds: xr.Dataset, crs=None):
         crs = mapping.attrs.get("crs_wkt") or mapping.attrs.get("proj4_string") or mapping.attrs.get("proj4")
         if crs is None:
             crs = pyproj.CRS.from_cf(dict(mapping.attrs))
-    scale = 1000.0 if str(x_ax.attrs.get("units", "m")).lower() in ("km", "kilometre", "kilometer") else 1.0
+    scale = metres_per(x_ax.attrs.get("units") or "m")
+    if scale is None:
+        raise ValueError(
+            f"the forecast's projection_x_coordinate is in {x_ax.attrs.get('units')!r}: give a length (m or km)"
+        )
     return pyproj.CRS.from_user_input(crs), x_ax, y_ax, scale
 
 
