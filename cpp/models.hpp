@@ -21,6 +21,7 @@
 
 #include "model_values.hpp"
 #include "seaway/cost_models.hpp"
+#include "seaway/fuel.hpp"
 #include "seaway/ice_time.hpp"
 #include "seaway/ice_weather.hpp"
 #include "seaway/prepared_chart.hpp"

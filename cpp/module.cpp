@@ -20,9 +20,9 @@ PYBIND11_MODULE(_core, m) {
   register_weather(m);
   register_models(m);
   register_exact(m);
-  register_smooth(m);
   register_turns(m);
   register_constraints(m);
+  register_smooth(m);  // after every model class (constraints: the zoned ones), for its signatures
   register_capabilities(m);  // last: every model class is registered
   m.attr("page_strategy") = seaway::pages::strategy;  // the search labels' memory (cpp/seaway/pages.hpp)
 }

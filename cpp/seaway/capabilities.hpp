@@ -17,15 +17,17 @@ struct Capabilities {
   bool turn_penalty = false;
   // The label is a clock: a step's cost depends on when it is started (FIFO).
   bool time_dependent = false;
-  // Arbitrary straight legs are priced by the model's own rule (legs.hpp): smoothing and the
-  // leg tables of smoothed routes.
+  // Arbitrary straight legs are priced by the model's own rule: a static rule's cost
+  // (legs.hpp), a time model's arrival on the clock (timed_legs.hpp); smoothing and the leg
+  // tables of smoothed routes.
   bool smoothable = false;
 };
 
 // The static rules over the chart's cost raster (max, mean, integral).
 inline constexpr Capabilities raster_rule{true, true, true, false, true};
-// A cost that depends on the forecast frame or on the clock.
-inline constexpr Capabilities on_the_clock{false, false, false, true, false};
+// Hours on the clock: a step's cost depends on when it starts; legs are priced on the clock by
+// the model's own rule (sail, move_hours, open: timed_legs.hpp).
+inline constexpr Capabilities on_the_clock{false, false, false, true, true};
 // A cost on one forecast frame: fixed in time, but not the chart's raster and not symmetric.
 inline constexpr Capabilities on_one_frame{false, false, false, false, false};
 

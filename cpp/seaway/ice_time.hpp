@@ -101,6 +101,25 @@ class IceSeasonTime {
   }
   const IceSeries& series() const { return s_; }
 
+  // Legs on the clock (timed_legs.hpp): the step v -> w sailed from t_h without waiting, and a
+  // move of la km in pixel a then lb km in pixel b started at t_h (the line integral through
+  // the chart valid then), in hours (inf where closed); whether pixel c is open in every chart
+  // valid from t0_h to t1_h.
+  double sail(std::int64_t v, std::int64_t, int o, double r_km, double t_h) const {
+    return duration(v, o, r_km, chart_at(t_h), shares_of(v, o));
+  }
+  template <class Course>
+  double move_hours(std::int64_t a, std::int64_t b, double la, double lb, const Course&, double t_h) const {
+    const float* h = s_.hours_per_km + chart_at(t_h) * g_.size();
+    return la * double(h[a]) + (lb > 0 ? lb * double(h[b]) : 0.0);
+  }
+  bool open(std::int64_t c, double t0_h, double t1_h) const {
+    const std::int64_t k0 = chart_at(t0_h);
+    for (std::int64_t k = k0; k < s_.frames && (k == k0 || s_.valid_from_h[k] <= t1_h); ++k)
+      if (!(double(s_.hours_per_km[k * g_.size() + c]) < inf)) return false;
+    return true;
+  }
+
   // The flat index of the pixel (di, dj) from v, across the antimeridian on wrapping grids.
   std::int64_t at(std::int64_t v, int di, int dj) const {
     const std::int64_t row = v / g_.cols;

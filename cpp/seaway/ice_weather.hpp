@@ -62,6 +62,24 @@ class IceWeatherTime {
     return step(v, ice_.at(v, d.di, d.dj), o, r_km, t_h, ice_.shares_of(v, o));
   }
 
+  // Legs on the clock (timed_legs.hpp), as IceSeasonTime's and WeatherTime's: the step sailed
+  // from t_h without waiting; a move of la km in pixel a then lb km in pixel b as the step
+  // between them (its time through the ice of the chart valid at t_h, that speed changed by
+  // the weather then on `heading`); pixel c open in the ice and within the weather's limits
+  // from t0_h to t1_h.
+  double sail(std::int64_t v, std::int64_t w, int o, double r_km, double t_h) const {
+    return duration(v, w, o, r_km, ice_.chart_at(t_h), t_h, ice_.shares_of(v, o));
+  }
+  double move_hours(std::int64_t a, std::int64_t b, double la, double lb, const Course& heading, double t_h) const {
+    const double ice_h = ice_.move_hours(a, b, la, lb, heading, t_h), r_km = la + lb;
+    if (!(ice_h < inf)) return inf;
+    const double sog = weather_.speed_on_course(a, b, heading, t_h, r_km / km_per_nm / ice_h);
+    return sog > 1e-9 ? r_km / km_per_nm / sog : inf;
+  }
+  bool open(std::int64_t c, double t0_h, double t1_h) const {
+    return ice_.open(c, t0_h, t1_h) && weather_.open(c, t0_h, t1_h);
+  }
+
  private:
   // Hours to sail the step through chart k starting at t_h; inf when the ice or the weather
   // closes it.

@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include "leg_path.hpp"
+#include "leg_pieces.hpp"
 
 namespace seaway {
 
@@ -29,7 +29,7 @@ class LegPricer {
   // negative (the engine's rule).
   LegPricer(const float* uf, const double* ud, const std::uint8_t* land, const Geometry& g, LegRule rule,
             int half)
-      : uf_(uf), ud_(ud), land_(land), g_(g), rule_(rule), half_(half) {}
+      : uf_(uf), ud_(ud), land_(land), g_(g), rule_(rule), half_(half), split_(g) {}
 
   // (cost, length) of the leg p -> q; cost inf if the leg is forbidden.
   std::pair<double, double> leg(Point p, Point q) const {
@@ -78,7 +78,6 @@ class LegPricer {
   }
 
  private:
-  static constexpr double eps = 1e-9;
   struct Piece {
     double len, u;
     std::int64_t id;
@@ -102,52 +101,23 @@ class LegPricer {
     const double x = uf_ ? double(uf_[i]) : ud_[i];
     return (x >= 0 && x < inf && !(land_ && land_[i])) ? x : inf;
   }
-  // The largest cost among the pixels whose closed squares hold the point (1, 2 or 4 of them),
-  // and the id of the first.
-  double around(Point x, std::int64_t* id = nullptr) const {
-    const std::int64_t r0 = std::int64_t(std::floor(x.r + 0.5 - eps)), r1 = std::int64_t(std::floor(x.r + 0.5 + eps));
-    const std::int64_t c0 = std::int64_t(std::floor(x.c + 0.5 - eps)), c1 = std::int64_t(std::floor(x.c + 0.5 + eps));
-    if (id) *id = r0 * (g_.cols + 1) + c0;
-    return std::max({at(r0, c0), at(r0, c1), at(r1, c0), at(r1, c1)});
+  // The largest cost among the pixels of t (1, 2 or 4 of them), and the id of the first.
+  double around(const Touch& t, std::int64_t* id = nullptr) const {
+    if (id) *id = t.r0 * (g_.cols + 1) + t.c0;
+    return std::max({at(t.r0, t.c0), at(t.r0, t.c1), at(t.r1, t.c0), at(t.r1, t.c1)});
   }
 
   // Pieces of the polyline inside single pixels into pieces_; false if the closed polyline
   // touches an impassable pixel or leaves the chart.
   bool pieces(const std::vector<Point>& path) const {
     pieces_.clear();
-    for (std::size_t s = 0; s + 1 < path.size(); ++s) {
-      const Point a = path[s], b = path[s + 1];
-      // The border crossings of each axis, each list ascending in t, then merged.
-      ts_.assign({0.0});
-      std::size_t mid = 1;
-      for (int axis = 0; axis < 2; ++axis) {
-        const double xa = axis ? a.c : a.r, xb = axis ? b.c : b.r;
-        const double lo = std::min(xa, xb), hi = std::max(xa, xb);
-        if (hi - lo > eps) {
-          const double k0 = std::ceil(lo - 0.5 - eps), k1 = std::floor(hi - 0.5 + eps);
-          const std::size_t from = ts_.size();
-          for (double k = k0; k <= k1; ++k) ts_.push_back(std::clamp((k + 0.5 - xa) / (xb - xa), 0.0, 1.0));
-          if (xb < xa) std::reverse(ts_.begin() + std::ptrdiff_t(from), ts_.end());
-        }
-        if (axis == 0) mid = ts_.size();
-      }
-      std::inplace_merge(ts_.begin() + 1, ts_.begin() + std::ptrdiff_t(mid), ts_.end());
-      ts_.push_back(1.0);
-      kept_.clear();
-      for (std::size_t i = 0; i < ts_.size(); ++i)
-        if (i == 0 || ts_[i] - ts_[i - 1] > eps) kept_.push_back(ts_[i]);
-      const double seg = length(a, b);
-      auto point = [&](double t) { return Point{a.r + t * (b.r - a.r), a.c + t * (b.c - a.c)}; };
-      for (double t : kept_)
-        if (!(around(point(t)) < inf)) return false;
-      for (std::size_t i = 0; i + 1 < kept_.size(); ++i) {
-        std::int64_t id;
-        const double u = around(point((kept_[i] + kept_[i + 1]) / 2), &id);
-        if (!(u < inf)) return false;
-        pieces_.push_back({(kept_[i + 1] - kept_[i]) * seg, u, id});
-      }
+    for (const LegPiece& k : split_.split(path)) {
+      std::int64_t id;
+      const double u = around(k.inside, &id);
+      if (!(around(k.start) < inf) || !(u < inf)) return false;
+      pieces_.push_back({k.len, u, id});
     }
-    return true;
+    return around(split_.end()) < inf;
   }
 
   const float* uf_;
@@ -157,9 +127,9 @@ class LegPricer {
   LegRule rule_;
   int half_;
   // Scratch reused across calls (one pricer per thread).
+  LegSplitter split_;
   mutable std::vector<Point> path_;
   mutable std::vector<Piece> pieces_, merged_;
-  mutable std::vector<double> ts_, kept_;
 };
 
 }  // namespace seaway

@@ -85,6 +85,25 @@ class ZonedTime {
     return dep;
   }
 
+  // Legs on the clock (timed_legs.hpp): the inner model's, and no zone touched while it is
+  // closed (the step between its start and its arrival, as above; a pixel from t0_h to t1_h).
+  double sail(std::int64_t v, std::int64_t w, int o, double r, double t_h) const {
+    const double h = inner_.sail(v, w, o, r, t_h);
+    return h < inf && closed_during(bits(v, w, o), t_h, t_h + h) ? inf : h;
+  }
+  template <class Course>
+  double move_hours(std::int64_t a, std::int64_t b, double la, double lb, const Course& heading, double t_h) const {
+    return inner_.move_hours(a, b, la, lb, heading, t_h);
+  }
+  bool open(std::int64_t c, double t0_h, double t1_h) const {
+    return inner_.open(c, t0_h, t1_h) && !closed_during(z_.mask[std::size_t(c)], t0_h, t1_h);
+  }
+  bool closed_during(std::uint8_t bits, double t0_h, double t1_h) const {
+    for (std::size_t z = 0; z < z_.closes_h.size(); ++z)
+      if (((bits >> z) & 1u) && t0_h < z_.opens_h[z] && t1_h > z_.closes_h[z]) return true;
+    return false;
+  }
+
   const Inner& inner() const { return inner_; }
   const TimeWindows& windows() const { return z_; }
 

@@ -65,6 +65,11 @@ inline double speed_over_ground_kn(double v, double vt, double q) {
   return along + std::sqrt(v * v - cross * cross);
 }
 
+// A course (radians from north, clockwise) with its sine and cosine.
+struct Course {
+  double rad, sin, cos;
+};
+
 class WeatherTime {
  public:
   static constexpr Capabilities caps = on_the_clock;
@@ -90,18 +95,15 @@ class WeatherTime {
   // Speed over ground (kn) of the step v -> w along offset o started at t_h hours after
   // departure, with the engine set for v0_kn in calm water; 0 where the step is forbidden.
   double speed_over_ground(std::int64_t v, std::int64_t w, int o, double t_h, double v0_kn) const {
-    // Frames and weights of the time t_h (held at the ends of the forecast).
-    double x = (t_h - f_.first_h) / f_.step_h;
-    x = std::clamp(x, 0.0, double(f_.frames - 1));
-    const std::int64_t i0 = std::int64_t(x), i1 = std::min(i0 + 1, f_.frames - 1);
-    const double a = x - double(i0);
-    const std::int64_t n = g_.size();
-    auto at = [&](const float* field, std::int64_t p) {
-      return (1 - a) * double(field[i0 * n + p]) + a * double(field[i1 * n + p]);
-    };
-    if (f_.wind_speed && std::max(at(f_.wind_speed, v), at(f_.wind_speed, w)) > v_.max_wind_ms) return 0;
     const std::size_t ro = std::size_t((v / g_.cols) * n_off_ + o);
-    const double course = course_[ro];
+    return speed_on_course(v, w, {course_[ro], course_sin_[ro], course_cos_[ro]}, t_h, v0_kn);
+  }
+
+  // The same between pixels v and w (the weather the mean of theirs) on `course`.
+  double speed_on_course(std::int64_t v, std::int64_t w, const Course& heading, double t_h, double v0_kn) const {
+    const auto at = fields_at(t_h);
+    if (f_.wind_speed && std::max(at(f_.wind_speed, v), at(f_.wind_speed, w)) > v_.max_wind_ms) return 0;
+    const double course = heading.rad;
 
     double speed = v0_kn;
     if (f_.wave_height) {
@@ -127,66 +129,63 @@ class WeatherTime {
       const double cn = 0.5 * (at(f_.current_north, v) + at(f_.current_north, w)) * knots_per_ms;
       // The current along and across the course (course from north, clockwise): the same as
       // speed_over_ground_kn(speed, |c|, angle(c) - course), without the angles.
-      const double along = cn * course_cos_[ro] + ce * course_sin_[ro];
-      const double cross = ce * course_cos_[ro] - cn * course_sin_[ro];
+      const double along = cn * heading.cos + ce * heading.sin;
+      const double cross = ce * heading.cos - cn * heading.sin;
       if (ce != 0 || cn != 0)
         speed = std::fabs(cross) >= speed ? 0 : along + std::sqrt(speed * speed - cross * cross);
     }
     return speed > 1e-9 ? speed : 0;
   }
 
+  // Legs on the clock (timed_legs.hpp): the step v -> w sailed from t_h, and a move of la km
+  // in pixel a then lb km in pixel b on `heading` from t_h (the step's rule between a and b),
+  // in hours (inf where forbidden); whether pixel c stays within the wind and wave limits from
+  // t0_h to t1_h (the fields are linear between frames: largest at the ends or a frame's time).
+  double sail(std::int64_t v, std::int64_t w, int o, double r_km, double t_h) const {
+    const double speed = speed_over_ground(v, w, o, t_h, v_.speed_kn);
+    return speed > 1e-9 ? r_km / km_per_nm / speed : inf;
+  }
+  double move_hours(std::int64_t a, std::int64_t b, double la, double lb, const Course& heading, double t_h) const {
+    const double speed = speed_on_course(a, b, heading, t_h, v_.speed_kn);
+    return speed > 1e-9 ? (la + lb) / km_per_nm / speed : inf;
+  }
+  bool open(std::int64_t c, double t0_h, double t1_h) const {
+    auto calm = [&](double t) {
+      const auto at = fields_at(t);
+      return !(f_.wind_speed && !(at(f_.wind_speed, c) <= v_.max_wind_ms)) &&
+             !(f_.wave_height && !(at(f_.wave_height, c) <= v_.max_wave_m));
+    };
+    if (!calm(t0_h) || !calm(t1_h)) return false;
+    const double first = std::floor((t0_h - f_.first_h) / f_.step_h) + 1;
+    for (std::int64_t k = std::int64_t(std::max(first, 0.0)); k < f_.frames; ++k) {
+      const double tk = f_.first_h + double(k) * f_.step_h;
+      if (tk >= t1_h) break;
+      if (tk > t0_h && !calm(tk)) return false;
+    }
+    return true;
+  }
+
  private:
+  // The fields at t_h, linear between frames (held at the ends of the forecast): at(field, p).
+  struct FieldsAt {
+    std::int64_t i0, i1, n;
+    double a;
+    double operator()(const float* field, std::int64_t p) const {
+      return (1 - a) * double(field[i0 * n + p]) + a * double(field[i1 * n + p]);
+    }
+  };
+  FieldsAt fields_at(double t_h) const {
+    const double x = std::clamp((t_h - f_.first_h) / f_.step_h, 0.0, double(f_.frames - 1));
+    const std::int64_t i0 = std::int64_t(x);
+    return {i0, std::min(i0 + 1, f_.frames - 1), g_.size(), x - double(i0)};
+  }
+
   const Geometry& g_;
   Forecast f_;
   Vessel v_;
   std::int64_t n_off_;
   double best_kn_;
   std::vector<double> course_, course_sin_, course_cos_;  // per row and offset
-};
-
-// Sotnikova 2009's fuel: each step's engine setting is chosen from `settings_kn` (calm-water speeds)
-// to minimise fuel + lambda x time, fuel burnt at rate_t_per_h per hour at each setting. Sweeping
-// lambda (tonnes per hour of passage) traces the time-fuel trade-off; lambda = 0 is the least
-// fuel. The weather is the forecast at departure (the label is fuel + lambda x time, not time,
-// so the time a step starts is not known during the search).
-class FuelLagrangian {
- public:
-  static constexpr Capabilities caps = on_one_frame;
-  FuelLagrangian(const WeatherTime& physics, std::vector<double> settings_kn,
-                 std::vector<double> rate_t_per_h, double lambda, double best_extra_kn)
-      : physics_(physics), settings_(std::move(settings_kn)), rate_(std::move(rate_t_per_h)),
-        lambda_(lambda) {
-    min_rate_ = inf;  // cheapest possible t/km: some setting at its fastest attainable speed
-    for (std::size_t s = 0; s < settings_.size(); ++s)
-      min_rate_ = std::min(min_rate_, (rate_[s] + lambda_) / (km_per_nm * (settings_[s] + best_extra_kn)));
-  }
-
-  StepBounds bounds(const Passability&) const { return {min_rate_, inf, true}; }
-
-  template <class Cell>
-  double operator()(std::int64_t v, std::int64_t w, int o, double r_km, double, Cell&&) const {
-    return best(v, w, o, r_km).cost;
-  }
-
-  struct Choice {
-    double cost = inf, hours = inf, fuel_t = inf;
-    int setting = -1;
-  };
-  Choice best(std::int64_t v, std::int64_t w, int o, double r_km) const {
-    Choice c;
-    for (std::size_t s = 0; s < settings_.size(); ++s) {
-      const double sog = physics_.speed_over_ground(v, w, o, 0.0, settings_[s]);
-      if (sog <= 0) continue;
-      const double hours = r_km / km_per_nm / sog, cost = (rate_[s] + lambda_) * hours;
-      if (cost < c.cost) c = {cost, hours, rate_[s] * hours, int(s)};
-    }
-    return c;
-  }
-
- private:
-  const WeatherTime& physics_;
-  std::vector<double> settings_, rate_;
-  double lambda_, min_rate_;
 };
 
 }  // namespace seaway

@@ -194,6 +194,9 @@ Model = (
 )
 #: The static models (capabilities: static): the bidirectional search.
 StaticModel = MaxCost | MeanCost | IntegralCost | LengthCost | EnteredPixelCost
+#: The time models (capabilities: time_dependent, smoothable): legs sailed on the clock and
+#: smoothing (TimedLegs).
+TimeModel = TravelTimeModel | ZonedTravelTimeModel | IceSeasonModel | IceWeatherModel
 #: The raster rules (capabilities: static, symmetric, turn_penalty, smoothable): landmarks, turn
 #: penalties, leg pricing and smoothing.
 RasterRule = MaxCost | MeanCost | IntegralCost | LengthCost
@@ -253,6 +256,18 @@ class LegPricer:
         refine: bool,
         max_sweeps: int,
     ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], int]: ...
+
+class TimedLegs:
+    def __init__(self, router: Router, model: TimeModel, closed: npt.NDArray[np.uint8]) -> None: ...
+    def arrive(self, r0: float, c0: float, r1: float, c1: float, depart_h: float) -> float: ...
+    def smooth(
+        self,
+        vertices: npt.ArrayLike,
+        arrive_h: npt.ArrayLike,
+        leave_h: npt.ArrayLike,
+        fixed: npt.ArrayLike,
+        candidates: npt.ArrayLike,
+    ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.float64], int]: ...
 
 def make_router(
     cost: npt.NDArray[np.float32] | npt.NDArray[np.float64],

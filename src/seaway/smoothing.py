@@ -11,7 +11,10 @@ Both passes run in C++ (cpp/seaway/smooth.hpp). Legs are priced by seaway.chart.
 engine's model extended to arbitrary legs: exact line integral for "integral"; the max/mean
 rule applied to the chain of pixels a leg crosses). Every
 accepted change lowers the cost or keeps it (to a relative 1e-12 for rounding), so the smoothed
-route never costs more than the route it came from, under the model that route was found with."""
+route never costs more than the route it came from, under the model that route was found with.
+
+A route on a clock (a time model) is smoothed by seaway.smoothtime instead: its legs sailed on
+the clock under its own model, never later, its waits kept."""
 
 from __future__ import annotations
 
@@ -20,6 +23,7 @@ import dataclasses
 import numpy as np
 
 from .result.stats import Smoothing
+from .smoothtime import smooth_on_clock
 
 RTOL = 1e-12  # the relative rounding slack of every acceptance test (cpp/seaway/smooth.hpp)
 
@@ -30,7 +34,14 @@ def smooth(route, *, refine: bool = True, max_sweeps: int = 10):
     Returns a Route whose vertices (`points`, fractional row/col; `coords`) are the waypoints;
     `pixels` holds the pixel of each waypoint. `stats.smoothing` (seaway.result.stats.Smoothing)
     holds cost_before (the route's cost), course_changes_before / course_changes_after, sweeps
-    and shortcut_legs."""
+    and shortcut_legs.
+
+    A route on a clock (a time model: through a forecast, a season of ice charts or both) is
+    smoothed under its own model by seaway.smoothtime: legs sailed on the clock, never later,
+    never through land or a pixel closed when the ship is there, its waits kept; `refine` and
+    `max_sweeps` do not apply to it."""
+    if route.model.time_dependent:
+        return smooth_on_clock(route)
     v = route.vertices
     if len(v) < 3:  # nothing to smooth; said in stats all the same
         done = Smoothing(

@@ -4,6 +4,8 @@ on the calm forecast's grid (calm water: hours = km / (1.852 x speed)), an indep
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pytest
 
@@ -16,6 +18,9 @@ from support.forecasts import forecast
 
 shapely = pytest.importorskip("shapely")
 from shapely.geometry import box  # noqa: E402
+
+#: The engine's steps: these tests hold them to brute force and to values by hand.
+route_time = functools.partial(route_time, smooth=False)
 
 SHIP = Vessel(speed_kn=12.0, speed_loss="none")
 KMH = 1.852 * 12.0  # km per hour at 12 kn in calm water

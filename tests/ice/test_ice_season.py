@@ -2,6 +2,7 @@
 checked against a brute force over all paths, a wait that beats a detour, daily charts of a
 retreating ice edge, and a real ocean model's five daily ice fields."""
 
+import functools
 import math
 
 import numpy as np
@@ -14,6 +15,9 @@ from seaway.icenav.season import arrival_field, route_season
 from support.data import SHARED_DATA
 from support.reference import haversine, season_best_arrival, season_path_arrival
 from support.seasons import DAY0, planar_season, retreating_edge
+
+#: The engine's steps: these tests hold them to brute force and to values by hand.
+route_season = functools.partial(route_season, smooth=False)
 
 DATA = SHARED_DATA
 KN = 1.852  # km per nautical mile

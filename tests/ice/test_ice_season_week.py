@@ -109,9 +109,13 @@ def test_a_week_of_daily_sigrid3_charts_arc4_and_arc7_on_two_departures(week):
     assert [str(t)[:10] for t in arc4.stats.voyage.charts_used] == ["2026-07-01", "2026-07-04"]
     late4 = run["Arc4", "2026-07-05"]
     assert late4.cost == pytest.approx(hours_along_row(speeds(14, 1.75, 14), 0, 39), rel=1e-9)
-    # Its cost is hours with waits: legs cannot be re-priced, so smoothing is refused.
-    with pytest.raises(ValueError, match="prices only the engine's steps"):
-        arc4.smoothed()
+    # Smoothed through the charts: its wait kept where it was, left when the route left it, and
+    # along the row's great circles (shorter than the parallel) no later.
+    smooth = arc4.smoothed()
+    ((pixel_s, _, since_s, waited_s),) = smooth.stats.voyage.waits
+    assert pixel_s == (1, 24) and since_s <= since and waited_s >= waited
+    assert smooth.cost < arc4.cost and smooth.stats.voyage.hours == smooth.cost
+    assert len(smooth.pixels) < len(arc4.pixels) and smooth.stats.smoothing.waits_added == 0
     # FIFO: the later departure never arrives earlier (hours: Arc4 74.0 and 9.7, Arc7 9.7, 5.8).
     for cls in ("Arc4", "Arc7"):
         assert run[cls, "2026-07-05"].stats.voyage.arrival > run[cls, "2026-07-01"].stats.voyage.arrival

@@ -2,6 +2,8 @@
 on land moves only as far as the limit, an end in ice that opens later stays and the route waits,
 and a strait closed by first-year ice in every chart is explained by the ice, not the land."""
 
+import functools
+
 import numpy as np
 import pytest
 
@@ -14,6 +16,9 @@ from seaway.icenav.seasonwhy import snap_season_ends
 from seaway.models import IceSeasonTime
 from support.reference import haversine
 from support.seasons import channel_season
+
+#: The engine's steps: these tests hold them to brute force and to values by hand.
+route_season = functools.partial(route_season, smooth=False)
 
 KN = 1.852
 WEST, EAST = (70.5, 60.5), (70.5, 65.5)

@@ -49,7 +49,8 @@ def _overloads(fn) -> str:
         (_core.Router.route_bidirectional, ("static",)),
         (_core.Router.build_landmarks, ("static", "symmetric")),
         (_core.route_turns, ("turn_penalty",)),
-        (_core.LegPricer.__init__, ("smoothable",)),
+        (_core.LegPricer.__init__, ("smoothable", "static")),
+        (_core.TimedLegs.__init__, ("smoothable", "time_dependent")),
     ],
 )
 def test_each_search_is_bound_for_exactly_the_models_that_can_take_it(search, needs):

@@ -69,10 +69,10 @@ def test_routes_carry_model_and_unit():
     assert geo.to_geojson()["properties"]["cost_unit"] == "cost x km"
 
 
-def test_time_route_is_in_hours_and_refuses_smoothing():
+def test_time_route_is_in_hours_and_smooths_in_hours():
     # Regression: a time route's smoothed() priced its legs as "mean" km and compared them with
-    # hours, reporting a "smoothed" route that was not.
-    r = route_time(forecast(), (60.2, 0.3), (61.7, 2.6), vessel=CALM, neighbourhood=5)
+    # hours, reporting a "smoothed" route that was not. Now it sails its legs on the clock.
+    r = route_time(forecast(), (60.2, 0.3), (61.7, 2.6), vessel=CALM, neighbourhood=5, smooth=False)
     assert r.edge_cost == "time" and r.unit == "h" and isinstance(r.model, TravelTime)
     assert r.stats.voyage.hours == r.cost
     # the leg table is in hours: the legs' costs sum to the passage time, each = distance / speed
@@ -80,10 +80,14 @@ def test_time_route_is_in_hours_and_refuses_smoothing():
     assert sum(leg.cost for leg in legs) == pytest.approx(r.cost, rel=1e-12)
     for leg in legs:
         assert leg.cost == pytest.approx(leg.distance / 1.852 / 12.0, rel=1e-9)
-    with pytest.raises(ValueError, match=r"'time' model prices only the engine's steps.*in h\b"):
-        r.smoothed()
-    with pytest.raises(ValueError, match="cannot be smoothed"):
-        seaway.smooth(r)
+    # In calm water the smoothed route is one great circle at 12 kn, in hours.
+    s = r.smoothed()
+    gc_h = _core.haversine_km(60.2, 0.3, 61.7, 2.6) / 1.852 / 12.0
+    assert len(s.pixels) == 2 and s.cost == pytest.approx(gc_h, rel=1e-9) and s.cost < r.cost
+    assert s.stats.voyage.hours == s.cost and s.unit == "h" and s.method == "astar+smoothed"
+    assert seaway.smooth(r).cost == s.cost
+    with pytest.raises(ValueError, match="prices legs on the clock"):
+        r.segments()
 
 
 def test_weather_model_on_the_forecast_chart_equals_route_time():
@@ -92,8 +96,10 @@ def test_weather_model_on_the_forecast_chart_equals_route_time():
     chart = fc.prepare(neighbourhood=5)
     vessel = Vessel(speed_kn=12.0)
     via_chart = chart.route((60.2, 0.3), (61.7, 2.6), model=TravelTime(fc, vessel))
-    direct = route_time(ds, (60.2, 0.3), (61.7, 2.6), vessel=vessel, neighbourhood=5)
+    direct = route_time(ds, (60.2, 0.3), (61.7, 2.6), vessel=vessel, neighbourhood=5, smooth=False)
     assert via_chart.cost == direct.cost
+    smoothed = route_time(ds, (60.2, 0.3), (61.7, 2.6), vessel=vessel, neighbourhood=5)
+    assert smoothed.cost == via_chart.smoothed().cost < direct.cost
     # the same chart routes by distance under its static model
     dist = chart.route((60.2, 0.3), (61.7, 2.6), model="max", method="dijkstra")
     assert dist.cost == pytest.approx(dist.length, rel=1e-12)

@@ -1,5 +1,7 @@
 """The cost and land test of an arbitrary straight leg on a chart, consistent with the engine;
-computed in C++ (cpp/seaway/legs.hpp, _core.LegPricer), which also smooths (seaway.smooth).
+computed in C++ (cpp/seaway/legs.hpp, _core.LegPricer), which also smooths (seaway.smooth); and
+the arrival time of a leg sailed on the clock under a time model (TimedLegs,
+cpp/seaway/timed_legs.hpp).
 
 Points are fractional (row, col) pixel indices; pixel (i, j) is the closed square
 [i - 1/2, i + 1/2] x [j - 1/2, j + 1/2]. A leg is forbidden when the closed path touches the
@@ -70,6 +72,31 @@ class Segments:
 
     def cost(self, pts: Sequence[Vertex] | npt.NDArray[np.floating]) -> float:
         return float(sum(self.leg(a, b)[0] for a, b in zip(pts[:-1], pts[1:])))
+
+
+class TimedLegs:
+    """Legs on `chart` sailed on the clock under `model`, a time model of seaway._core (a
+    TravelTimeModel, IceSeasonModel, IceWeatherModel or ZonedTravelTimeModel on the chart's grid;
+    cpp/seaway/timed_legs.hpp), with the land rule of a k x k stencil (`neighbourhood`): the
+    path is the one above; an engine step is sailed as the engine sails it, any other leg piece
+    by piece through the pixels it crosses, each at the model's rule for that pixel at the time
+    the ship enters it; forbidden where it touches the chart's impassable pixels or a pixel the
+    model closes while the ship is there."""
+
+    def __init__(self, chart: Chart, model: _core.TimeModel, neighbourhood: int = 3) -> None:
+        self.chart = chart
+        self.router = _core.make_router(
+            chart.values, chart.land, chart.grid, neighbourhood, "full", "segment"
+        )
+        closed = ~(np.isfinite(chart.values) & (chart.values >= 0))
+        if chart.land is not None:
+            closed |= chart.land.astype(bool)
+        self.pricer = _core.TimedLegs(self.router, model, closed.astype(np.uint8))
+
+    def arrive(self, p: Vertex, q: Vertex, depart_h: float) -> float:
+        """Hours after departure at which the leg p -> q, left at depart_h, arrives (inf if it is
+        forbidden)."""
+        return self.pricer.arrive(float(p[0]), float(p[1]), float(q[0]), float(q[1]), float(depart_h))
 
 
 def leg_path(chart: Chart, p: Vertex, q: Vertex, straight: bool) -> npt.NDArray[np.float64]:

@@ -59,6 +59,7 @@ def run_forecast_route(args) -> int:
         method=args.method,
         name=args.name,
         progress=None if args.quiet else say,
+        smooth=not getattr(args, "no_smooth", False),
     )
     if getattr(args, "depart_window", None) is not None:
         first, last, step = args.depart_window
@@ -81,7 +82,14 @@ def run_forecast_route(args) -> int:
 
 
 def report(args, r, planned, say) -> int:
-    if not r.model.smoothable:
+    done = r.stats.smoothing
+    if done is not None:
+        say(
+            f"smoothed on the clock (legs sailed under the route's own model, never later): "
+            f"{done.cost_before:.6g} -> {r.cost:.6g} {r.unit}, course changes "
+            f"{done.course_changes_before} -> {done.course_changes_after}"
+        )
+    elif not r.model.smoothable:
         say("not smoothed: its model prices only the engine's steps (the route as found)")
     print(r)
     if r.stats.fuel is not None:

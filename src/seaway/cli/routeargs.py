@@ -137,7 +137,8 @@ def add_route_command(commands) -> None:
     rp.add_argument(
         "--no-smooth",
         action="store_true",
-        help="keep the raw pixel route (default: any-angle smoothing, never costlier)",
+        help="keep the raw pixel route (default: any-angle smoothing, never costlier; a route "
+        "through a forecast or ice charts sails its legs on the clock, never later)",
     )
     add_snap_options(rp, "on land, in ice the class may not enter or in too shallow water")
     add_constraint_options(rp, point)

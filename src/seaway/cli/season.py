@@ -78,6 +78,7 @@ def run_season(args) -> int:
         snap_km=args.snap_km if args.snap else None,
         neighbourhood=args.neighbourhood,
         method=args.method,
+        smooth=not args.no_smooth,
         name=args.name,
         progress=None if args.quiet else say,
     )
@@ -96,7 +97,9 @@ def run_season(args) -> int:
     for note in r.notes:  # moved ends
         if note not in season.notes:
             tell(note, "season")
-    st = r.stats.voyage
+    st, done = r.stats.voyage, r.stats.smoothing
+    if done is not None:
+        say(f"smoothed through the charts: {done.cost_before:.2f} -> {r.cost:.2f} h, never later")
     print(r)
     print(
         f"departure {st.departure}, arrival {str(st.arrival)[:16]}: {r.cost:.2f} h "
@@ -203,6 +206,12 @@ def add_season_command(commands) -> None:
         default="astar",
         choices=("astar", "dijkstra"),
         help="search algorithm (both exact; default astar)",
+    )
+    sp.add_argument(
+        "--no-smooth",
+        action="store_true",
+        help="keep the engine's steps (default: straight legs sailed through the charts, never "
+        "later, never through closed ice, the waits kept)",
     )
     sp.add_argument("--name", default="seaway season route", help="route name in the outputs")
     sp.add_argument(

@@ -48,6 +48,7 @@ from ..errors import NoRouteError
 from ..ice.seasongrid import SeasonGrid
 from ..ice.seasonspeed import andreeva_speed_kn, class_speed_kn, table_speed_kn
 from ..models import IceSeasonTime
+from ..smoothtime import on_clock
 from . import seasonwhy
 
 __all__ = ["route_season", "arrival_field"]
@@ -67,6 +68,7 @@ def route_season(
     neighbourhood=5,
     method="astar",
     snap_km=None,
+    smooth=True,
     **speed_options,
 ):
     """The earliest-arriving route from `start` to `end` through a season of ice charts.
@@ -81,6 +83,9 @@ def route_season(
         moves at most that far (seaway.icenav.seasonwhy.snap_season_ends; the route records it).
     Waiting is allowed (the module docstring says why). Returns a Route whose cost is the
     passage time in hours, waiting included; see seaway.models.IceSeasonTime for its stats.
+    smooth: the route's steps replaced by straight legs sailed through the charts, never later
+    and never through closed ice, its waits kept (seaway.smoothtime; stats.smoothing); False:
+    the engine's steps.
     No route raises the NoRouteError of seaway.icenav.seasonwhy.explain_season_no_route."""
     grid = season if isinstance(season, SeasonGrid) else SeasonGrid(season, land)
     model = IceSeasonTime(grid, ice_class, v0_kn, departure=departure, speed=speed, **speed_options)
@@ -96,6 +101,7 @@ def route_season(
         raise seasonwhy.explain_season_no_route(
             grid, model, a, b, neighbourhood=neighbourhood, speed=speed, asked=(start, end), **speed_options
         ) from None
+    r = on_clock(r, smooth)
     return r if ends is None else ends.record(r)
 
 

@@ -18,7 +18,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .. import _core
-from ..chart.legs import Segments
+from ..chart.legs import Segments, TimedLegs
 from .results import StepValues
 
 if TYPE_CHECKING:
@@ -118,8 +118,22 @@ class CostModel:
         """The NoRouteError message; `where` names the start and end pixels."""
         return f"no route {where} under the {self.name} model"
 
+    def timed_legs(self, chart: Chart, neighbourhood: int) -> TimedLegs:
+        """Arbitrary legs sailed on the clock on `chart` (seaway.chart.legs.TimedLegs): the
+        time models that are smoothable."""
+        if not (self.time_dependent and self.smoothable):
+            raise ValueError(f"the {self.name!r} model does not sail legs on a clock")
+        engine = self.engine(_OnChart(chart, neighbourhood))
+        assert isinstance(engine, _TIME_MODELS)  # every smoothable time model's engine
+        return TimedLegs(chart, engine, neighbourhood)
+
     def segments(self, chart: Chart, neighbourhood: int) -> Segments:
         """Pricing and land test of arbitrary legs on `chart` (seaway.chart.legs)."""
+        if self.time_dependent and self.smoothable:
+            raise ValueError(
+                f"the {self.name!r} model prices legs on the clock (timed_legs), not as a cost "
+                "of their own: a leg's hours depend on when it is sailed"
+            )
         raise ValueError(
             f"the {self.name!r} model prices only the engine's steps, not arbitrary straight legs "
             f"(its cost is in {self.unit(chart.geographic)}), so its routes cannot be smoothed or "
@@ -129,6 +143,21 @@ class CostModel:
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}({self.name!r})"
+
+
+_TIME_MODELS = (
+    _core.TravelTimeModel,
+    _core.ZonedTravelTimeModel,
+    _core.IceSeasonModel,
+    _core.IceWeatherModel,
+)
+
+
+class _OnChart:
+    """A chart with its stencil, as a model's engine() reads a prepared one (Prepared)."""
+
+    def __init__(self, chart: Chart, neighbourhood: int) -> None:
+        self.chart, self.neighbourhood = chart, neighbourhood
 
 
 class EdgeCost(CostModel):

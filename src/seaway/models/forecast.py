@@ -67,7 +67,7 @@ class TravelTime(_OnForecast):
     seaway.weather.ForecastGrid (its departure fixes the time axis)."""
 
     name = "time"
-    time_dependent = chainable = True
+    time_dependent = chainable = smoothable = True
 
     def __init__(
         self, forecast: WeatherGrid, vessel: Vessel | None = None, zones: Zone | Iterable[Zone] = ()

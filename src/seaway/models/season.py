@@ -43,7 +43,7 @@ class IceSeasonTime(CostModel):
     hours waited), charts_used (dates), ice_class."""
 
     name = "ice season time"
-    time_dependent = True
+    time_dependent = smoothable = True
     #: Warn when the voyage outlasts the last chart's usual validity (it is recorded either way).
     _warn_late = True
 
@@ -112,13 +112,19 @@ class IceSeasonTime(CostModel):
 
     def finish(self, route: RouteT, per_step: StepValues) -> RouteT:
         """The route's Voyage: every wait, the charts its steps crossed (the one valid when each
-        step departs) and the ice class."""
+        step departs; a smoothed route's legs: every chart valid while they are under way) and
+        the ice class."""
         # found routes carry their step costs; the season's search reports each step's
         # departure (IceSeasonModel, cpp/models.hpp)
         assert route.step_costs is not None and per_step.depart_h is not None
         hours, cum = route.cost, np.concatenate([[0.0], np.cumsum(route.step_costs)])
         depart = per_step.depart_h
-        used = np.unique(np.searchsorted(self.valid_from_h, depart, side="right") - 1)
+        used = np.searchsorted(self.valid_from_h, depart, side="right") - 1
+        smoothed = route.stats.smoothing is not None
+        if smoothed:  # a leg sails through every chart valid while it is under way
+            last = np.searchsorted(self.valid_from_h, cum[1:], side="right") - 1
+            used = np.concatenate([np.arange(a, b + 1) for a, b in zip(used, last)] + [used])
+        used = np.unique(used)
         times = self.season.times[self.season.times.size - self.valid_from_h.size :]
         voyage = Voyage.along(
             hours,
@@ -139,7 +145,7 @@ class IceSeasonTime(CostModel):
                 f"({times[-1]}) and its usual validity; the last chart was assumed to hold"
             )
             voyage = dataclasses.replace(voyage, assumptions=voyage.assumptions + (said,))
-            if self._warn_late:
+            if self._warn_late and not smoothed:  # said once, when the search found it
                 warnings.warn(said, stacklevel=3)
         return dataclasses.replace(route, stats=dataclasses.replace(route.stats, voyage=voyage))  # type: ignore[type-var]
 

@@ -106,6 +106,9 @@ class Smoothing:
     sweeps: int
     #: Legs of the smoothed route.
     shortcut_legs: int
+    #: A route on a clock: waits the smoothed route adds, where arriving early would make the
+    #: next leg late (the ship then leaves when the route did; seaway.smoothtime).
+    waits_added: int = 0
 
 
 @dataclass(frozen=True)

@@ -67,6 +67,7 @@ class OpenForecast:
         method: str = "astar",
         name: str = "seaway route",
         progress: Say | None = None,
+        smooth: bool = True,
     ) -> Route:
         """The route from `start` to `end` (lat, lon) through the forecast, leaving at `depart`
         (default its first time; outside its times only with persist=True, said).
@@ -78,7 +79,8 @@ class OpenForecast:
             file's, else Arc7). objective: "time", "fuel" (needs a fuel curve; with arrive_by
             the least fuel that arrives in time) or "safety" (needs the ship's length).
         grid: the lat/lon grid a projected forecast is resampled onto without `ice`.
-        Route.notes record what was assumed and resampled."""
+        smooth: a least-time route's steps replaced by straight legs sailed on the clock, never
+        later (seaway.smoothtime). Route.notes record what was assumed and resampled."""
         say = progress or (lambda message: None)
         if objective not in OBJECTIVES:
             raise ForecastError(f"objective must be one of {', '.join(OBJECTIVES)}, got {objective!r}")
@@ -112,6 +114,8 @@ class OpenForecast:
         say(f"departure {fc.departure} (forecast {fc.describe()})")
         rows, cols = fc.shape
         common = dict(neighbourhood=neighbourhood, method=method)
+        if objective == "time":  # the fuel and wave-danger routes price only the engine's steps
+            common["smooth"] = smooth
         with searching(progress, rows * cols):
             if season is not None:
                 r = route_ice_weather_voyage(

@@ -23,6 +23,7 @@ from ..ice.seasongrid import SeasonGrid, read_season
 from ..icenav.seasonwhy import closed_reason, explain_season_no_route, usable
 from ..models import IceSeasonTime
 from ..result.schedule import schedule
+from ..smoothtime import on_clock
 from ..vessel import Vessel
 from .departures import DepartureChoice, best_departure
 from .ends import check_ends
@@ -61,6 +62,7 @@ class OpenSeason:
         snap_km: float | None = None,
         neighbourhood: int = 5,
         method: str = "astar",
+        smooth: bool = True,
         name: str = "seaway season route",
         progress: Callable[[str], None] | None = None,
     ) -> Route:
@@ -70,7 +72,9 @@ class OpenSeason:
         leaving at `depart` (default the first chart's date): the ship's ice curve, else Andreeva
         2021's speeds, or `speed_table` {WMO stage: knots}; waiting is allowed. fast_ice: the stage of fast ice of unknown stage (None: the season's rule, else
         "nearby"; seaway.ice.seasonfast). snap_km: an end no chart opens moves at most that far (None: refused, naming
-        why). Route.notes record the assumptions; NoRouteError names what closes the way."""
+        why). smooth: straight legs sailed through the charts, never later, never through closed
+        ice, the waits kept (seaway.smoothtime); False: the engine's steps. Route.notes record the
+        assumptions; NoRouteError names what closes the way."""
         say = progress or (lambda message: None)
         ship = as_vessel(vessel, speed_kn)
         assert ship is not None
@@ -108,7 +112,7 @@ class OpenSeason:
         chart = prepare(self.grid, neighbourhood=neighbourhood)
         try:
             with searching(progress, int(np.prod(self.grid.shape))):
-                r = chart.route(a, b, model=model, method=method)
+                r = on_clock(chart.route(a, b, model=model, method=method), smooth)
         except NoRouteError:
             say("no route: reading the season's ice for why")
             err = explain_season_no_route(

@@ -33,6 +33,7 @@ from ..errors import NoRouteError
 from ..ice.seasongrid import SeasonGrid
 from ..models import IceWeatherTime, TravelTime, WaveDanger
 from ..result.route import Route
+from ..smoothtime import on_clock
 from ..vessel import Vessel
 from .grid import ForecastGrid
 from .projected import on_grid
@@ -55,6 +56,7 @@ def route_time(
     if_no_safe_route="least_danger",
     persist=False,
     source=None,
+    smooth=True,
 ) -> Route:
     """The quickest route from `start` to `end` (lat, lon) through a forecast.
 
@@ -75,6 +77,10 @@ def route_time(
         (seaway.result.stats.Danger: hours in danger, per step, and the stretches in danger:
         where, when and how long); "raise" raises NoRouteError. The hard limits (max_wind_ms,
         max_wave_m) are never crossed.
+    smooth: the route's steps replaced by straight legs sailed through the forecast, never later
+        and never beyond the vessel's limits, waits and via points kept (seaway.smoothtime;
+        stats.smoothing); False: the engine's steps. The least-danger route is not smoothed
+        (said in Route.notes).
     Returns a Route whose cost is the passage time in hours (stats.voyage holds departure,
     arrival and waits: seaway.models.results.Voyage).
     The same as ForecastGrid(forecast).prepare().route(start, end, model=TravelTime(...)).
@@ -86,7 +92,7 @@ def route_time(
     model = TravelTime(fc, vessel, zones=zones)
     prepared = fc.prepare(land, neighbourhood, keep_away)
     try:
-        return prepared.route(start, end, model=model, method=method, via=via)
+        return on_clock(prepared.route(start, end, model=model, method=method, via=via), smooth)
     except NoRouteError:
         danger = vessel.danger_wind_ms is not None or vessel.danger_wave_m is not None
         if not danger or if_no_safe_route != "least_danger" or (via is not None and len(via)):
@@ -94,7 +100,7 @@ def route_time(
         r = least_danger_route(prepared, model, start, end, method)
         if r is None:
             raise
-        return r
+        return on_clock(r, smooth)
 
 
 def route_ice_weather(
@@ -113,6 +119,7 @@ def route_ice_weather(
     method="astar",
     speed="andreeva",
     source=None,
+    smooth=True,
     **speed_options,
 ) -> Route:
     """The quickest route through ice and weather at once (seaway.models.IceWeatherTime): each
@@ -126,6 +133,9 @@ def route_ice_weather(
     forecast: a forecast Dataset on a lat/lon or projected grid; resampled onto the season's grid
         (seaway.weather.projected.on_grid) unless it is on it. departure, persist, variables: as in
         route_time; the departure must lie within the season too.
+    smooth: the route's steps replaced by straight legs sailed through the charts and the
+        forecast, never later, never through closed ice or beyond the vessel's limits, its waits
+        kept (seaway.smoothtime; stats.smoothing); False: the engine's steps.
     Returns a Route whose cost is the passage time in hours, waits included; stats.voyage holds
     departure, arrival, waits, the charts used, the forecast and what was assumed."""
     heuristic_weight(method, None)
@@ -141,7 +151,8 @@ def route_ice_weather(
     fc = ForecastGrid(forecast, variables, departure, persist=persist, source=source)
     fc.assumptions += notes
     model = IceWeatherTime(grid, fc, ice_class, vessel, speed=speed, **speed_options)
-    return prepare(grid, neighbourhood=neighbourhood).route(start, end, model=model, method=method)
+    r = prepare(grid, neighbourhood=neighbourhood).route(start, end, model=model, method=method)
+    return on_clock(r, smooth)
 
 
 def route_safest(
