@@ -10,7 +10,9 @@ import tempfile
 from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING
 
-from .readers import check_netcdf, open_netcdf, read_geotiff  # noqa: F401 - part of this API
+from .readers import check_netcdf as check_netcdf
+from .readers import open_netcdf as open_netcdf
+from .readers import read_geotiff as read_geotiff
 
 if TYPE_CHECKING:
     #: A file name as the API takes it.
