@@ -27,6 +27,7 @@ properties 100); the profile's max_examples (100) applies to the others.
 """
 
 import os
+import signal
 
 import pytest
 from hypothesis import HealthCheck, settings
@@ -34,6 +35,12 @@ from hypothesis import HealthCheck, settings
 pytest.register_assert_rewrite("support")  # the helpers' asserts (support/grids.py) explain failures
 
 from support.data import SHARED_DATA, missing  # noqa: E402
+
+# Ctrl-C: the tests that send SIGINT (to this process, or to a seaway they start) need Python's
+# own handler. A shell that starts the suite as a background job hands it SIGINT ignored, Python
+# then keeps it ignored and its children inherit that: those tests hung or routed on.
+if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+    signal.signal(signal.SIGINT, signal.default_int_handler)
 
 settings.register_profile(
     "ci",
