@@ -22,7 +22,7 @@ namespace seaway {
 using CancelToken = SearchControl;
 inline const SearchControl* flag_of(const CancelToken* t) { return t; }
 
-// The prepared chart's Python class, _core.Router (one chart serves every model).
+// The prepared chart's Python class, _core.PreparedChart (one chart serves every model).
 using ChartClass = pybind11::class_<PreparedChart, std::unique_ptr<PreparedChart>>;
 
 // What a model reports per step beside the route, one typed slot each (unset when the model

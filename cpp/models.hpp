@@ -173,7 +173,7 @@ struct IceWeatherModel {
   }
 };
 
-// Every model a query takes: Router.route and Router.field get one overload each; the other
+// Every model a query takes: PreparedChart.route and PreparedChart.field get one overload each; the other
 // searches one for each model whose capabilities they need (for_each_model).
 template <class... M>
 struct ModelList {};

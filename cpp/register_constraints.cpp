@@ -58,7 +58,7 @@ void def_least_danger(py::module_& m) {
       py::arg("router"), py::arg("model"), py::arg("danger_wind_ms"), py::arg("danger_wave_m"),
       py::arg("start"), py::arg("target"), py::arg("heuristic_weight"), py::arg("cancel") = nullptr,
       "Least hours in danger, then least hours (Sotnikova 2009, when no route avoids the danger "
-      "zones): (Router.route's QueryResult, danger hours per step). The model's vessel carries the "
+      "zones): (PreparedChart.route's QueryResult, danger hours per step). The model's vessel carries the "
       "hard limits only.");
 }
 

@@ -1,4 +1,4 @@
-// Bindings for the faster exact searches on a Router: bidirectional Dijkstra on two threads
+// Bindings for the faster exact searches on a PreparedChart: bidirectional Dijkstra on two threads
 // (the models with caps.is_static), and A* with landmark tables built once per chart and model
 // (static and symmetric models). Python (seaway.engine.methods) picks and validates.
 #include <pybind11/numpy.h>
@@ -31,7 +31,7 @@ void def_bidirectional(ChartClass& router) {
              py::arg("model"), py::arg("start"), py::arg("target"), py::arg("astar"),
              py::arg("cancel") = nullptr,
              "Exact bidirectional Dijkstra (astar: A* with the distance bound) on two threads; "
-             "returns what Router.route does");
+             "returns what PreparedChart.route does");
 }
 
 template <class M>
@@ -58,7 +58,7 @@ void def_landmarks(ChartClass& router) {
              py::arg("model"), py::arg("landmarks"), py::arg("start"), py::arg("target"),
              py::arg("bidirectional"), py::arg("cancel") = nullptr,
              "Exact A* with the landmark bound (bidirectional: on two threads, with the average "
-             "potential); returns what Router.route does");
+             "potential); returns what PreparedChart.route does");
 }
 
 }  // namespace
@@ -79,7 +79,7 @@ void register_exact(py::module_& m) {
           },
           "The tables as a read-only (pixels, landmarks) float32 view: the least cost from each "
           "landmark to each pixel (inf where unreachable)");
-  ChartClass router = py::reinterpret_borrow<ChartClass>(m.attr("Router"));
+  ChartClass router = py::reinterpret_borrow<ChartClass>(m.attr("PreparedChart"));
   router.def_property_readonly("cost_range", [](const PreparedChart& chart) {
     const Passability& p = chart.passability();
     return py::make_tuple(p.passable ? p.min_cost : 0.0, p.max_cost, p.passable);

@@ -56,8 +56,7 @@ std::unique_ptr<PreparedChart> make_router(const Raster<T>& cost, const std::opt
   return std::make_unique<PreparedChart>(g, u, l, k, dirs, rule);
 }
 
-// Router.route(model, ...) and Router.field(model, ...) for one model type (Python calls the
-// prepared chart a Router).
+// PreparedChart.route(model, ...) and PreparedChart.field(model, ...) for one model type.
 template <class M>
 void def_queries(ChartClass& router) {
   router.def("route",
@@ -98,7 +97,7 @@ void def_all_queries(ChartClass& router, ModelList<M...>) {
 
 void register_search(py::module_& m) {
   register_results(m);
-  py::class_<Geometry>(m, "Grid", "Raster geometry: planar (dx, dy) or regular lat/lon on a sphere")
+  py::class_<Geometry>(m, "Geometry", "Raster geometry: planar (dx, dy) or regular lat/lon on a sphere")
       .def(py::init<>())
       .def_readwrite("rows", &Geometry::rows)
       .def_readwrite("cols", &Geometry::cols)
@@ -120,7 +119,7 @@ void register_search(py::module_& m) {
           "pixels settled so far by the search given this token (updated every 4096)");
   py::register_exception<Cancelled>(m, "SearchCancelled", PyExc_KeyboardInterrupt);
 
-  ChartClass router(m, "Router", "A chart prepared for routing: shared, thread-safe");
+  ChartClass router(m, "PreparedChart", "A chart prepared for routing: shared, thread-safe");
   router.def_property_readonly(
       "workspaces", [](const PreparedChart& chart) { return chart.workspaces_made(); },
       "search workspaces allocated so far (8-13 bytes per pixel each; reused across queries)");

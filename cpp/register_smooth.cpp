@@ -98,7 +98,7 @@ void register_timed(py::module_& m) {
     if constexpr (M::caps.smoothable && M::caps.time_dependent)
       cls.def(py::init(&make_timed<M>), py::arg("router"), py::arg("model"), py::arg("closed"),
               py::keep_alive<1, 2>(), py::keep_alive<1, 3>(),
-              "Legs sailed under a time model of seaway._core on a prepared chart (_core.Router); "
+              "Legs sailed under a time model of seaway._core on a prepared chart (_core.PreparedChart); "
               "closed: the chart's impassable pixels (uint8)");
   });
   cls.def("arrive", [](const Timed& t, double r0, double c0, double r1, double c1, double depart_h) {

@@ -37,7 +37,7 @@ void def_route_turns(py::module_& m) {
       py::arg("heuristic_weight"), py::arg("angle_deg"), py::arg("cost"), py::arg("incoming") = -1,
       py::arg("cancel") = nullptr,
       "Least-cost route with a piecewise-linear penalty per course change (degrees -> cost), as "
-      "Router.route returns it. incoming: the offset index of the step that reached the start, "
+      "PreparedChart.route returns it. incoming: the offset index of the step that reached the start, "
       "or -1.");
 }
 

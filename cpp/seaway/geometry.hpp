@@ -1,4 +1,4 @@
-// Raster geometry (bound to Python as _core.Grid): a planar grid (cell sizes dx, dy) or a
+// Raster geometry (bound to Python as _core.Geometry): a planar grid (cell sizes dx, dy) or a
 // regular lat/lon grid on a sphere, optionally wrapping at the antimeridian. Gives each stencil step's length and the
 // straight-line (or great-circle) lower bound that A* uses.
 #pragma once

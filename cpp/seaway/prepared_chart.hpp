@@ -1,5 +1,5 @@
-// A chart prepared for many queries (bound to Python as _core.Router; seaway.PreparedChart holds
-// one): the stencil, step lengths, land clearance and step enumerator are built once and shared
+// A chart prepared for many queries (bound to Python as _core.PreparedChart, which
+// seaway.PreparedChart holds): the stencil, step lengths, land clearance and step enumerator are built once and shared
 // (read-only) by every query; each query borrows a Workspace from a pool, so threads route on
 // one chart at once and a repeated query allocates nothing large.
 // Queries take an edge-cost model (cost_models.hpp, weather.hpp): one prepared chart serves

@@ -5,7 +5,7 @@ from typing import ClassVar
 import numpy as np
 import numpy.typing as npt
 
-class Grid:
+class Geometry:
     rows: int
     cols: int
     geographic: bool
@@ -201,7 +201,7 @@ TimeModel = TravelTimeModel | ZonedTravelTimeModel | IceSeasonModel | IceWeather
 #: penalties, leg pricing and smoothing.
 RasterRule = MaxCost | MeanCost | IntegralCost | LengthCost
 
-class Router:
+class PreparedChart:
     @property
     def workspaces(self) -> int: ...
     def route(
@@ -245,7 +245,7 @@ class Landmarks:
 
 class LegPricer:
     def __init__(
-        self, model: RasterRule, land: npt.NDArray[np.uint8] | None, grid: Grid, half: int
+        self, model: RasterRule, land: npt.NDArray[np.uint8] | None, grid: Geometry, half: int
     ) -> None: ...
     def leg(self, r0: float, c0: float, r1: float, c1: float) -> tuple[float, float]: ...
     def smooth(
@@ -258,7 +258,7 @@ class LegPricer:
     ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], int]: ...
 
 class TimedLegs:
-    def __init__(self, router: Router, model: TimeModel, closed: npt.NDArray[np.uint8]) -> None: ...
+    def __init__(self, router: PreparedChart, model: TimeModel, closed: npt.NDArray[np.uint8]) -> None: ...
     def arrive(self, r0: float, c0: float, r1: float, c1: float, depart_h: float) -> float: ...
     def smooth(
         self,
@@ -272,18 +272,18 @@ class TimedLegs:
 def make_router(
     cost: npt.NDArray[np.float32] | npt.NDArray[np.float64],
     land: npt.NDArray[np.uint8] | None,
-    grid: Grid,
+    grid: Geometry,
     neighbourhood: int,
     directions: str,
     land_rule: str,
-) -> Router: ...
+) -> PreparedChart: ...
 def max_pair_costs(a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
 def mean_pair_costs(a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
 def length_pair_costs(
     a: npt.ArrayLike, b: npt.ArrayLike, length: npt.ArrayLike
 ) -> npt.NDArray[np.float64]: ...
 def route_turns(
-    router: Router,
+    router: PreparedChart,
     model: RasterRule,
     start: int,
     target: int,
@@ -293,9 +293,9 @@ def route_turns(
     incoming: int = -1,
     cancel: CancelToken | None = None,
 ) -> QueryResult: ...
-def offset_index(router: Router, di: int, dj: int) -> int: ...
+def offset_index(router: PreparedChart, di: int, dj: int) -> int: ...
 def route_least_danger(
-    router: Router,
+    router: PreparedChart,
     model: TravelTimeModel | ZonedTravelTimeModel,
     danger_wind_ms: float,
     danger_wave_m: float,

@@ -46,8 +46,8 @@ def _overloads(fn) -> str:
 @pytest.mark.parametrize(
     "search, needs",
     [
-        (_core.Router.route_bidirectional, ("static",)),
-        (_core.Router.build_landmarks, ("static", "symmetric")),
+        (_core.PreparedChart.route_bidirectional, ("static",)),
+        (_core.PreparedChart.build_landmarks, ("static", "symmetric")),
         (_core.route_turns, ("turn_penalty",)),
         (_core.LegPricer.__init__, ("smoothable", "static")),
         (_core.TimedLegs.__init__, ("smoothable", "time_dependent")),

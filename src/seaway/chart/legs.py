@@ -52,7 +52,7 @@ class Segments:
     def __init__(self, chart: Chart, model: _core.RasterRule, neighbourhood: int = 3) -> None:
         self.chart, self.half = chart, (neighbourhood - 1) // 2
         g = chart.grid
-        grid = _core.Grid()
+        grid = _core.Geometry()
         for name in ("rows", "cols", "geographic", "dx", "dy", "lat0", "dlat", "lon0", "dlon"):
             setattr(grid, name, getattr(g, name))
         grid.wrap = bool(chart.geographic and g.wrap)

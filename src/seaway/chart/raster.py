@@ -1,5 +1,5 @@
 """Turn what the user gives (numpy arrays or xarray DataArrays, with coordinates or cell sizes)
-into the engine's inputs: a C-contiguous float raster, a land mask and a `_core.Grid`.
+into the engine's inputs: a C-contiguous float raster, a land mask and a `_core.Geometry`.
 
 All validation happens here, so the C++ core only sees consistent input."""
 
@@ -31,7 +31,7 @@ class Chart:
 
     values: Costs  # (rows, cols) float32 or float64, C-contiguous
     land: npt.NDArray[np.uint8] | None  # (rows, cols) uint8 or None
-    grid: _core.Grid
+    grid: _core.Geometry
     lat: npt.NDArray[np.floating] | None = None  # pixel-centre latitudes (geographic grids)
     lon: npt.NDArray[np.floating] | None = None
     y: npt.NDArray[np.floating] | None = None  # pixel-centre y / x (planar grids)
@@ -247,7 +247,7 @@ def as_chart(
             flag_land.astype(np.uint8) if mask is None else mask | flag_land.astype(np.uint8)
         )
 
-    grid = _core.Grid()
+    grid = _core.Geometry()
     grid.rows, grid.cols = rows, cols
     chart = Chart(values=values, land=mask, grid=grid, template=template, lowest=lowest)
     if "lat" in coords:

@@ -57,7 +57,7 @@ class PreparedChart:
     model: CostModel
     neighbourhood: int
     directions: str
-    router: _core.Router
+    router: _core.PreparedChart
     landmark_stats: dict[str, LandmarkStats]
     _landmarks: dict[str, _core.Landmarks]
     _dims: tuple[Hashable, ...] | None
