@@ -15,7 +15,7 @@ import numpy as np
 from .base.interrupt import interruptible
 from .chart.raster import as_chart
 from .engine.prepared import PreparedChart
-from .errors import NoRouteError
+from .errors import NoRouteError, SeawayError
 from .models import EdgeCost, EnteredPixel
 
 
@@ -51,7 +51,7 @@ def route_through_array(costs, start, end, fully_connected=True, geometric=True)
     list of (row, col) tuples from start to end."""
     arr = np.asarray(costs)
     if arr.ndim != 2:
-        raise ValueError(
+        raise SeawayError(
             f"seaway.compat handles 2-D cost arrays, got {arr.ndim}-D; use skimage.graph for other dimensions"
         )
     chart = as_chart(arr.astype(np.float64, copy=False), allow_negative=True)
@@ -64,7 +64,7 @@ def route_through_array(costs, start, end, fully_connected=True, geometric=True)
         if c < 0:
             c += cols
         if not (0 <= r < rows and 0 <= c < cols):
-            raise ValueError(f"{name} {tuple(p)} lies outside the array of shape {arr.shape}")
+            raise SeawayError(f"{name} {tuple(p)} lies outside the array of shape {arr.shape}")
         pts.append((r, c))
     (s, e) = pts
     if not geometric and not chart.values[s] < np.inf:  # +inf or NaN start: skimage finds no path

@@ -31,7 +31,7 @@ from .base import sphere as geo
 from .base.validate import number
 from .chart.raster import as_chart
 from .engine.api import route as engine_route
-from .errors import NoRouteError
+from .errors import NoRouteError, SeawayError
 from .models.base import EdgeCost
 from .result.route import Route
 from .result.stats import CorridorStencil, RouteStats
@@ -96,7 +96,7 @@ class Corridor:
     ) -> Route:
         """The least-cost route along the corridor from the start to the end node."""
         if edge_cost not in ("max", "mean"):
-            raise ValueError(f"edge_cost must be 'max' or 'mean' on a corridor, got {edge_cost!r}")
+            raise SeawayError(f"edge_cost must be 'max' or 'mean' on a corridor, got {edge_cost!r}")
         model = EdgeCost(edge_cost)
         u = self.sample(env)
         u = np.where(np.isfinite(u) & (u >= 0), u, np.inf)
@@ -116,7 +116,7 @@ class Corridor:
             )
             path, stats = r.pixels, r.stats
         else:
-            raise ValueError(f"steps must be 'forward' or 'stencil', got {steps!r}")
+            raise SeawayError(f"steps must be 'forward' or 'stencil', got {steps!r}")
         chart = as_chart(u, dx=self.leg_km, dy=self.row_km)
         ll = np.column_stack([self.lat[path[:, 0], path[:, 1]], self.lon[path[:, 0], path[:, 1]]])
         km = geo.distance_km(ll[:-1, 0], ll[:-1, 1], ll[1:, 0], ll[1:, 1])
@@ -187,7 +187,7 @@ def corridor(start, end, *, spacing_nm=None, hours=None, speed_kn=None, row_nm=2
     half a spacing of the one asked for. row_nm apart across the track, m rows on each side."""
     if spacing_nm is None:
         if hours is None or speed_kn is None:
-            raise ValueError("give spacing_nm, or hours and speed_kn")
+            raise SeawayError("give spacing_nm, or hours and speed_kn")
         spacing_nm = number(hours, "hours", above=0) * number(speed_kn, "speed_kn", above=0)
     number(spacing_nm, "spacing_nm", above=0)
     number(row_nm, "row_nm", above=0)
@@ -217,7 +217,7 @@ def _names(da):
     la = next((n for n in ("lat", "latitude") if n in da.coords), None)
     lo = next((n for n in ("lon", "longitude") if n in da.coords), None)
     if la is None or lo is None:
-        raise ValueError(
+        raise SeawayError(
             "the environment must be a DataArray with lat/lon coordinates, a number or a function f(lat, lon)"
         )
     return la, lo

@@ -29,6 +29,7 @@ import dataclasses
 import numpy as np
 
 from .chart.legs import turning_points
+from .errors import SeawayError
 from .models.results import WAIT_EPS_H, StepValues
 from .result.stats import Smoothing
 
@@ -63,7 +64,7 @@ def smooth_on_clock(route):
     ValueError naming why for a route that cannot be (why_not)."""
     why = why_not(route)
     if why is not None:
-        raise ValueError(why)
+        raise SeawayError(why)
     step_h = route.costs()  # hours of each step, waits included
     v = _unwrapped(route)
     if len(v) < 2:  # start == end: nothing to sail

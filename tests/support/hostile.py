@@ -1,7 +1,7 @@
 """The judge of the hostile-input campaign (issue 27; engine/test_hostile_arrays.py and
-cli/test_hostile_files.py): a call on bad input must answer, or raise a ValueError/TypeError (the
-package's own errors are both) whose message is one line and whose traceback ends in seaway's
-own code, not in numpy, GDAL, GEOS, netCDF4 or pybind11's argument matching."""
+cli/test_hostile_files.py): a call on bad input must answer, or raise a seaway.SeawayError (a
+ValueError; SeawayTypeError is a TypeError too) whose message is one line and whose traceback
+ends in seaway's own code, not in numpy, GDAL, GEOS, netCDF4 or pybind11's argument matching."""
 
 from __future__ import annotations
 
@@ -62,6 +62,8 @@ def unclean(exc) -> str | None:
         return f"{type(exc).__name__} without a message"
     if "\n" in message.strip():
         return f"{type(exc).__name__} of {message.count(chr(10)) + 1} lines: {one_line(message)}"
+    if not isinstance(exc, seaway.SeawayError):
+        return f"{type(exc).__name__}, not a seaway.SeawayError: {one_line(message)}"
     if any(f in message for f in FOREIGN):
         return f"another library's words: {one_line(message)}"
     tb = traceback.extract_tb(exc.__traceback__)

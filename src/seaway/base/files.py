@@ -10,6 +10,7 @@ import tempfile
 from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING
 
+from ..errors import SeawayError
 from .readers import check_netcdf as check_netcdf
 from .readers import open_netcdf as open_netcdf
 from .readers import read_geotiff as read_geotiff
@@ -48,20 +49,20 @@ def check_output(path: PathLike, formats: dict[str, str], option: str = "--out")
     is a directory, its directory is missing or not writable, or the file exists read-only."""
     path = os.fspath(path)
     if os.path.isdir(path):
-        raise ValueError(f"{option} {path} is a directory; give a file name inside it")
+        raise SeawayError(f"{option} {path} is a directory; give a file name inside it")
     ext = os.path.splitext(path)[1].lower()
     if ext not in formats:
-        raise ValueError(
+        raise SeawayError(
             f"{option} {path}: cannot tell the format from the extension "
             f"{ext or '(none)'!r}; use one of {', '.join(sorted(formats))}"
         )
     folder = os.path.dirname(os.path.abspath(path))
     if not os.path.isdir(folder):
-        raise ValueError(f"{option} {path}: the directory {folder} does not exist; create it first")
+        raise SeawayError(f"{option} {path}: the directory {folder} does not exist; create it first")
     if not os.access(folder, os.W_OK | os.X_OK):
-        raise ValueError(f"{option} {path}: the directory {folder} is not writable; choose another")
+        raise SeawayError(f"{option} {path}: the directory {folder} is not writable; choose another")
     if os.path.exists(path) and not os.access(path, os.W_OK):
-        raise ValueError(f"{option} {path} exists and is read-only; remove it or choose another name")
+        raise SeawayError(f"{option} {path} exists and is read-only; remove it or choose another name")
     return formats[ext]
 
 

@@ -16,6 +16,8 @@ import math
 import os
 import resource
 
+from ..errors import SeawayError
+
 #: The share of the machine's (or container's) memory one request may take.
 SHARE = 0.75
 ENV = "SEAWAY_MEMORY_LIMIT"
@@ -57,7 +59,7 @@ def _parse(text: str) -> int:
     except ValueError:
         value = math.nan
     if not (math.isfinite(value) and value > 0):
-        raise ValueError(f"{ENV} must be a number of bytes such as 8G or 500M, got {text!r}")
+        raise SeawayError(f"{ENV} must be a number of bytes such as 8G or 500M, got {text!r}")
     return int(value)
 
 
@@ -104,7 +106,7 @@ def _read_int_field(path: str) -> int | None:
         return None
 
 
-def check_memory(nbytes: float, what: str, fix: str, error: type[Exception] = ValueError) -> None:
+def check_memory(nbytes: float, what: str, fix: str, error: type[Exception] = SeawayError) -> None:
     """Refuse (`error`) a request of `nbytes` above limit(): "{what} needs about 19.2 GiB, more
     than the 17.6 GiB seaway may take (75 % of this machine's 23.5 GiB); {fix}"."""
     cap, why = limit()
@@ -135,7 +137,12 @@ def check_shape(
 
 
 def check_pixels(
-    rows: float, cols: float, bytes_per_pixel: float, what: str, fix: str, error: type[Exception] = ValueError
+    rows: float,
+    cols: float,
+    bytes_per_pixel: float,
+    what: str,
+    fix: str,
+    error: type[Exception] = SeawayError,
 ) -> None:
     """check_memory for a grid of rows x cols pixels at `bytes_per_pixel`; `what` is said as
     "{what} of R x C pixels (N)". Counts are floats: a grid too large to allocate its axes is

@@ -16,6 +16,7 @@ import struct
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
+from ..errors import SeawayError
 from .validate import one_line
 
 if TYPE_CHECKING:
@@ -110,8 +111,8 @@ def _classic_data_end(head: bytes, version: int) -> int | None:
     return fixed_end
 
 
-def check_netcdf(path: PathLike) -> None:
-    """Raise ValueError naming `path` when a classic NetCDF file is cut short (or its header
+def check_netcdf(path: PathLike, error: type[SeawayError] = SeawayError) -> None:
+    """Raise `error` naming `path` when a classic NetCDF file is cut short (or its header
     is unreadable); other files pass unchecked."""
     path = os.fspath(path)
     try:
@@ -127,35 +128,38 @@ def check_netcdf(path: PathLike) -> None:
     try:
         need = _classic_data_end(head, magic[3])
     except (EOFError, ValueError, IndexError, struct.error):
-        raise ValueError(
+        raise error(
             f"{path}: the NetCDF header is damaged or cut short ({have} bytes); "
             "the file is truncated or not NetCDF: download or copy it again"
         ) from None
     if need is not None and have < need:
-        raise ValueError(
+        raise error(
             f"{path}: the file is truncated: it has {have} bytes but its NetCDF "
             f"header places data up to byte {need}; download or copy it again"
         )
 
 
-def open_netcdf(path: PathLike, hint: str, **kwargs: Any) -> xr.Dataset:
+def open_netcdf(
+    path: PathLike, hint: str, error: type[SeawayError] = SeawayError, **kwargs: Any
+) -> xr.Dataset:
     """xarray.open_dataset(path) after check_netcdf (a truncated classic file would read as
-    zeros); any failure becomes ValueError naming the file and `hint` (what the file should be)."""
+    zeros); any failure becomes `error` (the caller says which kind: ChartError, ForecastError)
+    naming the file and `hint` (what the file should be)."""
     import xarray as xr
 
     path = str(path)
     if not os.path.exists(path):
-        raise ValueError(f"{path}: no such file")
+        raise error(f"{path}: no such file")
     if os.path.isfile(path) and os.path.getsize(path) == 0:
-        raise ValueError(
+        raise error(
             f"{path}: the file is empty (0 bytes): the download or copy did not finish; fetch it again"
         )
-    check_netcdf(path)
+    check_netcdf(path, error)
     try:
         return xr.open_dataset(path, **kwargs)
     except Exception as exc:  # netCDF4/h5netcdf raise many types
         why = _not_netcdf(path) or one_line(exc, 160)
-        raise ValueError(f"{path}: cannot read it as NetCDF ({why}); {hint}") from None
+        raise error(f"{path}: cannot read it as NetCDF ({why}); {hint}") from None
 
 
 #: The first bytes of NetCDF files: classic (CDF-1, -2, -5) and NetCDF-4 (HDF5).
@@ -179,7 +183,7 @@ def _not_netcdf(path: str) -> str | None:
     return f"it is not NetCDF: it starts {head[:4].hex()}, NetCDF files 43444601/02/05 or 89484446"
 
 
-def read_geotiff(path: PathLike, band: int = 1) -> xr.DataArray:
+def read_geotiff(path: PathLike, band: int = 1, error: type[SeawayError] = SeawayError) -> xr.DataArray:
     """One band of a north-up GeoTIFF as a DataArray on pixel-centre coordinates: (lat, lon) when
     its CRS is geographic or absent, else (y, x) with the CRS in attrs["crs"]; nodata -> NaN;
     units, positive and standard_name from the band's tags in attrs. Needs rasterio."""
@@ -189,23 +193,23 @@ def read_geotiff(path: PathLike, band: int = 1) -> xr.DataArray:
     try:
         import rasterio
     except ImportError:
-        raise ValueError(
+        raise error(
             f"{path}: reading GeoTIFF needs rasterio: pip install rasterio (or convert it to NetCDF)"
         ) from None
     try:
         src = rasterio.open(path)
     except Exception as exc:  # rasterio's RasterioIOError and others
-        raise ValueError(f"{path}: cannot read it as GeoTIFF ({one_line(exc, 160)})") from None
+        raise error(f"{path}: cannot read it as GeoTIFF ({one_line(exc, 160)})") from None
     with src:
         t = src.transform
         if t.b != 0 or t.d != 0:
-            raise ValueError(f"{path}: the raster is rotated; warp it north-up first (gdalwarp)")
+            raise error(f"{path}: the raster is rotated; warp it north-up first (gdalwarp)")
         if not 1 <= band <= src.count:
-            raise ValueError(f"{path} has {src.count} band(s), not band {band}")
+            raise error(f"{path} has {src.count} band(s), not band {band}")
         try:
             a = src.read(band).astype(np.float64)
         except Exception as exc:  # rasterio's RasterioIOError on a damaged or cut-short file
-            raise ValueError(
+            raise error(
                 f"{path}: cannot read band {band} ({one_line(exc, 160)}); the file is damaged or cut short: "
                 "fetch it again"
             ) from None

@@ -7,6 +7,8 @@ import numbers
 
 import numpy as np
 
+from ..errors import SeawayError, SeawayTypeError
+
 
 def number(
     value: object,
@@ -37,7 +39,7 @@ def number(
         value = value[()]
     ok_type = numbers.Integral if integer else numbers.Real
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, ok_type):
-        raise TypeError(message.format(type(value).__name__ + " "))
+        raise SeawayTypeError(message.format(type(value).__name__ + " "))
     # mypy narrows value to numbers.Real, whose stub has no __int__; integer=True checked Integral
     v = int(value) if integer else float(value)  # type: ignore[call-overload]
     if not (
@@ -46,7 +48,7 @@ def number(
         and (above is None or v > above)
         and (maximum is None or v <= maximum)
     ):
-        raise ValueError(message.format(""))
+        raise SeawayError(message.format(""))
     return v
 
 

@@ -10,6 +10,7 @@ import numpy as np
 import xarray as xr
 
 from ..base.units import km_per
+from ..errors import SeawayError
 from .roles import STANDARD_NAMES
 
 LAT_NAMES = ("lat", "latitude", "nav_lat")
@@ -95,7 +96,7 @@ def grid_mapping_crs(ds: xr.Dataset, name: str, what: str) -> tuple[Any, str]:
     PROJ text, else its CF grid-mapping parameters (pyproj.CRS.from_cf). `what` names the file's
     variable in the errors. Needs pyproj (the [ice] extra)."""
     if name not in ds.variables:
-        raise ValueError(f"{what} names the grid mapping {name!r}, which the file does not have")
+        raise SeawayError(f"{what} names the grid mapping {name!r}, which the file does not have")
     try:
         import pyproj
     except ImportError:
@@ -112,7 +113,7 @@ def grid_mapping_crs(ds: xr.Dataset, name: str, what: str) -> tuple[Any, str]:
     try:
         return pyproj.CRS.from_cf(attrs), f"{name} (CF parameters)"
     except pyproj.exceptions.CRSError as exc:
-        raise ValueError(
+        raise SeawayError(
             f"cannot read the projection of {what} from its grid mapping {name!r} ({exc}); "
             "fix its attributes (crs_wkt, or the CF grid-mapping parameters)"
         ) from None
@@ -122,7 +123,7 @@ def planar_in_km(da: xr.DataArray, what: str = "the chart") -> tuple[xr.DataArra
     """(da with its planar y/x coordinates in km, what was assumed or converted, in words) for
     models that price steps per km. A lat/lon grid is returned as it is; coordinates in metres
     are divided by 1000; coordinates without units are taken as km (said); no coordinate
-    values: each pixel is taken as 1 km (said); other units raise ValueError naming the fix."""
+    values: each pixel is taken as 1 km (said); other units raise SeawayError naming the fix."""
     roles = {coord_role(d, da[d].attrs if d in da.coords else {}): d for d in da.dims}
     if "lat" in roles and "lon" in roles:
         return da, ()
@@ -135,7 +136,7 @@ def planar_in_km(da: xr.DataArray, what: str = "the chart") -> tuple[xr.DataArra
         if not units:
             bare.append(str(d))
         elif km_per(units) is None:
-            raise ValueError(
+            raise SeawayError(
                 f"{what}'s {d} coordinate is in {units!r}: give planar coordinates in a length ('m' or 'km') "
                 "(a lat/lon grid needs latitude/longitude coordinates)"
             )

@@ -19,6 +19,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from ..errors import ChartError
+
 if TYPE_CHECKING:
     import xarray as xr
 
@@ -61,7 +63,7 @@ def flags_out(da: xr.DataArray, name: str = "") -> Flagged:
     name = name or str(da.name)
     attrs = da.attrs
     if "flag_masks" in attrs and "flag_values" not in attrs:
-        raise ValueError(
+        raise ChartError(
             f"{name} is a bit field of flags (CF flag_masks: "
             f"{str(attrs.get('flag_meanings', ''))[:80]}), not a cost or an ice field; "
             "choose a data variable"

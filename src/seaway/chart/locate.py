@@ -9,6 +9,7 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 
 from ..base.units import EARTH_RADIUS_KM
+from ..errors import ChartError, SeawayError, SeawayTypeError
 from .raster import Chart
 
 
@@ -43,7 +44,7 @@ def locate(chart: Chart, point: Iterable[float], name: str) -> tuple[int, int]:
             if near
             else "no pixel of the chart is passable"
         )
-        raise ValueError(
+        raise SeawayError(
             f"{name} is on an impassable pixel (land, NaN or infinite cost): {describe(chart, (r, c))}; {hint}"
         )
     return r, c
@@ -55,9 +56,9 @@ def pixel_of(chart: Chart, point: Iterable[float], name: str) -> tuple[int, int]
     try:
         a, b = (float(v) for v in point)
     except (TypeError, ValueError):
-        raise TypeError(f"{name} must be a pair of numbers, got {point!r}") from None
+        raise SeawayTypeError(f"{name} must be a pair of numbers, got {point!r}") from None
     if not (np.isfinite(a) and np.isfinite(b)):
-        raise ValueError(f"{name} must be finite, got {point!r}")
+        raise SeawayError(f"{name} must be finite, got {point!r}")
     rows, cols = chart.shape
     g = chart.grid
     if chart.geographic:
@@ -72,7 +73,7 @@ def pixel_of(chart: Chart, point: Iterable[float], name: str) -> tuple[int, int]
         if not (-0.5 <= r <= rows - 0.5 and -0.5 <= c <= cols - 0.5):
             lat, lon = chart.axes
             lat_lo, lat_hi = sorted((lat[0], lat[-1]))
-            raise ValueError(
+            raise SeawayError(
                 f"{name} (lat {a:g}, lon {b:g}) lies outside the chart (lat {lat_lo:g} to "
                 f"{lat_hi:g}, lon {lon[0]:g} to {lon[-1]:g}); give a point on the "
                 "chart as (lat, lon)"
@@ -80,13 +81,13 @@ def pixel_of(chart: Chart, point: Iterable[float], name: str) -> tuple[int, int]
         r, c = min(int(round(r)), rows - 1), min(int(round(c)), cols - 1)
     else:
         if a != int(a) or b != int(b):
-            raise ValueError(
+            raise SeawayError(
                 f"{name} must be a (row, col) pixel index on a planar chart, got {point!r}; to give "
                 "(lat, lon) points, pass lat= and lon= (or a DataArray with lat/lon coordinates)"
             )
         r, c = int(a), int(b)
         if not (0 <= r < rows and 0 <= c < cols):
-            raise ValueError(
+            raise SeawayError(
                 f"{name} (row {r}, col {c}) lies outside the chart of {rows} rows x {cols} columns; "
                 f"give a (row, col) pixel index with 0 <= row < {rows} and 0 <= col < {cols}"
             )
@@ -116,7 +117,7 @@ def check_tiny(chart: Chart, neighbourhood: int) -> None:
         return
     tiny = (u > 0) & (u < min(limit, float(np.finfo(u.dtype).max)))
     if tiny.any():
-        raise ValueError(
+        raise ChartError(
             f"positive costs as small as {float(u[tiny].min()):g} with steps of {shortest:g} are "
             f"too small for double precision (step costs below {MIN_STEP:g}); rescale the costs "
             "(or dx, dy), or use 0 for free pixels"
@@ -130,7 +131,7 @@ def check_overflow(chart: Chart, neighbourhood: int) -> None:
     limit = MAX_TOTAL / (longest * u.size)
     big = (u > min(limit, float(np.finfo(u.dtype).max))) & (u < np.inf)
     if big.any():
-        raise ValueError(
+        raise ChartError(
             f"costs up to {float(u[big].max()):g} with steps up to {longest:g} long can overflow "
             f"a route's cost (double precision) on a chart of {u.size} pixels; rescale the costs "
             f"(or dx, dy) so that largest cost x step length x pixel count stays below {MAX_TOTAL:g}"

@@ -14,7 +14,7 @@ import numpy.typing as npt
 from .. import _core
 from ..base.memory import SEARCH, check_pixels
 from ..base.validate import number
-from ..errors import SeawayError
+from ..errors import ChartError, SeawayError, SeawayTypeError
 from .cf import coord_role
 from .flags import flags_out, has_flags
 
@@ -58,7 +58,7 @@ class Chart:
         (y, x) on planar ones."""
         a, b = (self.lat, self.lon) if self.geographic else (self.y, self.x)
         if a is None or b is None:
-            raise ValueError("the chart has no pixel-centre coordinates")
+            raise ChartError("the chart has no pixel-centre coordinates")
         return a, b
 
     def pixel_coords(self, pixels: npt.NDArray[np.integer]) -> npt.NDArray[np.float64]:
@@ -72,7 +72,7 @@ def from_dataarray(
 ) -> tuple[npt.NDArray[Any], dict[str, npt.NDArray[np.float64]], xr.DataArray]:
     """Values in (row, col) order and the 1-D coordinates found along each dimension."""
     if da.ndim != 2:
-        raise ValueError(
+        raise ChartError(
             f"cost must be 2-D, got a DataArray with dims {da.dims}; select one time or level "
             "first, e.g. da.isel(time=0)"
         )
@@ -85,7 +85,7 @@ def from_dataarray(
             )
         if coord is None:
             if coord_role(dim, {}) in ("lat", "lon"):
-                raise ValueError(
+                raise ChartError(
                     f"the dimension {dim!r} has no coordinate values, so its pixels' "
                     f"{coord_role(dim, {})} is unknown; give them, e.g. "
                     f"da.assign_coords({dim}=values), or rename the dimension if it is not "
@@ -108,16 +108,16 @@ def from_dataarray(
 
 def _regular_step(values: npt.NDArray[np.float64], name: str) -> float:
     if values.ndim != 1:
-        raise ValueError(f"{name} must be 1-D (pixel centres along one axis), got shape {values.shape}")
+        raise ChartError(f"{name} must be 1-D (pixel centres along one axis), got shape {values.shape}")
     if not np.all(np.isfinite(values)):
-        raise ValueError(f"{name} holds NaN or infinite values; give the pixel-centre coordinates")
+        raise ChartError(f"{name} holds NaN or infinite values; give the pixel-centre coordinates")
     if values.size < 2:
         return 1.0  # a single row or column: no step along this axis is ever taken
     steps = np.diff(values)
     step = (values[-1] - values[0]) / (values.size - 1)
     if step == 0 or np.max(np.abs(steps - step)) > 1e-6 * abs(step) + 1e-9:
         worst = int(np.argmax(np.abs(steps - step)))
-        raise ValueError(
+        raise ChartError(
             f"{name} is not regularly spaced (step {steps[worst]:g} at index {worst}, mean step "
             f"{step:g}); resample the chart onto a regular grid first, e.g. with "
             "DataArray.interp()"
@@ -146,14 +146,14 @@ def _land_mask(land: npt.NDArray[np.generic]) -> npt.NDArray[np.uint8]:
     if land.dtype == np.bool_:
         return land.view(np.uint8)
     if not (np.issubdtype(land.dtype, np.integer) or np.issubdtype(land.dtype, np.floating)):
-        raise TypeError(
+        raise SeawayTypeError(
             f"land must be a boolean mask (True = land), got dtype {land.dtype}; "
             "give a bool array, or 0/1 integers or floats"
         )
     bad = (land != 0) & (land != 1)  # NaN compares unequal to both
     if bad.any():
         r, c = np.argwhere(bad)[0]
-        raise ValueError(
+        raise ChartError(
             f"land must hold only 0 (sea) and 1 (land), got {int(bad.sum())} other value(s), e.g. "
             f"{land[r, c]!r} at pixel ({r}, {c}); give a bool mask, e.g. land=np.isnan(mask) | "
             "(mask > 0.5) to say how such values should be read"
@@ -177,7 +177,7 @@ def as_chart(
     own = getattr(cost, "as_chart", None)
     if callable(own) and not hasattr(cost, "dims"):
         if lat is not None or lon is not None or land is not None:
-            raise ValueError(
+            raise ChartError(
                 f"a {type(cost).__name__} brings its own grid and land: give no lat, lon or land"
             )
         return cast(Chart, own())
@@ -193,19 +193,19 @@ def as_chart(
         values = np.asarray(cost)
     if lat is not None or lon is not None:
         if lat is None or lon is None:
-            raise ValueError("give both lat and lon (1-D pixel-centre coordinates), or neither")
+            raise ChartError("give both lat and lon (1-D pixel-centre coordinates), or neither")
         coords = {"lat": np.asarray(lat, dtype=float), "lon": np.asarray(lon, dtype=float)}
     if values.ndim != 2:
-        raise ValueError(
+        raise ChartError(
             f"cost must be a 2-D raster, got shape {values.shape}; give one (rows, cols) layer, "
             "e.g. cost[0] for the first time step"
         )
     if values.shape[0] < 1 or values.shape[1] < 1:
-        raise ValueError(f"cost is empty (shape {values.shape}); give at least one pixel")
+        raise ChartError(f"cost is empty (shape {values.shape}); give at least one pixel")
     if values.size >= 2**32 - 1:
-        raise ValueError(f"the chart has {values.size} pixels; the engine handles fewer than 2**32")
+        raise ChartError(f"the chart has {values.size} pixels; the engine handles fewer than 2**32")
     if values.dtype == np.bool_ or not np.issubdtype(values.dtype, np.number) or np.iscomplexobj(values):
-        raise TypeError(f"cost must hold real numbers, got dtype {values.dtype}")
+        raise SeawayTypeError(f"cost must hold real numbers, got dtype {values.dtype}")
     converted = values.dtype not in (np.float32, np.float64)
     copied = converted or not _plain(values)
     check_pixels(  # the copy (a broadcast view may stand for far more memory than it holds)
@@ -225,7 +225,7 @@ def as_chart(
         negative = values < 0
         if negative.any():
             r, c = np.argwhere(negative)[0]
-            raise ValueError(
+            raise ChartError(
                 f"cost has {int(negative.sum())} negative value(s), e.g. {values[r, c]:g} at pixel "
                 f"({r}, {c}); costs must be >= 0: mark impassable pixels with np.inf (or NaN) or "
                 "pass them in the land mask"
@@ -238,7 +238,7 @@ def as_chart(
             land = cast("xr.DataArray", land).transpose(*template.dims)  # the cost's (row, col) order
         land_arr = np.asarray(cast("xr.DataArray", land).values if hasattr(land, "dims") else land)
         if land_arr.shape != values.shape:
-            raise ValueError(
+            raise ChartError(
                 f"land has shape {land_arr.shape} but cost has shape {values.shape}; give a mask of the same shape"
             )
         mask = engine_layout(_land_mask(land_arr))
@@ -253,7 +253,7 @@ def as_chart(
     if "lat" in coords:
         la, lo = coords["lat"], coords["lon"]
         if la.shape != (rows,) or lo.shape != (cols,):
-            raise ValueError(
+            raise ChartError(
                 f"lat has {la.size} values and lon {lo.size}, but the cost has {rows} rows and "
                 f"{cols} columns; give one latitude per row and one longitude per column"
             )
@@ -263,15 +263,15 @@ def as_chart(
             lo_grid = lo[0] + np.concatenate([[0.0], np.cumsum((np.diff(lo) + 180) % 360 - 180)])
         dlat, dlon = _regular_step(la, "lat"), _regular_step(lo_grid, "lon")
         if np.any(np.abs(la) > 90):
-            raise ValueError("lat must lie within [-90, 90] degrees")
+            raise ChartError("lat must lie within [-90, 90] degrees")
         span = abs(dlon) * cols
         if span > 360 * (1 + 1e-9):
-            raise ValueError(f"lon spans {span:g} degrees; a chart covers at most 360 degrees of longitude")
+            raise ChartError(f"lon spans {span:g} degrees; a chart covers at most 360 degrees of longitude")
         grid.geographic = True
         grid.lat0, grid.dlat, grid.lon0, grid.dlon = float(la[0]), dlat, float(lo[0]), dlon
         grid.wrap = bool(abs(span - 360) < 1e-6 * 360)
         if grid.wrap and cols < 16:
-            raise ValueError("a chart that wraps around the globe needs at least 16 columns")
+            raise ChartError("a chart that wraps around the globe needs at least 16 columns")
         chart.lat, chart.lon = la, lo
     else:
         if "y" in coords:
@@ -281,7 +281,7 @@ def as_chart(
         dy = number(dy, "dy", above=0, what="a positive cell size", example=1.0)
         for name, v, n in (("dx", dx, cols), ("dy", dy, rows)):
             if not v * n < 1e306:
-                raise ValueError(
+                raise ChartError(
                     f"{name} = {v!r} is too large a cell size: the chart would span "
                     f"{v * n:g} units; rescale the cell sizes"
                 )

@@ -6,6 +6,7 @@ time axis) the ice and the weather act in one voyage."""
 from __future__ import annotations
 
 from ..base.files import open_netcdf
+from ..errors import ChartError, SeawayError
 from ..output.files import check_outputs, write_outputs
 from ..voyage import ChartOptions, open_chart, open_forecast, open_season
 from .common import Progress, tell, vessel_from
@@ -21,7 +22,7 @@ def _ice(args, ice_class):
     """The ice of CHART: a season (a NetCDF with a time axis) or one chart."""
     path = args.chart
     if path.lower().endswith((".nc", ".nc4", ".cdf", ".netcdf")):
-        ds = open_netcdf(path, "an ice chart is NetCDF, GeoTIFF or SIGRID-3")
+        ds = open_netcdf(path, "an ice chart is NetCDF, GeoTIFF or SIGRID-3", ChartError)
         if "time" in ds.dims and ds.sizes["time"] > 1:
             return open_season(path)
     options = ChartOptions(
@@ -64,7 +65,7 @@ def run_forecast_route(args) -> int:
     if getattr(args, "depart_window", None) is not None:
         first, last, step = args.depart_window
         if options["objective"] not in ("time", "fuel"):
-            raise ValueError(
+            raise SeawayError(
                 "--depart-window chooses by arrival or, with --arrive-by, fuel: give --objective time"
             )
         options.pop("objective")

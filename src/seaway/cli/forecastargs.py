@@ -8,6 +8,7 @@ import argparse
 
 import numpy as np
 
+from ..errors import SeawayError
 from ..ice.andreeva import check_stage_thickness
 from ..weather.forecast import ROLES, check_roles
 from .common import depart_window
@@ -109,9 +110,9 @@ def check_forecast_options(args) -> None:
     if args.objective in ("fuel", "safety"):
         given.append(f"--objective {args.objective}")
     if given and not args.forecast:
-        raise ValueError(f"{', '.join(given)} need --forecast FILE (a forecast to route through)")
+        raise SeawayError(f"{', '.join(given)} need --forecast FILE (a forecast to route through)")
     if args.forecast and args.objective == "impact":
-        raise ValueError(
+        raise SeawayError(
             "--objective impact is a chart's (least ice impact): through a forecast give time, fuel or safety"
         )
 

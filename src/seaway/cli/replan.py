@@ -5,6 +5,7 @@ same end through the newer forecast, leaving then."""
 
 from __future__ import annotations
 
+from ..errors import SeawayError
 from ..output.files import check_outputs
 from ..voyage import open_forecast
 from ..voyage.replan import replan_voyage
@@ -15,9 +16,9 @@ from .forecastargs import add_forecast_options, add_voyage_options, iso_time
 
 def run_replan(args) -> int:
     if not args.forecast:
-        raise ValueError("replan needs --forecast FILE (the newer forecast)")
+        raise SeawayError("replan needs --forecast FILE (the newer forecast)")
     if args.depart is not None or args.escort or args.objective == "impact":
-        raise ValueError(
+        raise SeawayError(
             "replan leaves at --at through the forecast: give no --depart, --escort or --objective impact"
         )
     say = Progress("replan", args.quiet)

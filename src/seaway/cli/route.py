@@ -7,6 +7,7 @@ import dataclasses
 
 from ..base.units import KM_PER_NM
 from ..depth import check_draft
+from ..errors import SeawayError
 from ..output.files import check_outputs, write_outputs
 from ..voyage import ChartOptions, open_chart
 from .common import Progress, tell, vessel_from
@@ -35,7 +36,7 @@ def run_route(args) -> int:
     if args.forecast:  # weather routing (seaway.cli.forecast)
         return run_forecast_route(args)
     if args.chart is None:
-        raise ValueError("give a CHART file, or --forecast FILE to route through a forecast on its own grid")
+        raise SeawayError("give a CHART file, or --forecast FILE to route through a forecast on its own grid")
     say = Progress("route", args.quiet)
     planned = check_outputs(args.out, args.plot)  # before any work: nothing found is then lost
     say(f"reading {args.chart}")

@@ -7,6 +7,7 @@ import argparse
 
 import numpy as np
 
+from ..errors import ChartError
 from ..output import export
 from ..voyage import open_season
 from .common import (
@@ -57,7 +58,7 @@ def _charts(args):
         try:
             charts.append(dated_chart(text))
         except argparse.ArgumentTypeError as exc:
-            raise ValueError(f"{exc}; or give one NetCDF file with a time dimension") from None
+            raise ChartError(f"{exc}; or give one NetCDF file with a time dimension") from None
     return charts
 
 

@@ -11,6 +11,7 @@ import numpy as np
 
 from .. import _core
 from ..chart.raster import as_chart
+from ..errors import ForecastError, SeawayError, SeawayTypeError
 from .zones import KeepAway, Zone, constraint_factor, rasterise_zone
 
 if TYPE_CHECKING:
@@ -33,12 +34,12 @@ def hard_only(km, keep_away, land) -> np.ndarray:
     keep_away = [keep_away] if isinstance(keep_away, KeepAway) else list(keep_away)
     for k in keep_away:
         if isinstance(k, KeepAway) and k.soft_km:
-            raise ValueError(
+            raise SeawayError(
                 "time routes take hard keep-away buffers only (KeepAway(km=...)): a "
                 "soft penalty scales a static cost, and a time route's cost is hours"
             )
         if isinstance(k, KeepAway) and k.ice is not None and not hasattr(k.ice, "shape"):
-            raise ValueError(
+            raise SeawayError(
                 "on a time route KeepAway.ice must be a boolean mask of the forecast's "
                 "grid (there is no static cost to threshold)"
             )
@@ -50,11 +51,11 @@ def _hours(t, forecast) -> float:
     if isinstance(t, (int, float, np.integer, np.floating)) and not isinstance(t, bool):
         return float(t) - getattr(forecast, "shift_h", 0.0)
     if forecast.departure is None:
-        raise ValueError("this forecast has no time axis: give zone windows in hours after departure")
+        raise ForecastError("this forecast has no time axis: give zone windows in hours after departure")
     try:
         return float((np.datetime64(t) - forecast.departure) / np.timedelta64(1, "h"))
     except (TypeError, ValueError):
-        raise ValueError(
+        raise SeawayError(
             f"a zone window time must be a datetime or hours after departure, got {t!r}"
         ) from None
 
@@ -66,7 +67,7 @@ def timed_zone_engine(
     its `active` window) rasterised on the forecast's grid (a seaway.weather.ForecastGrid)."""
     zones = list(zones)
     if len(zones) > 8:
-        raise ValueError(
+        raise SeawayError(
             f"a time route takes at most 8 zones, got {len(zones)}; merge polygons "
             "with the same window into one Zone"
         )
@@ -75,16 +76,16 @@ def timed_zone_engine(
     closes, opens = [], []
     for i, z in enumerate(zones):
         if not isinstance(z, Zone):
-            raise TypeError(f"zones takes Zone objects, got {type(z).__name__}")
+            raise SeawayTypeError(f"zones takes Zone objects, got {type(z).__name__}")
         if math.isfinite(z.penalty):
-            raise ValueError(
+            raise SeawayError(
                 f"zone {z.name!r} is a penalty zone; a time route's cost is hours, so it "
                 "takes exclusion zones (penalty=inf), optionally with a time window"
             )
         mask[rasterise_zone(z, chart)] |= np.uint8(1 << i)
         a, b = (-math.inf, math.inf) if z.active is None else (_hours(t, forecast) for t in z.active)
         if not a < b:
-            raise ValueError(
+            raise SeawayError(
                 f"zone {z.name!r}: its window must close before it opens again, got {z.active!r}"
             )
         closes.append(a)

@@ -23,6 +23,7 @@ import numpy.typing as npt
 
 from ..chart.distance import distance_to
 from ..chart.raster import Chart, as_chart
+from ..errors import ChartError, SeawayError, SeawayTypeError
 
 if TYPE_CHECKING:
     import xarray as xr
@@ -60,14 +61,14 @@ class KeepAway:
                 or not math.isfinite(v)
                 or v < 0
             ):
-                raise ValueError(f"KeepAway.{name} must be a finite number >= 0, got {v!r}")
+                raise SeawayError(f"KeepAway.{name} must be a finite number >= 0, got {v!r}")
         if self.soft_km and self.soft_km <= self.km:
-            raise ValueError(
+            raise SeawayError(
                 f"KeepAway.soft_km ({self.soft_km:g}) must exceed km ({self.km:g}); "
                 "give soft_km=0 for a hard limit only"
             )
         if self.ice is None and self.km == 0 and self.soft_km == 0:
-            raise ValueError(
+            raise SeawayError(
                 "KeepAway from land with km=0 and soft_km=0 changes nothing; give km= "
                 "(hard limit) and/or soft_km= (soft penalty)"
             )
@@ -103,12 +104,12 @@ class Zone:
             or math.isnan(p)
             or p < 1
         ):
-            raise ValueError(f"Zone penalty must be >= 1 (a cost factor) or inf (an exclusion), got {p!r}")
+            raise SeawayError(f"Zone penalty must be >= 1 (a cost factor) or inf (an exclusion), got {p!r}")
         if self.active is not None:
             if not (isinstance(self.active, (tuple, list)) and len(self.active) == 2):
-                raise ValueError(f"Zone.active must be a (closes, opens) pair of times, got {self.active!r}")
+                raise SeawayError(f"Zone.active must be a (closes, opens) pair of times, got {self.active!r}")
             if math.isfinite(p):
-                raise ValueError("a time window applies to exclusion zones (penalty=inf) only")
+                raise SeawayError("a time window applies to exclusion zones (penalty=inf) only")
 
 
 # -- zones --------------------------------------------------------------------------------------
@@ -123,9 +124,9 @@ def _geometry(zone: Zone, chart_crs):
         try:
             meta, _, wkb, _ = read(geom, read_geometry=True)
         except Exception as exc:  # noqa: BLE001 - the reader's many error types
-            raise ValueError(f"zone {zone.name!r}: cannot read {geom!s}: {exc}") from None
+            raise SeawayError(f"zone {zone.name!r}: cannot read {geom!s}: {exc}") from None
         if wkb is None or len(wkb) == 0:
-            raise ValueError(f"zone {zone.name!r}: {geom!s} holds no geometries")
+            raise SeawayError(f"zone {zone.name!r}: {geom!s} holds no geometries")
         geom, src_crs = shapely.union_all(shapely.from_wkb(wkb)), meta.get("crs") or zone.crs
     elif isinstance(geom, dict):
         kind = geom.get("type")
@@ -137,17 +138,17 @@ def _geometry(zone: Zone, chart_crs):
             try:
                 geom = shape(geom)
             except Exception as exc:  # noqa: BLE001
-                raise ValueError(f"zone {zone.name!r}: not a GeoJSON geometry: {exc}") from None
+                raise SeawayError(f"zone {zone.name!r}: not a GeoJSON geometry: {exc}") from None
         src_crs = zone.crs
     elif isinstance(geom, shapely.Geometry):
         src_crs = zone.crs
     else:
-        raise TypeError(
+        raise SeawayTypeError(
             f"zone {zone.name!r}: geometry must be a shapely geometry, a GeoJSON "
             f"mapping or a vector file path, got {type(geom).__name__}"
         )
     if geom.is_empty or geom.area == 0:
-        raise ValueError(f"zone {zone.name!r} has no area; give a Polygon or MultiPolygon")
+        raise SeawayError(f"zone {zone.name!r} has no area; give a Polygon or MultiPolygon")
     if not geom.is_valid:
         geom = shapely.make_valid(geom)
     if src_crs is not None and chart_crs is not None:
@@ -188,19 +189,19 @@ def rasterise_zone(zone: Zone, chart: Chart, chart_crs=None) -> np.ndarray:
 def _mask_of(ice, chart: Chart, template) -> np.ndarray:
     if isinstance(ice, (int, float, np.integer, np.floating)) and not isinstance(ice, bool):
         if not np.isfinite(ice) or ice < 0:
-            raise ValueError(f"KeepAway.ice as a cost threshold must be finite and >= 0, got {ice!r}")
+            raise SeawayError(f"KeepAway.ice as a cost threshold must be finite and >= 0, got {ice!r}")
         with np.errstate(invalid="ignore"):
             return np.isfinite(chart.values) & (chart.values >= ice)
     if hasattr(ice, "dims") and template is not None and set(ice.dims) == set(template.dims):
         ice = ice.transpose(*template.dims)
     arr = np.asarray(ice.values if hasattr(ice, "dims") else ice)
     if arr.shape != chart.shape:
-        raise ValueError(
+        raise ChartError(
             f"KeepAway.ice mask has shape {arr.shape} but the chart has {chart.shape}; "
             "give a boolean mask of the chart's shape or a cost threshold"
         )
     if arr.dtype != np.bool_:
-        raise TypeError(
+        raise SeawayTypeError(
             f"KeepAway.ice mask must be boolean (e.g. ds.sea_ice_concentration >= 9), got dtype {arr.dtype}"
         )
     return arr
@@ -215,7 +216,7 @@ def constraint_factor(chart: Chart, keep_away=(), zones=(), *, chart_crs=None) -
         blocked |= chart.land.astype(bool)
     for k in keep_away:
         if not isinstance(k, KeepAway):
-            raise TypeError(f"keep_away takes KeepAway objects, got {type(k).__name__}")
+            raise SeawayTypeError(f"keep_away takes KeepAway objects, got {type(k).__name__}")
         feature = blocked if k.ice is None else _mask_of(k.ice, chart, chart.template)
         d = distance_to(feature, chart, max(k.km, k.soft_km))
         if k.ice is not None or k.km > 0:
@@ -225,9 +226,9 @@ def constraint_factor(chart: Chart, keep_away=(), zones=(), *, chart_crs=None) -
             factor[soft] *= 1 + k.penalty * (k.soft_km - d[soft]) / (k.soft_km - k.km)
     for z in zones:
         if not isinstance(z, Zone):
-            raise TypeError(f"zones takes Zone objects, got {type(z).__name__}")
+            raise SeawayTypeError(f"zones takes Zone objects, got {type(z).__name__}")
         if z.active is not None:
-            raise ValueError(
+            raise SeawayError(
                 f"zone {z.name!r} has a time window, which only a time route can "
                 "follow: pass it to seaway.weather.route_time(zones=...), or drop "
                 "active= for a static chart"

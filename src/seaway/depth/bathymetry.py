@@ -19,6 +19,7 @@ import numpy as np
 from ..base.files import open_netcdf, read_geotiff
 from ..base.units import metres_per
 from ..chart.cf import coord_role
+from ..errors import ChartError, SeawayError
 
 #: CF standard names of depth below the surface (positive down) and of elevation (positive up).
 DEPTH_NAMES = (
@@ -80,7 +81,7 @@ class Bathymetry:
 def _pick_variable(path, ds, variable):
     if variable is not None:
         if variable not in ds:
-            raise ValueError(f"{path} has no variable {variable!r}; it has {sorted(map(str, ds.data_vars))}")
+            raise ChartError(f"{path} has no variable {variable!r}; it has {sorted(map(str, ds.data_vars))}")
         return variable
     two_d = [str(n) for n in ds.data_vars if ds[n].ndim >= 2]
     for names in (DEPTH_NAMES + ELEVATION_NAMES,):
@@ -92,7 +93,7 @@ def _pick_variable(path, ds, variable):
         return named[0]
     if len(two_d) == 1:
         return two_d[0]
-    raise ValueError(
+    raise ChartError(
         f"{path}: which variable is the bathymetry? name it (variable=, or "
         f"--depth-variable), one of {sorted(two_d)}"
     )
@@ -102,7 +103,7 @@ def _sign(path, name, attrs, positive):
     """(+1 for depth positive down, -1 for elevation positive up, how it was decided, guessed)."""
     if positive is not None:
         if positive not in ("up", "down"):
-            raise ValueError(
+            raise SeawayError(
                 f"positive must be 'up' (elevation, ETOPO/GEBCO) or 'down' (depth), got {positive!r}"
             )
         return (1 if positive == "down" else -1), f"positive {positive} as given", False
@@ -141,7 +142,7 @@ def _scale(path, name, attrs, notes):
         return 1.0
     scale = metres_per(units)
     if scale is None:
-        raise ValueError(
+        raise ChartError(
             f"{path}: {name} is in {attrs.get('units')!r}; depths must be a length (m, ft, fathoms, ...): "
             "convert the file, or set its units attribute if it is wrong"
         )
@@ -156,7 +157,7 @@ def _latlon_dims(path, da):
             if role in ("lat", "lon"):
                 roles[role] = dim
     if set(roles) != {"lat", "lon"}:
-        raise ValueError(
+        raise ChartError(
             f"{path}: the bathymetry needs 1-D lat and lon coordinates (degrees); "
             f"its dimensions are {da.dims}. Regrid it to lat/lon first (e.g. gdalwarp "
             "-t_srs EPSG:4326)"
@@ -170,13 +171,13 @@ def open_bathymetry(path, *, variable=None, positive=None) -> Bathymetry:
 
     path = str(path)
     if not os.path.exists(path):
-        raise ValueError(f"{path}: no such bathymetry file")
+        raise ChartError(f"{path}: no such bathymetry file")
     notes: list = []
     ext = os.path.splitext(path)[1].lower()
     if ext in (".tif", ".tiff", ".gtiff"):
         da = _geotiff(path)
     else:
-        ds = open_netcdf(path, "bathymetry is NetCDF or GeoTIFF (.tif) on a lat/lon grid")
+        ds = open_netcdf(path, "bathymetry is NetCDF or GeoTIFF (.tif) on a lat/lon grid", ChartError)
         da = ds[_pick_variable(path, ds, variable)]
     name = str(da.name)
     lat, lon = _latlon_dims(path, da)
@@ -205,9 +206,9 @@ def open_bathymetry(path, *, variable=None, positive=None) -> Bathymetry:
 
 
 def _geotiff(path):
-    da = read_geotiff(path)
+    da = read_geotiff(path, error=ChartError)
     if "crs" in da.attrs:
-        raise ValueError(
+        raise ChartError(
             f"{path}: the bathymetry is in {da.attrs['crs']}, not lat/lon; warp it "
             f"first: gdalwarp -t_srs EPSG:4326 {path} out.tif"
         )

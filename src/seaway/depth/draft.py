@@ -28,6 +28,7 @@ import numpy as np
 from ..chart.cf import coord_role
 from ..chart.locate import locate
 from ..chart.raster import as_chart, from_dataarray
+from ..errors import ChartError, SeawayError, SeawayTypeError
 from ..result.environment import least_depth  # noqa: F401 - part of this API
 from .bathymetry import Bathymetry, open_bathymetry  # noqa: F401 - part of this API
 from .projected import projected_depth
@@ -40,7 +41,7 @@ def _step(values, name):
         return None
     step = float(np.median(np.diff(values)))
     if step <= 0:
-        raise ValueError(f"the chart's {name} must be strictly monotonic")
+        raise ChartError(f"the chart's {name} must be strictly monotonic")
     return step
 
 
@@ -95,7 +96,7 @@ def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None, crs=None):
         if "y" in coords:
             return _on_projected(depth, factor, turned, coords, crs or like.attrs.get("crs"))
         if "lat" not in coords:
-            raise ValueError("depth needs the chart's lat/lon or y/x coordinates")
+            raise ChartError("depth needs the chart's lat/lon or y/x coordinates")
         lat, lon = coords["lat"], coords["lon"]
     lat, lon = np.asarray(lat, float), np.asarray(lon, float)
     if lon.size > 1 and np.any(np.abs(np.diff(lon)) > 180):
@@ -110,13 +111,13 @@ def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None, crs=None):
     half_la = (dla or cell_la) / 2
     d = d.sel(lat=slice(la[0] - half_la - 2 * cell_la, la[-1] + half_la + 2 * cell_la))
     if d.sizes["lat"] < 2 or d.sizes["lon"] < 2:
-        raise ValueError(
+        raise ChartError(
             f"the bathymetry ({source}, lat {float(depth.lat[0]):g}..{float(depth.lat[-1]):g}) does not cover "
             f"the chart (lat {la[0]:g}..{la[-1]:g}, lon {lo[0]:g}..{lo[-1]:g})"
         )
     values = np.asarray(d.values, dtype=np.float64) * factor  # reads only this window
     if not np.isfinite(values).any():
-        raise ValueError(
+        raise ChartError(
             f"the bathymetry ({source}) has no data over the chart (lat {la[0]:g}.."
             f"{la[-1]:g}, lon {lo[0]:g}..{lo[-1]:g}): all missing"
         )
@@ -158,7 +159,7 @@ def depth_on_grid(bathymetry, like=None, *, lat=None, lon=None, crs=None):
 def _on_projected(depth, factor, like, coords, crs):
 
     if not crs:
-        raise ValueError(
+        raise ChartError(
             "the chart has projected y/x coordinates but no CRS: pass crs= (e.g. "
             "'EPSG:3413'), or set the chart's attribute 'crs'"
         )
@@ -190,16 +191,16 @@ def check_draft(draft, ukc=None) -> tuple[float, float]:
     try:
         draft = float(draft)
     except (TypeError, ValueError):
-        raise TypeError(f"draft must be a number of metres, got {draft!r}") from None
+        raise SeawayTypeError(f"draft must be a number of metres, got {draft!r}") from None
     if not (np.isfinite(draft) and 0 < draft < 100):
-        raise ValueError(f"draft must be in metres, more than 0 and less than 100, got {draft:g}")
+        raise SeawayError(f"draft must be in metres, more than 0 and less than 100, got {draft:g}")
     ukc = DEFAULT_UKC_SHARE * draft if ukc is None else ukc
     try:
         ukc = float(ukc)
     except (TypeError, ValueError):
-        raise TypeError(f"ukc (under-keel clearance) must be a number of metres, got {ukc!r}") from None
+        raise SeawayTypeError(f"ukc (under-keel clearance) must be a number of metres, got {ukc!r}") from None
     if not (np.isfinite(ukc) and 0 <= ukc < 100):
-        raise ValueError(f"ukc (under-keel clearance) must be in metres, 0 to 100, got {ukc:g}")
+        raise SeawayError(f"ukc (under-keel clearance) must be in metres, 0 to 100, got {ukc:g}")
     return draft, ukc
 
 
@@ -210,7 +211,7 @@ def apply_draft(cost, depth, draft, ukc=None):
     z = np.asarray(getattr(depth, "values", depth), dtype=float)
     values = np.asarray(getattr(cost, "values", cost), dtype=float)
     if z.shape != values.shape:
-        raise ValueError(
+        raise ChartError(
             f"depth has shape {z.shape} but the cost {values.shape}; resample it onto "
             "the chart with seaway.depth.depth_on_grid"
         )

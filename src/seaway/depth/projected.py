@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..base.units import metres_per
+from ..errors import ChartError
 
 
 def projected_depth(raw, factor, y, x, crs, units="km"):
@@ -18,7 +19,7 @@ def projected_depth(raw, factor, y, x, crs, units="km"):
 
     scale = metres_per(units)
     if scale is None:
-        raise ValueError(f"the chart's y/x are in {units!r}; give them in km or m")
+        raise ChartError(f"the chart's y/x are in {units!r}; give them in km or m")
     crs = pyproj.CRS.from_user_input(crs)
     to_ll = pyproj.Transformer.from_crs(crs, "EPSG:4326", always_xy=True)
     to_xy = pyproj.Transformer.from_crs("EPSG:4326", crs, always_xy=True)
@@ -37,7 +38,7 @@ def projected_depth(raw, factor, y, x, crs, units="km"):
     north = 90.0 if pole else np.nanmax(lat_c) + pixel_deg + 2 * cell
     window = raw.sel(lat=slice(south, north))
     if window.sizes["lat"] < 2:
-        raise ValueError(
+        raise ChartError(
             f"the bathymetry (lat {float(raw.lat[0]):g}..{float(raw.lat[-1]):g}) does "
             f"not cover the chart (lat {np.nanmin(lat_c):.3g}..{np.nanmax(lat_c):.3g})"
         )

@@ -13,6 +13,7 @@ import numpy.typing as npt
 from .. import _core
 from ..base.interrupt import interruptible
 from ..chart.locate import locate
+from ..errors import SeawayError, SeawayTypeError
 from ..models.base import TurnPenalised
 from ..models.results import StepValues
 from ..result.route import Route
@@ -41,29 +42,31 @@ def turn_table(turn_penalty: TurnPenalty | None) -> Turns | None:
     if turn_penalty is None:
         return None
     if isinstance(turn_penalty, bool):
-        raise TypeError("turn_penalty must be a cost per degree or a table {angle_deg: cost}, got a bool")
+        raise SeawayTypeError(
+            "turn_penalty must be a cost per degree or a table {angle_deg: cost}, got a bool"
+        )
     if isinstance(turn_penalty, (int, float, np.integer, np.floating)):
         p = float(turn_penalty)
         if not (math.isfinite(p) and p >= 0):
-            raise ValueError(f"turn_penalty per degree must be finite and >= 0, got {turn_penalty!r}")
+            raise SeawayError(f"turn_penalty per degree must be finite and >= 0, got {turn_penalty!r}")
         return [0.0, 180.0], [0.0, 180.0 * p]
     items = turn_penalty.items() if isinstance(turn_penalty, dict) else turn_penalty
     try:
         pairs = sorted((float(a), float(c)) for a, c in items)
     except (TypeError, ValueError):
-        raise TypeError(
+        raise SeawayTypeError(
             "turn_penalty must be a cost per degree or a table {angle_deg: cost} "
             f"(e.g. {{0: 0, 45: 2, 90: 10, 180: 40}}), got {turn_penalty!r}"
         ) from None
     if not pairs:
-        raise ValueError("turn_penalty table is empty; give e.g. {0: 0, 90: 10, 180: 40}")
+        raise SeawayError("turn_penalty table is empty; give e.g. {0: 0, 90: 10, 180: 40}")
     angles, costs = [a for a, _ in pairs], [c for _, c in pairs]
     if len(set(angles)) != len(angles):
-        raise ValueError(f"turn_penalty table repeats an angle: {angles}")
+        raise SeawayError(f"turn_penalty table repeats an angle: {angles}")
     if angles[0] < 0 or angles[-1] > 180:
-        raise ValueError(f"turn_penalty angles must lie in 0..180 degrees, got {angles}")
+        raise SeawayError(f"turn_penalty angles must lie in 0..180 degrees, got {angles}")
     if not all(math.isfinite(c) and c >= 0 for c in costs):
-        raise ValueError(f"turn_penalty costs must be finite and >= 0, got {costs}")
+        raise SeawayError(f"turn_penalty costs must be finite and >= 0, got {costs}")
     if angles[0] > 0:
         angles, costs = [0.0] + angles, [costs[0]] + costs
     if angles[-1] < 180:
@@ -89,15 +92,19 @@ def via_list(via: Via | None) -> list[Point]:
     if isinstance(via, np.ndarray):
         via = via.tolist()
     if not isinstance(via, (list, tuple)):
-        raise TypeError(f"via must be a list of points ((lat, lon) or (row, col)), got {type(via).__name__}")
+        raise SeawayTypeError(
+            f"via must be a list of points ((lat, lon) or (row, col)), got {type(via).__name__}"
+        )
     if len(via) == 2 and all(isinstance(v, (int, float, np.integer, np.floating)) for v in via):
-        raise TypeError(f"via must be a list of points, got one point {tuple(via)}; write via=[{tuple(via)}]")
+        raise SeawayTypeError(
+            f"via must be a list of points, got one point {tuple(via)}; write via=[{tuple(via)}]"
+        )
     return list(via)
 
 
 def _check_turn_model(model: CostModel) -> None:
     if not model.turn_penalty:
-        raise ValueError(
+        raise SeawayError(
             f"turn_penalty works with the static edge costs {EDGE_COST_NAMES}, not the {model.name!r} "
             "model (a time, fuel or danger cost would need its own penalty units and, for time, a "
             "clock that the penalty would shift); route without turn_penalty, or on a static cost"
@@ -161,7 +168,7 @@ def route_constrained(
     names = ["start"] + [f"via point {i + 1}" for i in range(len(points) - 2)] + ["end"]
     located = [locate(chart, p, n) for p, n in zip(points, names)]
     if len(located) > 2 and model.time_dependent and not model.chainable:
-        raise ValueError(
+        raise SeawayError(
             f"via points on a {model.name!r} route need each leg to depart when the "
             "last one arrives, which this model cannot do yet; route the legs one by "
             "one with their departures"

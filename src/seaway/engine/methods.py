@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING, cast
 import numpy as np
 
 from ..base.validate import number
+from ..errors import SeawayError, SeawayTypeError
 from ..models.base import EDGE_COSTS
 from .result import Search
 
@@ -54,25 +55,25 @@ BIDIRECTIONAL_LANDMARKS = True
 def check_options(neighbourhood: int, directions: str) -> None:
     """Refuse a stencil size or direction set the engine does not take, naming the fix."""
     if isinstance(neighbourhood, bool) or not isinstance(neighbourhood, (int, np.integer)):
-        raise TypeError(f"neighbourhood must be an odd integer from 3 to 15, got {neighbourhood!r}")
+        raise SeawayTypeError(f"neighbourhood must be an odd integer from 3 to 15, got {neighbourhood!r}")
     if neighbourhood < 3 or neighbourhood > 15 or neighbourhood % 2 == 0:
-        raise ValueError(
+        raise SeawayError(
             f"neighbourhood must be odd and between 3 and 15 (the k of the k x k stencil), got "
             f"{neighbourhood}; e.g. neighbourhood=5"
         )
     if directions not in DIRECTIONS:
-        raise ValueError(f"directions must be one of {DIRECTIONS}, got {directions!r}")
+        raise SeawayError(f"directions must be one of {DIRECTIONS}, got {directions!r}")
 
 
 def heuristic_weight(method: str, weight: float | None) -> float:
     """The A* weight of `method` (0 for the methods without one); validates both."""
     if method not in METHODS:
-        raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+        raise SeawayError(f"method must be one of {METHODS}, got {method!r}")
     if method == "auto" and weight is not None:
         method = "astar"  # a weight asks for (weighted) A*
     if method != "astar":
         if weight not in (None, 1, 1.0):
-            raise ValueError("weight inflates the A* heuristic; use it with method='astar'")
+            raise SeawayError("weight inflates the A* heuristic; use it with method='astar'")
         return 0.0
     return (
         1.0
@@ -92,19 +93,19 @@ def resolve(prepared: PreparedChart, model: CostModel, method: str, weight: floa
             return "landmarks"
         return "bidirectional" if model.static else "astar"
     if method == "bidirectional" and not model.static:
-        raise ValueError(
+        raise SeawayError(
             f"method='bidirectional' needs a static raster model (edge_cost in {EDGE_COST_NAMES}); "
             f"the {model.name!r} model's step costs depend on the time of arrival, so the backward "
             "search cannot price them: use method='astar' or 'dijkstra'"
         )
     if method == "landmarks":
         if not (model.static and model.symmetric):
-            raise ValueError(
+            raise SeawayError(
                 f"method='landmarks' needs a symmetric static model (edge_cost in "
                 f"{EDGE_COST_NAMES}), not {model.name!r}: use method='bidirectional' or 'astar'"
             )
         if prepared.landmarks_for(model) is None:
-            raise ValueError(
+            raise SeawayError(
                 f"the chart has no landmarks for the {model.name!r} model: call "
                 f"prepared.prepare_landmarks(8, model={model.name!r}) first (or "
                 "seaway.prepare(..., landmarks=8)), or use method='auto'"
@@ -159,11 +160,11 @@ def build_landmarks(
 ) -> tuple[_core.Landmarks, float]:
     """The landmark tables of `model` on `prepared`, and the seconds it took."""
     if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
-        raise TypeError(f"landmarks must be an integer from 1 to 64, got {count!r}")
+        raise SeawayTypeError(f"landmarks must be an integer from 1 to 64, got {count!r}")
     if not 1 <= count <= 64:
-        raise ValueError(f"landmarks must be from 1 to 64 (4 bytes per pixel each), got {count}")
+        raise SeawayError(f"landmarks must be from 1 to 64 (4 bytes per pixel each), got {count}")
     if not (model.static and model.symmetric):
-        raise ValueError(
+        raise SeawayError(
             f"landmarks need a symmetric static model (edge_cost in {EDGE_COST_NAMES}), not {model.name!r}"
         )
     t0 = time.perf_counter()

@@ -19,7 +19,7 @@ from ..base.memory import SEARCH, check_pixels
 from ..chart.locate import check_overflow, check_tiny, locate, nearest_passable
 from ..chart.raster import Chart, as_chart
 from ..constraints import constrain
-from ..errors import SeawayError
+from ..errors import ChartError, SeawayError
 from ..models.base import CostModel, EdgeCost, as_model
 from ..result.route import Route
 from . import methods
@@ -135,7 +135,7 @@ class PreparedChart:
             )
         seed = nearest_passable(self.chart, tuple(n // 2 for n in self.chart.shape))
         if seed is None:
-            raise ValueError("no pixel of the chart is passable: landmarks need water")
+            raise ChartError("no pixel of the chart is passable: landmarks need water")
         lm, seconds = interruptible(lambda cancel: methods.build_landmarks(self, count, model, seed, cancel))
         self._landmarks[model.name] = lm
         px = [divmod(int(p), self.chart.shape[1]) for p in lm.pixels]

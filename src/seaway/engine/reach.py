@@ -22,7 +22,7 @@ import numpy as np
 import numpy.typing as npt
 
 from ..base.sphere import distance_km
-from ..errors import NoRouteError
+from ..errors import ChartError, NoRouteError
 from .api import route
 from .prepared import PreparedChart
 
@@ -156,7 +156,7 @@ def chart_order(array: Any, chart: Chart) -> npt.NDArray[np.float64]:
         array = array.transpose(*chart.template.dims)
     out = np.asarray(getattr(array, "values", array), float)
     if out.shape != chart.shape:
-        raise ValueError(f"a raster of shape {out.shape} is not on the chart's grid {chart.shape}")
+        raise ChartError(f"a raster of shape {out.shape} is not on the chart's grid {chart.shape}")
     return out
 
 

@@ -14,6 +14,7 @@ import os
 from collections.abc import Mapping
 
 from ..base.validate import number
+from ..errors import SeawayError, SeawayTypeError
 from .run import _Progress, _run_dask, _run_threads
 
 COLUMNS = [
@@ -109,7 +110,7 @@ def route_many(
     vessel_items = [(None, None)] if vessels is None else _items(vessels, "vessels")
     voyage_items = _voyage_items(voyages)
     if charts is not None and any(v is not None and not callable(v) for _, v in vessel_items):
-        raise ValueError(
+        raise SeawayError(
             "a vessel given as a cost raster ignores the charts; pass charts=None, "
             "or give the vessel as a callable turning a chart into a cost raster"
         )
@@ -137,7 +138,7 @@ def _items(obj, name):
         return list(obj.items())
     if isinstance(obj, (list, tuple)):
         return list(enumerate(obj))
-    raise TypeError(f"{name} must be a mapping id -> item or a list, got {type(obj).__name__}")
+    raise SeawayTypeError(f"{name} must be a mapping id -> item or a list, got {type(obj).__name__}")
 
 
 def _chart_items(charts, time_dim):

@@ -6,7 +6,7 @@ import math
 import time
 
 from ..engine.api import prepare
-from ..errors import NoRouteError
+from ..errors import NoRouteError, SeawayTypeError
 
 
 def _loaded(obj):
@@ -23,7 +23,7 @@ def _target(chart, vessel, opts):
         land = chart["land"]
     if vessel is None:
         if hasattr(chart, "data_vars"):
-            raise TypeError("a Dataset chart needs vessels= callables turning it into a cost raster")
+            raise SeawayTypeError("a Dataset chart needs vessels= callables turning it into a cost raster")
         cost = chart
     else:
         cost = vessel(chart) if callable(vessel) else vessel
@@ -59,7 +59,7 @@ def _route_one(get_target, voyage, keep):
     t0 = time.perf_counter()
     try:
         if malformed:
-            raise TypeError(
+            raise SeawayTypeError(
                 f"a voyage must be a (start, end) pair or a (start, end, via) triple, got {voyage!r}"
             )
         target = get_target()

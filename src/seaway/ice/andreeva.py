@@ -23,6 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..base.units import KM_PER_NM
+from ..errors import SeawayError
 from .codes import STAGE_CODES
 
 NSR_K = 0.006  # Andreeva 2021: largest vertical roughness index at 95 % on the NSR
@@ -111,13 +112,13 @@ def check_stage_thickness(rule):
             except (TypeError, ValueError):
                 c, m = float("nan"), float("nan")
             if c not in STAGE_CODES or not (0 <= m <= 10):
-                raise ValueError(
+                raise SeawayError(
                     f"stage thickness {code!r}: {metres!r} is not a WMO stage code and a thickness in m "
                     "(0-10), e.g. {93: 1.5}"
                 )
             out[c] = m
         return out
-    raise ValueError(
+    raise SeawayError(
         f"stage_thickness must be one of {', '.join(STAGE_THICKNESS_RULES)} or a table "
         f"{{WMO stage: metres}}, e.g. {{93: 1.5}}; got {rule!r}"
     )

@@ -26,6 +26,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..errors import SeawayError
+
 
 @dataclass(frozen=True)
 class IceClass:
@@ -140,7 +142,7 @@ def get_class(ice_class) -> IceClass:
         return ice_class
     name = _LOOKUP.get(_key(ice_class)) if isinstance(ice_class, str) else None
     if name is None:
-        raise ValueError(f"ice_class must be one of {class_names()}, got {ice_class!r}")
+        raise SeawayError(f"ice_class must be one of {class_names()}, got {ice_class!r}")
     return CLASSES[name]
 
 

@@ -15,6 +15,8 @@ import math
 
 import numpy as np
 
+from ..errors import SeawayError
+
 #: WMO stage of development (SIGRID-3 SA/SB/SC codes) -> (name, (min, max) typical thickness
 #: in m). Thick first-year ice is "> 120 cm"; first-year ice ends at 2 m, so its range is
 #: closed at 2.0 m. Second-year and multi-year ice have no upper bound in the nomenclature
@@ -105,7 +107,7 @@ def concentration_tenths(code: float, rule: str = "upper") -> float:
     """A decoded concentration code -> tenths (0-10): the `rule` end of a range code
     ('upper' by default: the most ice the analyst allowed for), NaN when unknown."""
     if rule not in CONCENTRATION_RULES:
-        raise ValueError(f"rule must be one of {CONCENTRATION_RULES}, got {rule!r}")
+        raise SeawayError(f"rule must be one of {CONCENTRATION_RULES}, got {rule!r}")
     lo, hi = concentration_range(code)
     return {"upper": hi, "lower": lo, "mean": (lo + hi) / 2}[rule]
 

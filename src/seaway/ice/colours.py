@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import SeawayError
 from .codes import STAGE_CODES
 
 #: Total concentration classes: (label, lower bound in tenths (inclusive), RGB). A value
@@ -106,7 +107,7 @@ def _classes(values, code):
             index[undefined] = len(table)
             table.append(UNDEFINED)
         return index, table
-    raise ValueError(f"code must be 'concentration' or 'stage', got {code!r}")
+    raise SeawayError(f"code must be 'concentration' or 'stage', got {code!r}")
 
 
 def guess_code(ice) -> str:

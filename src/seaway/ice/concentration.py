@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..chart.flags import flags_out
+from ..errors import SeawayError
 from .codes import stage_name
 
 #: CF standard name of a concentration field.
@@ -41,12 +42,12 @@ def concentration_chart(conc, *, stage=DEFAULT_STAGE, open_water=OPEN_WATER, lan
 
     stage = float(stage)
     if not np.isfinite(stage) or stage_name(stage).startswith("unknown"):
-        raise ValueError(
+        raise SeawayError(
             f"stage {stage:g} is not a WMO stage of development code; give one, e.g. "
             f"{DEFAULT_STAGE} ({stage_name(DEFAULT_STAGE)})"
         )
     if not 0 <= open_water <= 1:
-        raise ValueError(f"open_water is a fraction (0-1), got {open_water!r}")
+        raise SeawayError(f"open_water is a fraction (0-1), got {open_water!r}")
     name = str(conc.name)
     flagged = flags_out(conc, name)
     frac = np.asarray(flagged.values.values, dtype=float)

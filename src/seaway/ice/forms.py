@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import SeawayError
 from .codes import FAST_ICE, FIRST_YEAR, STAGE_CODES, UNKNOWN_STAGE, stage_name, thickest_first_year
 
 FAST_ICE_CHOICES = ("nearby", "closed")
@@ -56,7 +57,7 @@ def check_fast_ice(fast_ice):
         code = np.nan
     if np.isfinite(code) and int(code) == code and int(code) in STAGE_CODES and code not in (55, 80, 99):
         return code
-    raise ValueError(
+    raise SeawayError(
         f"fast_ice must be 'nearby', 'closed' or a WMO stage code of ice (81-98, e.g. 93 "
         f"thick first-year ice), got {fast_ice!r}"
     )

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import ChartError, SeawayError
 from .classes import CLASSES, IceClass, class_names, get_class
 from .codes import ICE_FREE, STAGE_CODES, UNKNOWN_STAGE
 from .forms import DEFAULT_FAST_ICE, fast_ice_stage, free_water_rule
@@ -122,8 +123,8 @@ def ice_impact(stage, ice_class="Arc7", *, table=None, unknown="raise", concentr
         bad = sorted({float(c) for c in np.unique(codes[~known])})
         if isinstance(unknown, str):
             if unknown != "raise":
-                raise ValueError(f"unknown must be 'raise' or a number, got {unknown!r}")
-            raise ValueError(
+                raise SeawayError(f"unknown must be 'raise' or a number, got {unknown!r}")
+            raise ChartError(
                 f"stage codes {bad[:10]} have no impact for {cls.name}; known WMO "
                 f"codes: {sorted(table)} (NaN is impassable). Pass unknown=np.inf "
                 "to forbid them or unknown=<u> to cost them"

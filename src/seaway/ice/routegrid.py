@@ -22,6 +22,7 @@ import numpy as np
 
 from ..base.memory import fits
 from ..base.units import EARTH_RADIUS_KM, KM_PER_DEG  # noqa: F401 - EARTH_RADIUS_KM: part of this API
+from ..errors import SeawayError
 from .grids import CHART, Grid, latlon_grid
 
 DLAT = 0.05  # degrees: 5.6 km, the Kara Sea grid
@@ -92,7 +93,7 @@ def route_grid(
         west, east = -180.0, 180.0
         dlon = 360.0 / max(int(round(360.0 / dlon)), 16)
     if not (north > south and east > west):
-        raise ValueError(
+        raise SeawayError(
             f"the route's ends {tuple(start)} and {tuple(end)} lie outside the chart "
             f"(lon {chart_bounds[0]:g}..{chart_bounds[2]:g}, lat {chart_bounds[1]:g}.."
             f"{chart_bounds[3]:g}); give ends on the chart, or the grid with --grid"

@@ -22,7 +22,7 @@ from ..base.files import open_netcdf
 from ..base.memory import SEASON_CHART, check_pixels
 from ..chart.cf import planar_in_km
 from ..chart.raster import Chart, as_chart
-from ..errors import ChartError
+from ..errors import ChartError, SeawayError
 from . import andreeva
 from .forms import check_fast_ice
 from .seasonfast import record_rule, season_layers
@@ -54,11 +54,11 @@ def read_season(charts, grid, *, fast_ice=None, **read_kwargs) -> xr.Dataset:
     then, seaway.ice.forms). read_kwargs go to read_sigrid3."""
     items = list(charts.items()) if isinstance(charts, dict) else list(charts)
     if not items:
-        raise ValueError("give at least one (date, path) chart")
+        raise SeawayError("give at least one (date, path) chart")
     try:
         dates = [np.datetime64(d, "s") for d, _ in items]
     except (TypeError, ValueError) as exc:
-        raise ValueError(f"chart dates must be dates such as '2026-07-01' or datetime64: {exc}") from None
+        raise SeawayError(f"chart dates must be dates such as '2026-07-01' or datetime64: {exc}") from None
     _check_increasing(np.array(dates), "sorted(charts)")
     rule = None if fast_ice is None else check_fast_ice(fast_ice)  # refused before any file is read
     check_pixels(
@@ -76,7 +76,7 @@ def read_season(charts, grid, *, fast_ice=None, **read_kwargs) -> xr.Dataset:
 def _check_increasing(t, fix):
     if t.size > 1 and not np.all(t[1:] > t[:-1]):
         k = int(np.flatnonzero(~(t[1:] > t[:-1]))[0])
-        raise ValueError(
+        raise ChartError(
             f"chart times must be unique and increasing, but {t[k]} is followed by "
             f"{t[k + 1]}: {fix}, and drop duplicate dates"
         )
@@ -86,7 +86,7 @@ def as_season(season) -> xr.Dataset:
     """A season Dataset from a Dataset or NetCDF path: CF sea_ice_area_fraction (fraction or %)
     becomes CT in tenths, sea_ice_thickness becomes `thickness` (m); times must increase."""
     if not isinstance(season, xr.Dataset):
-        season = open_netcdf(season, "a season of ice charts is a NetCDF file with a time axis")
+        season = open_netcdf(season, "a season of ice charts is a NetCDF file with a time axis", ChartError)
     ds = season
     by_std = {v.attrs.get("standard_name"): k for k, v in ds.data_vars.items()}
     if "CT" not in ds and "sea_ice_area_fraction" in by_std:
@@ -96,12 +96,12 @@ def as_season(season) -> xr.Dataset:
     if "thickness" not in ds and "sea_ice_thickness" in by_std:
         ds = ds.assign(thickness=ds[by_std["sea_ice_thickness"]])
     if "time" not in ds.dims:
-        raise ValueError(
+        raise ChartError(
             "a season needs a `time` dimension (one chart per time); for one chart, "
             "add it with ds.expand_dims(time=[date])"
         )
     if "CT" not in ds or not ({"SA", "thickness"} & set(ds)):
-        raise ValueError(
+        raise ChartError(
             f"a season needs CT (tenths, or CF sea_ice_area_fraction) and SA (WMO "
             f"stage) or thickness (m, or CF sea_ice_thickness); it has {sorted(ds.data_vars)}"
         )
@@ -126,12 +126,12 @@ PLAUSIBLE = (
 def _check_range(da: xr.DataArray, lo: float, hi: float, what: str) -> None:
     values = np.asarray(da.values)
     if not np.issubdtype(values.dtype, np.number) or np.iscomplexobj(values):
-        raise ValueError(f"the season's {da.name} must hold numbers ({what}), got dtype {values.dtype}")
+        raise ChartError(f"the season's {da.name} must hold numbers ({what}), got dtype {values.dtype}")
     with np.errstate(invalid="ignore"):
         bad = ~np.isnan(values) & ((values < lo) | (values > hi))
     if bad.any():
         where = tuple(int(i) for i in np.argwhere(bad)[0])
-        raise ValueError(
+        raise ChartError(
             f"the season's {da.name} holds {int(bad.sum())} value(s) outside its range, e.g. "
             f"{values[where]:g} at {dict(zip(da.dims, where))}: it holds {what}; the file is damaged "
             "or in other units: fetch it again, or convert it"
@@ -161,7 +161,7 @@ class SeasonGrid:
         if land is not None:
             land = np.asarray(getattr(land, "values", land), bool)
             if land.shape != self.shape:
-                raise ValueError(
+                raise ChartError(
                     f"land has {land.shape} pixels but the season's charts {self.shape}: "
                     "give a land mask on the charts' grid"
                 )
@@ -184,12 +184,12 @@ class SeasonGrid:
         try:
             dep = t[0] if departure is None else np.datetime64(departure)
         except (TypeError, ValueError):
-            raise ValueError(
+            raise SeawayError(
                 f"departure must be a date such as '2026-07-01T12' (or a datetime64), got {departure!r}"
             ) from None
         end = t[-1] + np.timedelta64(int(round(self.last_valid_h * 3600)), "s")
         if not (t[0] <= dep <= end):
-            raise ValueError(
+            raise SeawayError(
                 f"departure {dep} is outside the season ({t[0]} to {end}, the last "
                 "chart's validity): the ice then is unknown; depart within the season "
                 "or add charts that cover the departure"
@@ -207,14 +207,14 @@ class SeasonGrid:
         """(hours per km float32 (frames, rows, cols) from the chart valid at departure on, inf
         where closed; validity of each in hours after departure; departure)."""
         if not (np.isfinite(v0_kn) and v0_kn > 0):
-            raise ValueError(f"v0_kn must be a positive speed in knots, got {v0_kn!r}")
+            raise SeawayError(f"v0_kn must be a positive speed in knots, got {v0_kn!r}")
         dep, k0 = self.departure_frames(departure)
         if not (
             callable(getattr(speed, "get", None))
             or is_curve(speed)
             or (isinstance(speed, str) and speed in ("andreeva", "class"))
         ):
-            raise ValueError(
+            raise SeawayError(
                 f"speed must be 'andreeva', 'class', a ship's ice curve (seaway.vessel.IceCurve) or a "
                 f"table {{stage: knots}}, got {speed!r}"
             )

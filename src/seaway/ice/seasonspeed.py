@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import ChartError, SeawayError
 from . import andreeva
 from .classes import get_class
 from .codes import ICE_FREE
@@ -43,7 +44,7 @@ def andreeva_speed_kn(
     ct = np.asarray(frame["CT"].values, dtype=float)
     h_pass = get_class(ice_class).h_pass if h_pass_m is None else float(h_pass_m)
     if not h_pass > 0:
-        raise ValueError(f"{get_class(ice_class).name} passes no ice (h_pass 0); give h_pass_m")
+        raise SeawayError(f"{get_class(ice_class).name} passes no ice (h_pass 0); give h_pass_m")
     if "thickness" in frame:
         h = np.asarray(frame["thickness"].values, dtype=float)
     else:
@@ -75,12 +76,12 @@ def table_speed_kn(frame, ice_class, table, *, concentration_limit=True, fast_ic
             speed[hit] = float(entry)
     if not known.all():
         missing = sorted({float(c) for c in np.unique(stage[~known])})
-        raise ValueError(
+        raise SeawayError(
             f"the speed table has no entry for stages {missing[:10]} met in the "
             f"season (e.g. {ICE_FREE} ice free, 99 unknown); add them (0 knots closes them)"
         )
     if not np.all(np.isfinite(speed) & (speed >= 0)):
-        raise ValueError("speeds in the table must be finite knots >= 0")
+        raise SeawayError("speeds in the table must be finite knots >= 0")
     return np.where(_closed(frame, ct, ice_class, concentration_limit), 0.0, speed)
 
 
@@ -94,7 +95,7 @@ def class_speed_kn(
             frame, ice_class, v0_kn, concentration_limit=concentration_limit, fast_ice=fast_ice, **options
         )
     if "SA" not in frame:
-        raise ValueError(
+        raise ChartError(
             f"POLARIS ({get_class(ice_class).name}) reads the stages of the ice (SA); "
             "the season has none: give a Register class, or speed='andreeva'"
         )

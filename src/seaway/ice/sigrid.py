@@ -114,7 +114,7 @@ def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_tou
             warnings.simplefilter("always")
             meta, _, wkb, field_data = pyogrio.raw.read(path, layer=layer)
     except Exception as exc:  # pyogrio's DataSourceError, DataLayerError, ...
-        raise ValueError(f"{path}: cannot read it as a SIGRID-3 vector file ({one_line(str(exc))})") from None
+        raise ChartError(f"{path}: cannot read it as a SIGRID-3 vector file ({one_line(str(exc))})") from None
     fields = {str(k).upper(): v for k, v in zip(meta["fields"], field_data)}
     geoms, without = geometries(path, wkb, expected)
     check_contents(path, meta, fields, geoms)
@@ -135,13 +135,13 @@ def read_sigrid3(path, grid: Grid, *, layer=None, concentration="upper", all_tou
         )
     except (shapely.errors.ShapelyError, ValueError, RuntimeError) as exc:  # GEOS, PROJ, GDAL
         note = f"; GDAL said: {gdal[0]}" if gdal else ""
-        raise ValueError(
+        raise ChartError(
             f"{path}: its polygons cannot be used ({one_line(str(exc) + note)}); {FIX}"
         ) from None
     n = len(geoms)
     if (index < 0).all():
         box = shapely.total_bounds(geoms)
-        raise ValueError(
+        raise ChartError(
             f"{path}: none of its {n} polygons falls on the grid (their extent in the grid's CRS "
             f"{grid.crs} is x {box[0]:.6g}..{box[2]:.6g}, y {box[1]:.6g}..{box[3]:.6g}); check the "
             f"file's CRS ({str(meta['crs'] or 'none: read as EPSG:4326')[:80]}) and the grid"

@@ -16,6 +16,7 @@ import warnings
 
 import numpy as np
 
+from ..errors import ChartError
 from .vectorfile import check_shapefile_records, check_vector_file, one_line
 
 FIX = "fetch the chart again (the download or copy did not finish, or the file is damaged)"
@@ -43,7 +44,7 @@ def expected_records(path, layer=None) -> int | None:
             warnings.simplefilter("ignore")
             count = int(pyogrio.read_info(path, layer=layer)["features"])
     except Exception as exc:  # pyogrio's DataSourceError, DataLayerError, ...
-        raise ValueError(f"{path}: cannot read it as a SIGRID-3 vector file ({one_line(str(exc))})") from None
+        raise ChartError(f"{path}: cannot read it as a SIGRID-3 vector file ({one_line(str(exc))})") from None
     return count if count >= 0 else None
 
 
@@ -53,7 +54,7 @@ def geometries(path, wkb, expected: int | None):
     import shapely
 
     if expected is not None and len(wkb) != expected:
-        raise ValueError(f"{path}: GDAL read {len(wkb)} features but the file lists {expected}; {FIX}")
+        raise ChartError(f"{path}: GDAL read {len(wkb)} features but the file lists {expected}; {FIX}")
     given = np.array([w is not None for w in wkb], bool)
     geoms = shapely.from_wkb(wkb, on_invalid="ignore")
     bad = np.flatnonzero(given & shapely.is_missing(geoms))
@@ -63,7 +64,7 @@ def geometries(path, wkb, expected: int | None):
             why = "unreadable"
         except Exception as exc:  # shapely.errors.GEOSException
             why = one_line(str(exc).split(": ", 1)[-1])
-        raise ValueError(f"{path}: the geometry of {_which(bad, len(wkb))} cannot be read ({why}); {FIX}")
+        raise ChartError(f"{path}: the geometry of {_which(bad, len(wkb))} cannot be read ({why}); {FIX}")
     return geoms, int((~given).sum())  # features without geometry (a shapefile's null records)
 
 
@@ -85,7 +86,7 @@ def check_coordinates(path, geoms, crs) -> None:
             )
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
-        raise ValueError(
+        raise ChartError(
             f"{path}: {_which(np.flatnonzero(bad), len(geoms))} have coordinates no chart has (e.g. "
             f"x {box[k, 0]:.6g}..{box[k, 2]:.6g}, y {box[k, 1]:.6g}..{box[k, 3]:.6g} in "
             f"{str(crs or 'degrees')[:60]}); {FIX}"
@@ -108,9 +109,9 @@ def check_contents(path, meta, fields, geoms) -> None:
     import shapely
 
     if len(geoms) == 0:
-        raise ValueError(f"{path}: the layer has no features (an empty SIGRID-3 chart)")
+        raise ChartError(f"{path}: the layer has no features (an empty SIGRID-3 chart)")
     if not {"CT", "SA", "POLY_TYPE"} & set(fields):
-        raise ValueError(
+        raise ChartError(
             f"{path}: none of the SIGRID-3 fields CT, SA, POLY_TYPE is present "
             f"(fields: {sorted(fields)}); is it a SIGRID-3 ice chart?"
         )
@@ -118,14 +119,14 @@ def check_contents(path, meta, fields, geoms) -> None:
     other = ~np.isin(kinds, [-1, 3, 6, 7])  # missing, Polygon, MultiPolygon, GeometryCollection
     if other.any():
         types = sorted({g.geom_type for g in geoms[other]})
-        raise ValueError(
+        raise ChartError(
             f"{path}: {int(other.sum())} of {len(geoms)} features are not polygons "
             f"({', '.join(types)}); SIGRID-3 charts are polygon layers"
         )
     if not meta["crs"]:
         box = shapely.total_bounds(geoms)
         if np.all(np.isfinite(box)) and (np.abs(box[[0, 2]]).max() > 360 or np.abs(box[[1, 3]]).max() > 90):
-            raise ValueError(
+            raise ChartError(
                 f"{path}: the file states no CRS and its coordinates (x {box[0]:.6g}.."
                 f"{box[2]:.6g}, y {box[1]:.6g}..{box[3]:.6g}) are not degrees; supply "
                 "the .prj file (or set the CRS) so it can be reprojected"

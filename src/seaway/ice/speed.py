@@ -31,6 +31,7 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import SeawayError
 from . import andreeva
 from .classes import get_class
 from .forms import DEFAULT_FAST_ICE
@@ -62,7 +63,7 @@ def ice_speed(
     cls = get_class(ice_class)
     v0 = float(v0_kn)
     if not v0 > 0:
-        raise ValueError(f"the open-water speed must be > 0 knots, got {v0_kn!r}")
+        raise SeawayError(f"the open-water speed must be > 0 knots, got {v0_kn!r}")
     chart = _as_sigrid(ds)
     blocked = np.zeros(chart["CT"].shape, bool)  # a new array: the chart's layers stay as they are
     for name in ("land", "off_chart"):

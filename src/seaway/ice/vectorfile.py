@@ -18,6 +18,7 @@ import os
 import struct
 
 from ..base.validate import one_line
+from ..errors import ChartError
 
 #: The parts of a shapefile GDAL needs besides the .shp.
 SIDECARS = {".dbf": "its attribute table (the SIGRID-3 fields CT, SA, ...)", ".shx": "its index of shapes"}
@@ -39,20 +40,20 @@ def check_vector_file(path: str, bounds=None) -> list[str]:
     if os.path.isdir(path):
         inside = sorted(f for f in os.listdir(path) if os.path.splitext(f)[1].lower() in (".shp", ".gpkg"))
         hint = f"; it holds {', '.join(inside[:5])}" if inside else ""
-        raise ValueError(
+        raise ChartError(
             f"{path} is a directory, not a chart file; give the chart file (.shp or .gpkg) inside it{hint}"
         )
     if not os.path.exists(path):
-        raise ValueError(f"{path}: no such file")
+        raise ChartError(f"{path}: no such file")
     if os.path.getsize(path) == 0:
-        raise ValueError(
+        raise ChartError(
             f"{path} is empty (0 bytes): the download or copy did not finish; fetch the chart again"
         )
     if os.path.splitext(path)[1].lower() != ".shp":
         return []
     for ext, what in SIDECARS.items():
         if _sidecar(path, ext) is None:
-            raise ValueError(
+            raise ChartError(
                 f"{path}: the shapefile's {ext} ({what}) is missing; copy "
                 f"{os.path.basename(os.path.splitext(path)[0])}{ext} from the chart's "
                 "archive next to it"
@@ -60,7 +61,7 @@ def check_vector_file(path: str, bounds=None) -> list[str]:
     prj = _sidecar(path, ".prj")
     if prj is None:
         if bounds is not None and not _degrees(bounds):
-            raise ValueError(
+            raise ChartError(
                 f"{path} has no .prj and its coordinates ({_fmt(bounds)}) are not "
                 "degrees, so its CRS is unknown; copy the .prj from the chart's "
                 "archive next to it"
@@ -78,7 +79,7 @@ def check_vector_file(path: str, bounds=None) -> list[str]:
     except ImportError:
         return []
     except Exception as exc:  # pyproj's CRSError, or an empty .prj
-        raise ValueError(
+        raise ChartError(
             f"{prj} does not describe a CRS ({one_line(str(exc), 120)}); replace it with the "
             "chart archive's .prj, or delete it to read the chart as WGS 84 "
             "lon/lat"
@@ -92,12 +93,12 @@ def _header(path: str, what: str) -> tuple[bytes, int]:
     with open(path, "rb") as f:
         head = f.read(100)
     if size < 100:
-        raise ValueError(
+        raise ChartError(
             f"{path} is cut short: {size} bytes, less than a shapefile {what}'s 100-byte header; "
             "fetch the chart again"
         )
     if struct.unpack(">i", head[:4])[0] != 9994:
-        raise ValueError(
+        raise ChartError(
             f"{path} is not a shapefile {what}: it starts {head[:4].hex()}, a shapefile "
             "0000270a; fetch the chart again"
         )
@@ -118,7 +119,7 @@ def check_shapefile_records(path: str) -> int:
     index_head, index_size = _header(shx, "index (.shx)")
     n = (index_size - 100) // 8
     if 2 * struct.unpack(">i", index_head[24:28])[0] != index_size or (index_size - 100) % 8:
-        raise ValueError(
+        raise ChartError(
             f"{shx}: the index declares {2 * struct.unpack('>i', index_head[24:28])[0]} bytes but "
             f"has {index_size}; {fix}"
         )
@@ -133,7 +134,7 @@ def check_shapefile_records(path: str) -> int:
             if past
             else "no feature lies"
         )
-        raise ValueError(
+        raise ChartError(
             f"{path} is cut short: it has {size} of the {declared} bytes its header declares, and "
             f"{lost} in the missing part; {fix}"
         )
@@ -142,7 +143,7 @@ def check_shapefile_records(path: str) -> int:
             f.seek(2 * o)
             head = f.read(8)
             if 2 * o < 100 or struct.unpack(">ii", head)[1] != c:
-                raise ValueError(
+                raise ChartError(
                     f"{shx}: its entry for record {i + 1} of {n} does not point at that record in "
                     f"the .shp (offset {2 * o}); the index is damaged or from another chart; {fix}"
                 )
@@ -150,17 +151,17 @@ def check_shapefile_records(path: str) -> int:
     with open(dbf, "rb") as f:
         table = f.read(32)
     if len(table) < 12:
-        raise ValueError(f"{dbf} is not a dBASE table ({os.path.getsize(dbf)} bytes); {fix}")
+        raise ChartError(f"{dbf} is not a dBASE table ({os.path.getsize(dbf)} bytes); {fix}")
     rows, head_len, row_len = struct.unpack("<IHH", table[4:12])
     whole = (os.path.getsize(dbf) - head_len) // row_len if row_len else rows
     if whole < rows:
-        raise ValueError(
+        raise ChartError(
             f"{dbf} holds {max(whole, 0)} of the {rows} attribute records its header declares: "
             f"it is cut short or damaged (the attributes of {_records(max(whole, 0) + 1, rows, rows)} "
             f"are lost); {fix}"
         )
     if rows != n:
-        raise ValueError(
+        raise ChartError(
             f"{path}: its index (.shx) lists {n} features but its attribute table (.dbf) {rows}; "
             f"the parts come from different charts or one is damaged; {fix}"
         )

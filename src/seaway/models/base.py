@@ -19,6 +19,7 @@ import numpy.typing as npt
 
 from .. import _core
 from ..chart.legs import Segments, TimedLegs
+from ..errors import SeawayError, SeawayTypeError
 from .results import StepValues
 
 if TYPE_CHECKING:
@@ -122,7 +123,7 @@ class CostModel:
         """Arbitrary legs sailed on the clock on `chart` (seaway.chart.legs.TimedLegs): the
         time models that are smoothable."""
         if not (self.time_dependent and self.smoothable):
-            raise ValueError(f"the {self.name!r} model does not sail legs on a clock")
+            raise SeawayError(f"the {self.name!r} model does not sail legs on a clock")
         engine = self.engine(_OnChart(chart, neighbourhood))
         assert isinstance(engine, _TIME_MODELS)  # every smoothable time model's engine
         return TimedLegs(chart, engine, neighbourhood)
@@ -130,11 +131,11 @@ class CostModel:
     def segments(self, chart: Chart, neighbourhood: int) -> Segments:
         """Pricing and land test of arbitrary legs on `chart` (seaway.chart.legs)."""
         if self.time_dependent and self.smoothable:
-            raise ValueError(
+            raise SeawayError(
                 f"the {self.name!r} model prices legs on the clock (timed_legs), not as a cost "
                 "of their own: a leg's hours depend on when it is sailed"
             )
-        raise ValueError(
+        raise SeawayError(
             f"the {self.name!r} model prices only the engine's steps, not arbitrary straight legs "
             f"(its cost is in {self.unit(chart.geographic)}), so its routes cannot be smoothed or "
             f"re-priced along new legs; smooth a route found with edge_cost in {tuple(EDGE_COSTS)}, "
@@ -169,7 +170,7 @@ class EdgeCost(CostModel):
 
     def __init__(self, rule: str = "max", unit: str | None = None) -> None:
         if rule not in EDGE_COSTS:
-            raise ValueError(f"edge_cost must be one of {tuple(EDGE_COSTS)}, got {rule!r}")
+            raise SeawayError(f"edge_cost must be one of {tuple(EDGE_COSTS)}, got {rule!r}")
         self.name, self._unit = rule, unit
 
     def unit(self, geographic: bool) -> str:
@@ -243,7 +244,7 @@ class TurnPenalised(EdgeCost):
     turn_penalty = False  # it holds its penalties already
 
     def segments(self, chart: Chart, neighbourhood: int) -> Segments:
-        raise ValueError(
+        raise SeawayError(
             "a turn-penalty route's cost includes its turn penalties, which smoothing cannot "
             "price along new legs; use the route as found, or smooth a route found without "
             "turn_penalty"
@@ -256,4 +257,6 @@ def as_model(model: CostModel | str) -> CostModel:
         return model
     if isinstance(model, str):
         return EdgeCost(model)
-    raise TypeError(f"model must be a seaway.models.CostModel or one of {tuple(EDGE_COSTS)}, got {model!r}")
+    raise SeawayTypeError(
+        f"model must be a seaway.models.CostModel or one of {tuple(EDGE_COSTS)}, got {model!r}"
+    )

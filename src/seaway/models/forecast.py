@@ -15,6 +15,7 @@ from ..base.validate import number
 from ..chart.roles import STANDARD_NAMES
 from ..constraints import Zone, timed_zone_engine
 from ..constraints.timed import TimedGrid
+from ..errors import ChartError, ForecastError
 from ..vessel import Vessel
 from .base import CostModel, Prepared, RouteT
 from .results import FuelUse, StepValues, Voyage
@@ -53,9 +54,9 @@ class _OnForecast(CostModel):
 
     def _check_chart(self, prepared: Prepared) -> None:
         if not prepared.chart.geographic:
-            raise ValueError(f"the {self.name!r} model needs a lat/lon chart")
+            raise ChartError(f"the {self.name!r} model needs a lat/lon chart")
         if prepared.chart.shape != self.forecast.shape:
-            raise ValueError(
+            raise ForecastError(
                 f"the forecast has {self.forecast.shape} pixels but the chart "
                 f"{prepared.chart.shape}: route on the forecast's grid "
                 "(seaway.weather.ForecastGrid.prepare)"
@@ -216,7 +217,7 @@ class WaveDanger(_OnForecast):
         roles = ("wave_height", "wave_from", "wave_period")
         missing = sorted(set(roles) - set(forecast.arrays))
         if missing:
-            raise ValueError(
+            raise ForecastError(
                 f"wave danger needs {missing}: fields with standard names "
                 + ", ".join(STANDARD_NAMES[m][0] for m in missing)
             )

@@ -13,6 +13,7 @@ from .. import _core
 from ..base.units import KM_PER_NM
 from ..base.validate import number
 from ..chart.locate import describe
+from ..errors import ChartError, ForecastError, SeawayError
 from ..ice.classes import get_class
 from ..ice.seasonfast import describer, season_assumptions, season_rule
 from ..ice.seasongrid import SeasonGrid
@@ -71,7 +72,7 @@ class IceSeasonTime(CostModel):
         # where some chart lets the class go; numpy types any(axis=0) as "bool or array"
         self._open = cast("npt.NDArray[np.bool_]", np.isfinite(self.hours_per_km).any(axis=0))
         if not self._open.any():
-            raise ValueError(
+            raise SeawayError(
                 f"class {self.ice_class} may go nowhere in any chart of the season from "
                 f"{self.departure} on; try a stronger class or other speeds"
             )
@@ -85,7 +86,7 @@ class IceSeasonTime(CostModel):
 
     def engine(self, prepared: Prepared) -> _core.IceSeasonModel | _core.IceWeatherModel:
         if prepared.chart.shape != self.season.shape:
-            raise ValueError(
+            raise ChartError(
                 f"the season's charts have {self.season.shape} pixels but the chart "
                 f"{prepared.chart.shape}: route on the season's grid "
                 "(seaway.icenav.season.SeasonGrid.prepare)"
@@ -104,7 +105,7 @@ class IceSeasonTime(CostModel):
                 else "it may use no pixel of the chart"
             )
             ice = describer(self.season.ds.isel(time=-1), self.fast_ice)(*rc)
-            raise ValueError(
+            raise SeawayError(
                 f"{name} {describe(prepared.chart, rc)} is in ice class {self.ice_class} "
                 f"may not enter in any chart from {self.departure} on (last chart: {ice}); "
                 f"{near}"
@@ -188,7 +189,7 @@ class IceWeatherTime(IceSeasonTime):
             season, ice_class, vessel.speed_kn, departure=forecast.departure, speed=speed, **speed_options
         )
         if forecast.shape != self.season.shape:
-            raise ValueError(
+            raise ForecastError(
                 f"the forecast has {forecast.shape} pixels but the season's charts "
                 f"{self.season.shape}: put it on their grid first "
                 "(seaway.weather.projected.on_grid)"

@@ -19,6 +19,7 @@ import numpy as np
 
 from ..base import sphere as geo
 from ..base.files import replace_atomically, write_all, write_atomically  # noqa: F401 - part of this API
+from ..errors import SeawayError
 from ..result.environment import CATEGORICAL, STAGES, Category, extreme_name
 from ..result.schedule import dated_schedule, iso, schedule
 from .header import describe, header_lines, wrap180
@@ -81,7 +82,7 @@ def _split_antimeridian(lat, lon):
 def geojson(route, antimeridian: str = "split", speed_kn=None) -> dict:
     """A GeoJSON Feature of the route with its summary as properties."""
     if antimeridian not in ("split", "continuous"):
-        raise ValueError(f"antimeridian must be 'split' or 'continuous', got {antimeridian!r}")
+        raise SeawayError(f"antimeridian must be 'split' or 'continuous', got {antimeridian!r}")
     feature = route.to_geojson()
     props = feature["properties"]
     for k, v in route.summary(speed_kn).items():
@@ -187,7 +188,7 @@ def render(route, fmt: str, speed_kn=None, **map_options) -> str:
         "html": lambda: html_text(route, speed_kn=speed_kn, **map_options),
     }
     if fmt not in makers:
-        raise ValueError(f"fmt must be one of {sorted(makers)}, got {fmt!r}")
+        raise SeawayError(f"fmt must be one of {sorted(makers)}, got {fmt!r}")
     return makers[fmt]()
 
 
@@ -195,7 +196,7 @@ def format_of(path) -> str:
     """The format an output path's extension names; ValueError naming the extensions otherwise."""
     fmt = FORMATS.get(os.path.splitext(os.fspath(path))[1].lower())
     if fmt is None:
-        raise ValueError(
+        raise SeawayError(
             f"cannot tell the format of {os.fspath(path)!r}: use one of the extensions "
             f"{', '.join(sorted(FORMATS))}"
         )

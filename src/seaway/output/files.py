@@ -9,6 +9,7 @@ import importlib.util
 import os
 
 from ..base.files import check_output, write_all
+from ..errors import SeawayError
 from . import export
 from .plot import route_png
 
@@ -28,14 +29,14 @@ def check_outputs(outs, plot) -> list:
     for path, _ in planned:
         key = os.path.realpath(path)
         if key in seen:
-            raise ValueError(
+            raise SeawayError(
                 f"{path} is given twice ({seen[key]} and {path}); each output needs its own file"
             )
         seen[key] = path
     for path, fmt in planned:
         missing = [m for m in NEEDS.get(fmt, ()) if importlib.util.find_spec(m) is None]
         if missing:
-            raise ValueError(
+            raise SeawayError(
                 f'{path}: writing {fmt.upper()} needs {", ".join(missing)}: pip install "seaway[plot]"'
             )
     return planned

@@ -16,6 +16,7 @@ import numpy as np
 from ..base.files import write_all
 from ..base.units import KM_PER_NM
 from ..chart.raster import as_chart
+from ..errors import SeawayError
 from ..ice.colours import classes
 from ..result.environment import least_depth
 from .mapframe import MapFrame
@@ -58,7 +59,7 @@ def route_png(
 
     chart = route.chart
     if route.latlon is not None:
-        raise ValueError(
+        raise SeawayError(
             "a corridor route's chart is in (row, layer) space; plot it with seaway.corridor.plot_corridor"
         )
     m = MapFrame(chart, size, route)

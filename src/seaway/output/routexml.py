@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
+from ..errors import SeawayError
 from ..result.schedule import Schedule, dated_schedule, iso, schedule
 from .header import describe, wrap180
 
@@ -89,7 +90,7 @@ def _rtz_schedule(root, route, legs, timed: Schedule) -> None:
 
 def _need_latlon(route, what):
     if not route.geographic:
-        raise ValueError(
+        raise SeawayError(
             f"{what} needs latitudes and longitudes; this route is on a planar chart "
             "(give the chart lat/lon coordinates, or export GeoJSON or CSV)"
         )

@@ -8,6 +8,7 @@ import textwrap
 import numpy as np
 
 from ..base.sphere import unwrap_lon
+from ..errors import ChartError
 from ..ice.colours import guess_code
 
 ROUTE_COLOUR = "#ff00ff"  # magenta, outlined in black: absent from the WMO colours and the greys
@@ -84,7 +85,7 @@ def ice_layer(route, ice, code):
         ice = ice.transpose(*route.chart.template.dims)
     ice = np.asarray(getattr(ice, "values", ice), float)
     if ice.shape != route.chart.shape:
-        raise ValueError(
+        raise ChartError(
             f"ice has shape {ice.shape} but the chart has {route.chart.shape}; give "
             "the ice raster on the chart's grid"
         )

@@ -17,6 +17,7 @@ import numpy as np
 
 from ..base import sphere as geo
 from ..base.files import write_atomically
+from ..errors import SeawayError
 from ..ice.colours import classes, guess_code
 from ..result.environment import least_depth
 from .leaflet import inline_leaflet, legend_control, popup_element
@@ -119,7 +120,7 @@ def explore(route, *, ice=None, code=None, speed_kn=None, zoom_start=None, shoal
     environment). speed_kn: for the legs' times (default the route's)."""
     folium = _folium()
     if not route.geographic or route.latlon is not None:
-        raise ValueError(
+        raise SeawayError(
             "an interactive map needs a route on a lat/lon chart (not a planar or "
             "corridor chart); use seaway.plot.plot_route for a PNG"
         )

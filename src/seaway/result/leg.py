@@ -9,6 +9,7 @@ import numpy as np
 
 from ..base import sphere as geo
 from ..base.validate import number
+from ..errors import SeawayError
 from .environment import along
 from .schedule import schedule
 from .timing import step_times
@@ -45,7 +46,7 @@ def route_legs(route, speed_kn: float | None = None) -> list[Leg]:
     ice = route.ice_speed if route.geographic else None
     if ice is not None:  # times from the speed in the ice (seaway.result.timing)
         if speed is not None and speed != ice.v0_kn:
-            raise ValueError(
+            raise SeawayError(
                 f"the route's speeds in ice are for {ice.v0_kn:g} kn in open water, "
                 f"not {speed:g} kn; make them again with with_ice_speed"
             )

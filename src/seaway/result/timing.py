@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..base.units import KM_PER_NM
+from ..errors import ChartError
 from .environment import route_samples
 
 
@@ -35,13 +36,13 @@ class SpeedField:
             arr = arr.transpose(*template.dims)
         values = np.asarray(getattr(arr, "values", arr), float)
         if values.shape != chart.shape:
-            raise ValueError(f"the speed has shape {values.shape}, the chart {chart.shape}")
+            raise ChartError(f"the speed has shape {values.shape}, the chart {chart.shape}")
         attrs = getattr(knots, "attrs", {})
         v0 = float(attrs.get("v0_kn", np.nanmax(values)))
         if escorted is not None:
             escorted = np.asarray(getattr(escorted, "values", escorted), bool)
             if escorted.shape != chart.shape:
-                raise ValueError(f"the escort mask has shape {escorted.shape}, the chart {chart.shape}")
+                raise ChartError(f"the escort mask has shape {escorted.shape}, the chart {chart.shape}")
         return cls(values, model or str(attrs.get("model", "speed field")), v0, escorted)
 
 

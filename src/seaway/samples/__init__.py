@@ -52,7 +52,7 @@ ICE_CLASS_ALIASES = {n: c.rs_class for n, c in ice_classes.CLASSES.items() if n 
 def _grid(shape):
     rows, cols = (int(n) for n in shape)
     if rows < 2 or cols < 2:
-        raise ValueError(f"shape must be (rows, cols) with at least 2 of each, got {shape!r}")
+        raise SeawayError(f"shape must be (rows, cols) with at least 2 of each, got {shape!r}")
     e = KARA_EXTENT
     dlat = (e["lat_north"] - e["lat_south"]) / rows
     dlon = (e["lon_east"] - e["lon_west"]) / cols
@@ -230,7 +230,7 @@ def kara_sea(shape=(1900, 2300)):
     Example: ``ds = kara_sea(); u = ice_impact(ds.stage_of_development, "Arc7");
     seaway.route(u, (70.3, 58.5), (77.7, 103.99))``"""
     if isinstance(shape, (int, np.integer)) or len(shape) != 2:
-        raise ValueError(f"shape must be (rows, cols), got {shape!r}")
+        raise SeawayError(f"shape must be (rows, cols), got {shape!r}")
     _fits(shape, KARA + ROUTE, "the synthetic Kara Sea")
     _grid(shape)
     return _kara_sea(tuple(int(n) for n in shape)).copy(deep=True)
@@ -254,11 +254,11 @@ def kara_season(days=7, start="2026-07-01", melt_m_per_day=0.1, melted_m=0.5, sh
     import xarray as xr
 
     if not (isinstance(days, (int, np.integer)) and days >= 1):
-        raise ValueError(f"days must be a whole number of days >= 1, got {days!r}")
+        raise SeawayError(f"days must be a whole number of days >= 1, got {days!r}")
     if not (np.isfinite(melt_m_per_day) and melt_m_per_day >= 0):
-        raise ValueError(f"melt_m_per_day must be >= 0 (m of ice a day), got {melt_m_per_day!r}")
+        raise SeawayError(f"melt_m_per_day must be >= 0 (m of ice a day), got {melt_m_per_day!r}")
     if isinstance(shape, (int, np.integer)) or len(shape) != 2:
-        raise ValueError(f"shape must be (rows, cols), got {shape!r}")
+        raise SeawayError(f"shape must be (rows, cols), got {shape!r}")
     _fits(
         shape,
         KARA + KARA_DAY * days + ROUTE,

@@ -17,6 +17,7 @@ import numpy as np
 import numpy.typing as npt
 
 from ..base.fields import resample, smooth_noise
+from ..errors import SeawayError
 
 Floats = npt.NDArray[np.float64]
 
@@ -24,7 +25,7 @@ Floats = npt.NDArray[np.float64]
 def _check(shape: tuple[int, int], least: int) -> tuple[int, int]:
     rows, cols = (int(n) for n in shape)
     if rows < least or cols < least:
-        raise ValueError(f"shape must be at least ({least}, {least}), got {shape!r}")
+        raise SeawayError(f"shape must be at least ({least}, {least}), got {shape!r}")
     return rows, cols
 
 
@@ -99,7 +100,7 @@ def maze(shape: tuple[int, int] = (1200, 1200), cell: int = 12, wall: int = 4, s
     the channels join the cells nearest the corners."""
     rows, cols = _check(shape, 3 * cell)
     if not 0 < wall < cell - 2:
-        raise ValueError(f"wall must be from 1 to cell - 3 pixels, got {wall} (cell {cell})")
+        raise SeawayError(f"wall must be from 1 to cell - 3 pixels, got {wall} (cell {cell})")
     rng = np.random.default_rng(seed)
     nr, nc = rows // cell, cols // cell
     water = np.zeros((rows, cols), bool)

@@ -27,11 +27,11 @@ def synthetic_sea(shape=(1900, 2300), land_fraction=0.3, seed=0):
     (open water 1-2). A winding channel keeps synthetic_endpoints(shape) connected by water."""
     rows, cols = (int(n) for n in shape)
     if rows < 20 or cols < 20:
-        raise ValueError(f"shape must be at least (20, 20), got {shape!r}")
+        raise SeawayError(f"shape must be at least (20, 20), got {shape!r}")
     check_shape(rows, cols, SYNTHETIC + SEARCH, "the synthetic sea", "give a smaller shape", SeawayError)
     number(land_fraction, "land_fraction", minimum=0, maximum=0.9, what="a number in [0, 0.9)")
     if land_fraction == 0.9:
-        raise ValueError("land_fraction must be a number in [0, 0.9), got 0.9")
+        raise SeawayError("land_fraction must be a number in [0, 0.9), got 0.9")
     rng = np.random.default_rng(seed)
     coarse = (max(rows // 8, 20), max(cols // 8, 20))
     cy, cx = np.mgrid[0 : coarse[0], 0 : coarse[1]] / np.array(coarse).reshape(2, 1, 1)

@@ -60,7 +60,7 @@ def read_chart(path, options: ChartOptions, vessel=None, ends=None) -> OpenChart
                 ds, kind = sigrid_chart(path, options.grid, ends, notes), "SIGRID-3 chart"
             else:
                 formats = f"NetCDF ({', '.join(NETCDF)}), GeoTIFF ({', '.join(GEOTIFF)}) or SIGRID-3 ({', '.join(SIGRID)})"
-                ds, kind = open_netcdf(path, f"charts are {formats}"), "NetCDF chart"
+                ds, kind = open_netcdf(path, f"charts are {formats}", ChartError), "NetCDF chart"
         except ChartError:
             raise
         except ValueError as exc:
@@ -230,7 +230,7 @@ def _geotiff(path, options, vessel) -> OpenChart:
     variable = options.variable
     band = int(variable) if variable and str(variable).isdigit() else 1
     try:
-        da = read_geotiff(path, band)
+        da = read_geotiff(path, band, ChartError)
     except ValueError as exc:
         raise ChartError(str(exc)) from None
     da.name = "cost"

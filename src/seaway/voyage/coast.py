@@ -78,9 +78,9 @@ def _raster(path):
     """(lookup (lat, lon) -> land, its cells' size in degrees of latitude and longitude) of a land
     mask on a regular lat/lon grid."""
     if path.lower().endswith((".tif", ".tiff")):
-        da = read_geotiff(path)
+        da = read_geotiff(path, error=ChartError)
     else:
-        ds = open_netcdf(path, "a land mask is NetCDF or GeoTIFF on a lat/lon grid, 1 = land")
+        ds = open_netcdf(path, "a land mask is NetCDF or GeoTIFF on a lat/lon grid, 1 = land", ChartError)
         name = "land" if "land" in ds else next((n for n, v in ds.data_vars.items() if v.ndim == 2), None)
         if name is None:
             raise ChartError(f"{path}: no 2-D variable to read as land (name it `land`, 1 = land)")

@@ -15,6 +15,7 @@ from ..depth import (
     open_bathymetry,
     too_shallow,
 )
+from ..errors import SeawayError
 
 
 def read_depth(path, like, *, variable=None, positive=None, crs=None):
@@ -32,13 +33,13 @@ def with_draft(cost, depth, draft=None, ukc=None, say=None):
     say = say or (lambda message: None)
     if depth is None:
         if draft is not None or ukc is not None:
-            raise ValueError(
+            raise SeawayError(
                 "--draft and --ukc need --depth FILE (a bathymetry raster, NetCDF or GeoTIFF, e.g. ETOPO or GEBCO)"
             )
         return cost, None
     if draft is None:
         if ukc is not None:
-            raise ValueError("--ukc needs --draft M (the ship's draft in metres)")
+            raise SeawayError("--ukc needs --draft M (the ship's draft in metres)")
         say("no --draft: the least depth is reported, not enforced")
         return cost, None
     draft, ukc = check_draft(draft, ukc)

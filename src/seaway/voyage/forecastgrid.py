@@ -42,7 +42,7 @@ def latlon_axes(ds, source="the forecast"):
     dims = tuple(d for d in field.dims if d != "time") if field is not None else ()
     if "lat" in role and "lon" in role and set(dims) == {role["lat"], role["lon"]}:
         return ds[role["lat"]].values, ds[role["lon"]].values
-    raise ValueError(
+    raise ForecastError(
         f"{source}: {field.name if field is not None else 'its fields'} lies on the axes {dims}, "
         "neither a regular lat/lon grid nor a projected one seaway can resample (1-D "
         "projection_x/y_coordinate axes and a grid mapping): give its axes those CF standard "

@@ -15,6 +15,7 @@ import numpy as np
 
 from ..base.units import km_per
 from ..chart.cf import coord_role, grid_mapping_crs
+from ..errors import ChartError, SeawayError
 
 
 @dataclass
@@ -55,7 +56,7 @@ def find_projection(ds, da) -> Projection | None:
     try:
         return Projection(*grid_mapping_crs(ds, name, str(da.name)))
     except ImportError as exc:
-        raise ValueError(str(exc)) from None
+        raise ChartError(str(exc)) from None
 
 
 def in_km(da):
@@ -66,7 +67,7 @@ def in_km(da):
     for c in (y, x):
         scale = km_per(c.attrs.get("units"))
         if scale is None:
-            raise ValueError(
+            raise ChartError(
                 f"{da.name}: the projected coordinate {c.name} has units {c.attrs.get('units')!r}; give metres or km"
             )
         out.append(np.asarray(c.values, float) * scale)
@@ -88,7 +89,7 @@ def end_pixel(da_km, proj: Projection, p, name: str) -> tuple[int, int]:
     if not (-0.5 <= r <= rows - 0.5 and -0.5 <= c <= cols - 0.5):
         corners = proj.to_latlon([ys[0], ys[0], ys[-1], ys[-1]], [xs[0], xs[-1], xs[0], xs[-1]])
         box = ", ".join(f"{a:.2f},{b:.2f}" for a, b in corners)
-        raise ValueError(
+        raise SeawayError(
             f"{name} {p[0]:g},{p[1]:g} lies outside the chart (its corners are at "
             f"{box} lat,lon); give a point on the chart"
         )
@@ -123,7 +124,7 @@ def project_chart(out, ds, source) -> None:
         out.land = None if out.land is None else in_km(out.land.astype(bool))
         out.environment = {k: in_km(v) for k, v in out.environment.items()}
     except (ValueError, KeyError, TypeError) as exc:
-        raise ValueError(f"{source.name}: {exc}") from None
+        raise ChartError(f"{source.name}: {exc}") from None
     out.projection = proj
     _check_latlon(out, source, proj)
     out.notes.append(

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..base.units import KM_PER_NM
+from ..errors import ChartError, SeawayError
 from ..ice.andreeva import DEFAULT_STAGE_THICKNESS
 from ..ice.classes import get_class
 from ..ice.speed import ice_speed, thickness
@@ -74,7 +75,7 @@ def ice_time(
     if chart.land is not None:
         passable &= ~np.asarray(chart.land.values, bool)
     if own.shape != passable.shape:  # a projected chart's speed on its native grid: transposed?
-        raise ValueError(f"the speed in ice has shape {own.shape}, the chart {passable.shape}")
+        raise ChartError(f"the speed in ice has shape {own.shape}, the chart {passable.shape}")
     stuck = passable & ~(own > 0)
     model = str(knots.attrs["model"])
     h, _ = thickness(chart.layers, chart.options.fast_ice, rule)
@@ -88,7 +89,7 @@ def ice_time(
     if escort:
         kn = float(DEFAULT_ESCORT_KN if escort_kn is None else escort_kn)
         if not (np.isfinite(kn) and kn > 0):
-            raise ValueError(f"the escort speed must be a positive number of knots, got {escort_kn!r}")
+            raise SeawayError(f"the escort speed must be a positive number of knots, got {escort_kn!r}")
         # the escort wherever the ship alone is slower: thicker ice is never quicker than thinner
         escorted = passable & (own < kn)
         speed = np.where(escorted, kn, own)

@@ -8,6 +8,7 @@ import warnings
 
 import numpy as np
 
+from ..errors import ChartError
 from ..ice.grids import latlon_grid
 from ..ice.routegrid import route_grid
 from ..ice.sigrid import read_sigrid3
@@ -20,7 +21,7 @@ def sigrid_chart(path, grid, ends=None, notes=None):
     try:
         import pyogrio
     except ImportError as exc:
-        raise ValueError(
+        raise ChartError(
             f'{path}: reading SIGRID-3 charts needs the [ice] extra ({exc}): pip install "seaway[ice]"'
         ) from None
     # a directory, an empty file, a shapefile without .dbf/.shx or with a broken .prj: ValueError
@@ -33,7 +34,7 @@ def sigrid_chart(path, grid, ends=None, notes=None):
                 warnings.simplefilter("ignore")
                 info = pyogrio.read_info(path)
         except Exception as exc:  # pyogrio's DataSourceError, ...
-            raise ValueError(
+            raise ChartError(
                 f"{path}: cannot read it as a SIGRID-3 vector file ({one_line(str(exc))})"
             ) from None
     if grid is None and ends is not None:
@@ -41,14 +42,14 @@ def sigrid_chart(path, grid, ends=None, notes=None):
         try:
             target, note = route_grid(*ends, chart_bounds=box if in_degrees(info) else None)
         except ValueError as exc:
-            raise ValueError(f"{path}: {exc}") from None
+            raise ChartError(f"{path}: {exc}") from None
         if notes is not None:
             notes.append(note)
         return _said(read_sigrid3(path, target), notes)
     if grid is None:
         west, south, east, north = info["total_bounds"]
         if not (-180 <= west <= east <= 360 and -90 <= south <= north <= 90):
-            raise ValueError(
+            raise ChartError(
                 f"{path}: the chart is not in degrees ({info['crs']}); give the lat/lon "
                 "grid to rasterise onto with --grid SOUTH,NORTH,WEST,EAST,RES"
             )

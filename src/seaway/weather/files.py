@@ -23,6 +23,7 @@ import numpy as np
 import xarray as xr
 
 from ..chart.roles import CDO_CODES
+from ..errors import ForecastError
 from .forecast import ROLES, check_roles, grib_times, read_forecast
 from .projected import on_grid  # noqa: F401 - its old home; seaway.weather.projected now
 from .roles import as_roles, pick
@@ -67,7 +68,7 @@ def decode_time(ds: xr.Dataset, source: str = "the forecast") -> xr.Dataset:
     if "time" not in ds.dims and ds["time"].ndim == 0:
         ds = ds.expand_dims("time")
     if ds["time"].ndim != 1:
-        raise ValueError(f"{source}: its time variable {name!r} is not one axis ({ds['time'].dims})")
+        raise ForecastError(f"{source}: its time variable {name!r} is not one axis ({ds['time'].dims})")
     return ds
 
 
@@ -83,7 +84,7 @@ def _decode(t, source) -> np.ndarray:
         f"ncatted -a units,{t.name},o,c,'hours since ...')"
     )
     if calendar not in ("standard", "gregorian", "proleptic_gregorian"):
-        raise ValueError(
+        raise ForecastError(
             f"{source}: its time variable {t.name!r} is in the {calendar!r} calendar; "
             "seaway needs real dates (standard or proleptic_gregorian calendar)"
         )
@@ -91,7 +92,7 @@ def _decode(t, source) -> np.ndarray:
     if _CDO_ABSOLUTE.match(units):  # CDO's absolute axis: YYYYMMDD plus the fraction of the day
         v = values.astype(np.float64)
         if not np.all(np.isfinite(v)):
-            raise ValueError(f"{source}: its time variable {t.name!r} has missing values")
+            raise ForecastError(f"{source}: its time variable {t.name!r} has missing values")
         day = np.floor(v).astype(np.int64)
         try:
             dates = np.array(
@@ -99,7 +100,7 @@ def _decode(t, source) -> np.ndarray:
                 "datetime64[s]",
             ).reshape(day.shape)
         except ValueError:
-            raise ValueError(
+            raise ForecastError(
                 f"{source}: its time variable {t.name!r} ({units!r}) holds "
                 f"{v.ravel()[0]!r}, not a date YYYYMMDD.fraction; {fix}"
             ) from None
@@ -109,12 +110,12 @@ def _decode(t, source) -> np.ndarray:
         try:
             out = xr.coding.times.decode_cf_datetime(values, units, calendar)
         except Exception as exc:  # xarray raises several types for unparsable units
-            raise ValueError(
+            raise ForecastError(
                 f"{source}: cannot decode its time variable {t.name!r} ({units!r}: {exc}); {fix}"
             ) from None
         if np.issubdtype(np.asarray(out).dtype, np.datetime64):
             return np.asarray(out, "datetime64[ns]")
-    raise ValueError(f"{source}: cannot decode its time variable {t.name!r} (units {units!r}): {fix}")
+    raise ForecastError(f"{source}: cannot decode its time variable {t.name!r} (units {units!r}): {fix}")
 
 
 def read_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, list[str]]:
@@ -127,14 +128,14 @@ def read_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, li
         for p in ([paths] if isinstance(paths, (str, bytes)) or hasattr(paths, "__fspath__") else paths)
     ]
     if not paths:
-        raise ValueError("give at least one forecast file")
+        raise ForecastError("give at least one forecast file")
     wanted = check_roles(variables)
     parts, notes, found = [], [], {}
     for path in paths:
         ds = decode_time(_open_grib(path) if _grib(path) else read_forecast(path, decode_times=False), path)
         fields = pick(ds, wanted, found)
         if not fields:
-            raise ValueError(
+            raise ForecastError(
                 f"{path}: no forecast field seaway knows (variables "
                 f"{sorted(map(str, ds.data_vars))}); mark them with CF standard names "
                 "or map them to roles with --forecast-variable ROLE=NAME (roles: "
@@ -148,7 +149,7 @@ def read_forecasts(paths, variables: dict | None = None) -> tuple[xr.Dataset, li
     missing = {r: n for r, n in wanted.items() if r not in found}
     if missing:
         role, name = next(iter(missing.items()))
-        raise ValueError(
+        raise ForecastError(
             f"no forecast file has a variable {name!r} for {role}; the files have "
             + "; ".join(f"{p}: {sorted(map(str, d.data_vars))}" for p, d in parts)
         )
@@ -169,9 +170,9 @@ def _open_grib(path: str) -> xr.Dataset:
             warnings.simplefilter("ignore", FutureWarning)
             parts = cfgrib.open_datasets(path, backend_kwargs={"indexpath": ""})
     except Exception as exc:  # eccodes and cfgrib raise many types
-        raise ValueError(f"{path}: cannot read it as GRIB ({exc})") from None
+        raise ForecastError(f"{path}: cannot read it as GRIB ({exc})") from None
     if not parts:
-        raise ValueError(f"{path}: the GRIB file holds no field")
+        raise ForecastError(f"{path}: the GRIB file holds no field")
     keep = {"time", "step", "valid_time"}
     parts = [d.drop_vars([c for c in d.coords if c not in d.dims and c not in keep]) for d in parts]
     return xr.merge(parts, compat="override", join="outer")
@@ -196,7 +197,7 @@ def _merge(parts, notes) -> xr.Dataset:
         spans = [_span(d) for _, d in timed]
         start, stop = max(s[0] for s in spans), min(s[1] for s in spans)
         if start > stop:
-            raise ValueError(
+            raise ForecastError(
                 "the forecast files share no time: "
                 + "; ".join(f"{p}: {s[0]} to {s[1]}" for (p, _), s in zip(timed, spans))
             )

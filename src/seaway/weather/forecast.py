@@ -13,6 +13,7 @@ from ..base.files import open_netcdf
 from ..base.units import metres_per
 from ..chart.cf import GRID_VECTORS, grid_mapping_crs  # noqa: F401 - part of this API
 from ..chart.roles import ALIASES, GRIB_NAMES, ROLES, STANDARD_NAMES  # noqa: F401 - part of this API
+from ..errors import ForecastError
 
 
 def check_roles(variables: dict | None) -> dict:
@@ -25,7 +26,7 @@ def check_roles(variables: dict | None) -> dict:
                 iter(difflib.get_close_matches(str(role), ROLES, n=1)), None
             )
             hint = f" (did you mean {near}?)" if near else ""
-            raise ValueError(f"unknown forecast role {role!r}{hint}; the roles are {', '.join(ROLES)}")
+            raise ForecastError(f"unknown forecast role {role!r}{hint}; the roles are {', '.join(ROLES)}")
     return out
 
 
@@ -50,7 +51,7 @@ def find_fields(ds, variables: dict | None = None) -> dict:
     out = {}
     for role, name in variables.items():
         if name not in ds:
-            raise ValueError(
+            raise ForecastError(
                 f"the forecast has no variable {name!r} for {role}; it has {sorted(map(str, ds.data_vars))}"
             )
         out[role] = ds[name]
@@ -59,7 +60,7 @@ def find_fields(ds, variables: dict | None = None) -> dict:
         if hit and hit[0] not in out and hit[0] not in variables:
             out[hit[0]] = var
     if ("current_east" in out) != ("current_north" in out):
-        raise ValueError(
+        raise ForecastError(
             "the forecast has only one current component; give both "
             "eastward_sea_water_velocity and northward_sea_water_velocity"
         )
@@ -77,7 +78,7 @@ def read_forecast(path, **kwargs) -> xr.Dataset:
                 f'{path}: reading GRIB needs cfgrib: pip install "seaway[grib]" (cfgrib and eccodes)'
             ) from None
         return grib_times(xr.open_dataset(path, engine="cfgrib", **kwargs), path)
-    return open_netcdf(path, "a forecast is CF NetCDF (or GRIB through cfgrib)", **kwargs)
+    return open_netcdf(path, "a forecast is CF NetCDF (or GRIB through cfgrib)", ForecastError, **kwargs)
 
 
 def grib_times(ds: xr.Dataset, path="the GRIB forecast") -> xr.Dataset:
@@ -87,7 +88,7 @@ def grib_times(ds: xr.Dataset, path="the GRIB forecast") -> xr.Dataset:
     if "step" not in ds.dims:
         return ds
     if "time" in ds.dims:
-        raise ValueError(
+        raise ForecastError(
             f"{path} holds {ds.sizes['time']} analyses of {ds.sizes['step']} steps; "
             f"route on one: seaway.weather.grib_times(xr.open_dataset("
             f"path, engine='cfgrib').isel(time=0))"
@@ -100,7 +101,7 @@ def _axis(ds, name):
     for c in ds.coords.values():
         if c.ndim == 1 and c.attrs.get("standard_name") == name:
             return c
-    raise ValueError(f"the forecast has no 1-D coordinate with standard_name {name!r}")
+    raise ForecastError(f"the forecast has no 1-D coordinate with standard_name {name!r}")
 
 
 def grid_crs(ds: xr.Dataset, crs=None):
@@ -118,11 +119,11 @@ def grid_crs(ds: xr.Dataset, crs=None):
             None,
         )
         if name is None:
-            raise ValueError("the forecast names no grid mapping; pass crs=")
+            raise ForecastError("the forecast names no grid mapping; pass crs=")
         crs = grid_mapping_crs(ds, name, "the forecast")[0]
     scale = metres_per(x_ax.attrs.get("units") or "m")
     if scale is None:
-        raise ValueError(
+        raise ForecastError(
             f"the forecast's projection_x_coordinate is in {x_ax.attrs.get('units')!r}: give a length (m or km)"
         )
     return pyproj.CRS.from_user_input(crs), x_ax, y_ax, scale

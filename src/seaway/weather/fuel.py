@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..engine.methods import heuristic_weight
-from ..errors import NoRouteError
+from ..errors import NoRouteError, SeawayError
 from ..models import Fuel
 from ..result.route import Route
 from ..vessel import Vessel
@@ -33,15 +33,15 @@ class FuelCurve:
     def __post_init__(self):
         v, q = np.asarray(self.speeds_kn, float), np.asarray(self.rates_t_per_h, float)
         if v.ndim != 1 or v.size == 0 or v.shape != q.shape:
-            raise ValueError("give one fuel rate per engine setting (two 1-D sequences of one length)")
+            raise SeawayError("give one fuel rate per engine setting (two 1-D sequences of one length)")
         if not (np.all(v > 0) and np.all(q >= 0) and np.all(np.isfinite(v)) and np.all(np.isfinite(q))):
-            raise ValueError("speeds must be positive and fuel rates non-negative, all finite")
+            raise SeawayError("speeds must be positive and fuel rates non-negative, all finite")
 
     @classmethod
     def cubic(cls, ref_speed_kn, ref_rate_t_per_h, vmin_kn, vmax_kn, step_kn=1.0) -> "FuelCurve":
         """q(v) = q_ref (v / v_ref)^3 (propeller law) at settings vmin, vmin + step, ..., vmax."""
         if not 0 < vmin_kn <= vmax_kn:
-            raise ValueError(f"need 0 < vmin <= vmax, got {vmin_kn}, {vmax_kn}")
+            raise SeawayError(f"need 0 < vmin <= vmax, got {vmin_kn}, {vmax_kn}")
         v = np.arange(vmin_kn, vmax_kn + 1e-9, step_kn)
         return cls(tuple(v), tuple(ref_rate_t_per_h * (v / ref_speed_kn) ** 3))
 

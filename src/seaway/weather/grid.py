@@ -12,6 +12,7 @@ from ..chart.roles import ICE_ROLES
 from ..constraints import hard_only
 from ..engine.methods import check_options
 from ..engine.prepared import PreparedChart
+from ..errors import ForecastError, SeawayError
 from ..models.base import EdgeCost
 from ..vessel import Vessel
 from .files import decode_time, unknown_fields_hint
@@ -24,7 +25,7 @@ def _departure(departure, t, persist) -> tuple[np.datetime64, list[str]]:
     try:
         dep = t[0] if departure is None else np.datetime64(departure, "ns")
     except (TypeError, ValueError):
-        raise ValueError(
+        raise SeawayError(
             f"departure must be a time such as '2026-09-15T06:00' (ISO 8601) or a "
             f"datetime64, got {departure!r}"
         ) from None
@@ -34,7 +35,7 @@ def _departure(departure, t, persist) -> tuple[np.datetime64, list[str]]:
     gap = abs(dep - (t[0] if dep < t[0] else t[-1])) / np.timedelta64(1, "h")
     span = f"{_iso(t[0])} to {_iso(t[-1])}"
     if not persist:
-        raise ValueError(
+        raise ForecastError(
             f"departure {_iso(dep)} is {gap:g} h {side} (the forecast covers {span}): "
             "the weather then is unknown; depart within the forecast, give a forecast "
             "that covers the departure, or pass --persist (persist=True) to hold its "
@@ -63,7 +64,7 @@ def _time_axis(ds, departure):
     hours = (t - t[0]) / np.timedelta64(1, "h")
     step = float(hours[1] - hours[0])
     if step <= 0 or np.max(np.abs(np.diff(hours) - step)) > 1e-6:
-        raise ValueError(
+        raise ForecastError(
             "forecast times must be regularly spaced and increasing; "
             "resample it, e.g. ds.resample(time='6h').interpolate()"
         )
@@ -77,14 +78,14 @@ PLAUSIBLE_MAX = 1e6
 def _frames(field, chart_dims, frames) -> np.ndarray:
     dims = (("time",) if "time" in field.dims else ()) + chart_dims
     if set(field.dims) != set(dims):
-        raise ValueError(f"forecast field {field.name!r} has dims {field.dims}; expected {dims}")
+        raise ForecastError(f"forecast field {field.name!r} has dims {field.dims}; expected {dims}")
     raw = np.asarray(field.transpose(*dims).values)
     if not np.issubdtype(raw.dtype, np.number) or np.iscomplexobj(raw):
-        raise ValueError(f"forecast field {field.name!r} must hold real numbers, got dtype {raw.dtype}")
+        raise ForecastError(f"forecast field {field.name!r} must hold real numbers, got dtype {raw.dtype}")
     with np.errstate(invalid="ignore"):
         bad = np.abs(raw) > PLAUSIBLE_MAX
     if bad.any():  # (a float32 cast would overflow, or warn: no forecast field holds such values)
-        raise ValueError(
+        raise ForecastError(
             f"forecast field {field.name!r} holds {int(bad.sum())} values no forecast has (e.g. "
             f"{raw.flat[int(np.argmax(bad))]!r}; any field's magnitude stays below {PLAUSIBLE_MAX:g}): "
             "the file is damaged, or the field is in other units; fetch it again"
@@ -113,13 +114,13 @@ class ForecastGrid:
         #: priced by the ice models (seaway.voyage.forecastice), left out of the arrays here.
         self.ice = {r: fields.pop(r) for r in ICE_ROLES if r in fields}
         if not fields and self.ice:
-            raise ValueError(
+            raise ForecastError(
                 "the forecast has only ice (sea-ice concentration or thickness) and no weather: "
                 "route through its ice as a season of charts (seaway.open_season), or add its currents, "
                 "winds or waves"
             )
         if not fields:
-            raise ValueError(
+            raise ForecastError(
                 "the forecast has no field seaway knows; mark them with CF standard "
                 f"names ({', '.join(n[0] for n in STANDARD_NAMES.values())}) or pass "
                 "variables={role: name}" + unknown_fields_hint(forecast)
@@ -158,7 +159,7 @@ class ForecastGrid:
             land = hard_only(km, keep_away, self.dry if land is None else (np.asarray(land, bool) | self.dry))
         chart = as_chart(km, land=self.dry if land is None else (np.asarray(land, bool) | self.dry))
         if not chart.geographic:
-            raise ValueError("weather routing needs a forecast on a lat/lon grid (coordinates lat/lon)")
+            raise ForecastError("weather routing needs a forecast on a lat/lon grid (coordinates lat/lon)")
         return PreparedChart.from_chart(chart, neighbourhood, "full", EdgeCost("max"))
 
     def describe(self) -> str:

@@ -11,6 +11,7 @@ import numpy as np
 import xarray as xr
 
 from ..chart.cf import GRID_VECTORS, coord_role
+from ..errors import ForecastError
 from .forecast import grid_crs, grid_xy, to_latlon
 
 _GRID_NAMES = {n for pair in GRID_VECTORS for n in pair}
@@ -35,7 +36,7 @@ def on_grid(ds: xr.Dataset, lat, lon, dims=("lat", "lon"), source="the forecast"
         return _from_projected(ds, lat, lon, dims, source, crs)
     role = {coord_role(str(n), c.attrs): str(n) for n, c in ds.coords.items() if c.ndim == 1}
     if "lat" not in role or "lon" not in role:
-        raise ValueError(
+        raise ForecastError(
             f"{source} is neither on a lat/lon grid nor on a projected one (its coordinates: "
             f"{sorted(map(str, ds.coords))}): give its axes the CF standard names latitude/"
             "longitude or projection_x/y_coordinate with a grid mapping, or resample it onto "
@@ -65,7 +66,7 @@ def _from_projected(ds, lat, lon, dims, source, crs):
     try:
         proj, x_ax, y_ax, _ = grid_crs(ds, crs)
     except ValueError:
-        raise ValueError(
+        raise ForecastError(
             f"{source} is on a projected grid but names no grid mapping (no variable's "
             "grid_mapping attribute names one): give its projection with --forecast-crs "
             "(crs= in the API), e.g. '+proj=stere +lat_0=90 +lat_ts=60 +lon_0=58 +R=6371000'"

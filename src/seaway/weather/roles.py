@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from ..chart.cf import GRID_PAIRS, grid_role
 from ..chart.roles import STANDARD_NAMES
+from ..errors import ForecastError
 from .forecast import role_of
 from .projected import is_projected
 
@@ -54,7 +55,7 @@ def as_roles(ds, fields: dict, path: str, notes: list):
                 if not _levels(v) and (hit(v) or ("",))[0] == role and v.ndim >= 2
             ]
             alt = f"map its surface field with --forecast-variable {role}={surface[0]}, " if surface else ""
-            raise ValueError(
+            raise ForecastError(
                 f"{path}: {name} ({role}) has a vertical axis {extra[0]!r} "
                 f"({var.sizes[extra[0]]} levels): seaway routes on surface fields; {alt}or cut "
                 f"one level first (e.g. ncks -d {extra[0]},0 or cdo sellevidx,1)"
@@ -65,7 +66,7 @@ def as_roles(ds, fields: dict, path: str, notes: list):
         (r1, (n1, d1)), (r2, (n2, d2)) = [
             next((r, v) for r, v in horizontal.items() if v[1] == g) for g in list(grids)[:2]
         ]
-        raise ValueError(
+        raise ForecastError(
             f"{path}: {n1} ({r1}) lies on the grid {d1} but {n2} ({r2}) on {d2}: the fields of "
             "one file must share one grid; move them onto one first (e.g. the model's A-grid "
             "output, or cdo remapbil), or give them as separate --forecast files"
@@ -82,7 +83,7 @@ def as_roles(ds, fields: dict, path: str, notes: list):
         std = ds[name].attrs.get("standard_name")
         g = grid_role(std)
         if g is not None and g[0] != role:
-            raise ValueError(
+            raise ForecastError(
                 f"{path}: {name} is the grid's {'y' if role.endswith('east') else 'x'} component "
                 f"({std}), not {role}: map the other component to {role}"
             )
@@ -107,7 +108,7 @@ def as_roles(ds, fields: dict, path: str, notes: list):
     for east, north in (("current_east", "current_north"), ("wind_east", "wind_north")):
         if east in relative and north in relative and relative[east] != relative[north] and projected:
             rel, earth = (east, north) if relative[east] else (north, east)
-            raise ValueError(
+            raise ForecastError(
                 f"{path}: {fields[rel][0]} ({rel}) is grid-relative but {fields[earth][0]} "
                 f"({earth}) is not: map both components of one vector (both x/y or both east/north)"
             )

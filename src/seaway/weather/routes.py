@@ -29,7 +29,7 @@ from ..base.sphere import rhumb_line_km  # noqa: F401 - part of this API
 from ..engine.api import prepare
 from ..engine.danger import least_danger_route
 from ..engine.methods import heuristic_weight
-from ..errors import NoRouteError
+from ..errors import ChartError, ForecastError, NoRouteError, SeawayError
 from ..ice.seasongrid import SeasonGrid
 from ..models import IceWeatherTime, TravelTime, WaveDanger
 from ..result.route import Route
@@ -86,7 +86,7 @@ def route_time(
     The same as ForecastGrid(forecast).prepare().route(start, end, model=TravelTime(...)).
     """
     if if_no_safe_route not in ("least_danger", "raise"):
-        raise ValueError(f"if_no_safe_route must be 'least_danger' or 'raise', got {if_no_safe_route!r}")
+        raise SeawayError(f"if_no_safe_route must be 'least_danger' or 'raise', got {if_no_safe_route!r}")
     heuristic_weight(method, None)
     fc = ForecastGrid(forecast, variables, departure, persist=persist, source=source)
     model = TravelTime(fc, vessel, zones=zones)
@@ -143,7 +143,7 @@ def route_ice_weather(
     t = grid.template
     lat, lon = (t[d].values for d in t.dims)
     if not prepare(grid, neighbourhood=neighbourhood).chart.geographic:
-        raise ValueError(
+        raise ChartError(
             "routing through ice and weather needs the ice charts on a lat/lon grid; "
             "move them onto one first (seaway.weather.to_latlon)"
         )
@@ -192,7 +192,7 @@ def replan(route: Route, hours: float, forecast, end, **kwargs) -> Route:
     with a newer `forecast`, leaving at that time. kwargs go to route_time()."""
     voyage = route.stats.voyage
     if voyage is None or voyage.departure is None:
-        raise ValueError("re-planning needs a route found through a forecast with a time axis")
+        raise ForecastError("re-planning needs a route found through a forecast with a time axis")
     i, here = position_at(route, hours)
     reached = float(np.sum(route.costs()[:i]))
     departure = voyage.departure + np.timedelta64(int(round(reached * 3.6e12)), "ns")
