@@ -18,6 +18,7 @@ from .stats import RouteStats
 from .summary import route_summary
 from .table import route_table
 from .timing import SpeedField
+from .waypoints import waypoint_list
 
 
 @dataclass(frozen=True)
@@ -238,8 +239,6 @@ class Route:
 
         Geographic charts give [lon, lat] positions with longitudes made continuous along the
         route (a route across the antimeridian runs past 180 rather than jumping back)."""
-        from .waypoints import waypoint_list
-
         props = {
             "cost": self.cost,
             "length": self.length,
