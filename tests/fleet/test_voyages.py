@@ -94,3 +94,22 @@ def test_bad_batches_are_refused(season):
         route_voyages(season, [])
     with pytest.raises(seaway.SeawayError, match="threads=0"):
         route_voyages(season, [SEA], threads=0)
+
+
+def test_a_static_chart_is_timed_by_each_vessels_ice_curve(tmp_path):
+    from seaway.vessel import load
+
+    retreating_edge(days=1).isel(time=0).to_netcdf(tmp_path / "day.nc")
+    chart = seaway.open_chart(str(tmp_path / "day.nc"))
+    lng = load("arc7-lng-carrier")
+    got = route_voyages(
+        chart, {"sea": SEA}, vessels={"lng": lng, "Arc4": "Arc4"}, departures=["2026-07-01T06"]
+    )
+    row, closed = got.iloc[0], got.iloc[1]
+    r = chart.route(*SEA, vessel=lng, depart="2026-07-01T06")
+    hours = sum(leg.time_h for leg in r.legs())
+    assert row.status == "ok" and row.hours == pytest.approx(hours, abs=1e-9) and 15 < hours < 25
+    assert np.datetime64(row.arrival, "s") == np.datetime64("2026-07-01T06") + np.timedelta64(
+        round(hours * 3600), "s"
+    )
+    assert (closed.status, closed.cause) == ("no route", "end closed by ice")
