@@ -113,3 +113,27 @@ def test_a_static_chart_is_timed_by_each_vessels_ice_curve(tmp_path):
         round(hours * 3600), "s"
     )
     assert (closed.status, closed.cause) == ("no route", "end closed by ice")
+
+
+def test_the_od_matrix_is_one_search_per_origin_and_each_pair_is_the_routes_hours(season, monkeypatch):
+    from seaway.fleet import od_matrix
+
+    ports = {"Ob": (71.0, 70.0), "north": (76.0, 74.0), "east": (72.0, 78.0)}
+    calls = []
+    field = type(season).arrival_field
+    monkeypatch.setattr(
+        type(season), "arrival_field", lambda self, *a, **k: calls.append(a) or field(self, *a, **k)
+    )
+    od = od_matrix(season, ports, vessel="Arc7", depart="2026-07-02")
+    assert len(calls) == 3 and od.attrs["units"] == "h" and list(od.index) == list(od.columns) == list(ports)
+    for o in ports:
+        for d in ports:
+            want = (
+                0.0
+                if o == d
+                else season.route(ports[o], ports[d], vessel="Arc7", depart="2026-07-02", smooth=False).cost
+            )
+            assert od.loc[o, d] == pytest.approx(want, abs=1e-9)
+    assert od.loc["Ob", "north"] != od.loc["north", "Ob"]  # the ice moves while the ship sails
+    with pytest.raises(seaway.SeawayError, match="outside the season's grid"):
+        od_matrix(season, {"Ob": (71.0, 70.0), "Oslo": (59.9, 10.7)})
