@@ -50,8 +50,8 @@ def test_each_row_is_the_single_routes_answer(season, table):
 
 def test_failures_name_their_cause(table):
     by = {(r.vessel, r.voyage): (r.status, r.cause) for r in table.itertuples()}
-    assert by["Arc4", "sea"] == ("no route", "end closed by ice")  # 8/10 medium first-year ice at the end
-    assert by["Arc7", "land"] == ("bad input", "end on land")
+    assert by["Arc4", "sea"] == ("no route", "closed by ice")  # 8/10 medium first-year ice at the end
+    assert by["Arc7", "land"] == ("bad input", "land")
     assert by["Arc4", "off"] == ("bad input", "off chart")
     closed = table[(table.vessel == "Arc4") & (table.voyage == "sea")].error.iloc[0]
     assert "medium first-year ice (SA 91) at 8/10" in closed and "155.7 km away" in closed
@@ -112,7 +112,7 @@ def test_a_static_chart_is_timed_by_each_vessels_ice_curve(tmp_path):
     assert np.datetime64(row.arrival, "s") == np.datetime64("2026-07-01T06") + np.timedelta64(
         round(hours * 3600), "s"
     )
-    assert (closed.status, closed.cause) == ("no route", "end closed by ice")
+    assert (closed.status, closed.cause) == ("no route", "closed by ice")
 
 
 def test_the_od_matrix_is_one_search_per_origin_and_each_pair_is_the_routes_hours(season, monkeypatch):

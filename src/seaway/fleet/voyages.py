@@ -80,11 +80,11 @@ def route_voyages(
     keep_routes: add a `route` column with each Route (None where it failed).
     options: passed to every source.route call (e.g. objective="time", escort=True).
 
-    Status and cause: "ok"; "no route" (cause "land", "ice", "impassable" or "no route": the
-    explanation NoRouteError carries; or "end closed by ice": an end in ice the vessel may not
-    enter, farther than snap_km from usable water); "bad input" (cause "end on land", "end off
-    chart" or "end unusable" for an end farther than snap_km from usable water, "off chart" for
-    an end outside the chart, else "bad input"). `error` holds the message, with the nearest
+    Status and cause (route_many's words): "ok"; "no route" (cause "closed by ice": ice the
+    vessel may not enter closes the way, or holds an end farther than snap_km from usable
+    water; "land" or "impassable": what else closes the way; "no route"); "bad input" (cause
+    "land" or "off chart" for an end farther than snap_km from usable water, "off chart" for an
+    end outside the chart, else "bad input"). `error` holds the message, with the nearest
     usable point and its distance."""
     import pandas as pd
 
@@ -138,12 +138,15 @@ def _row(source, name, vessel, key, ends, depart, options, keep) -> dict:
     try:
         r = source.route(start, end, vessel=vessel, depart=depart, **options)
     except NoRouteError as exc:
-        row.update(status="no route", cause=exc.cause or "no route", error=str(exc))
+        cause = {"ice": "closed by ice", "land": "land", "impassable": "impassable"}.get(
+            exc.cause or "", "no route"
+        )
+        row.update(status="no route", cause=cause, error=str(exc))
         return row | ({"route": None} if keep else {})
     except SnapError as exc:
         cause = _end_cause(exc)
         row.update(
-            status="no route" if cause == "end closed by ice" else "bad input", cause=cause, error=str(exc)
+            status="no route" if cause == "closed by ice" else "bad input", cause=cause, error=str(exc)
         )
         return row | ({"route": None} if keep else {})
     except SeawayError as exc:
@@ -155,16 +158,16 @@ def _row(source, name, vessel, key, ends, depart, options, keep) -> dict:
 
 
 def _end_cause(exc: SnapError) -> str:
-    """What keeps an end from usable water, from the reason its Move gives: "end on land",
-    "end closed by ice", "end off chart" or "end unusable" (another impassable pixel)."""
+    """What keeps an end from usable water, from the reason its Move gives (route_many's words):
+    "land", "closed by ice", "off chart" or "impassable" (another impassable pixel)."""
     why = " ".join(str(getattr(m, "why", "")) for m in exc.moves).lower()
     if "land" in why:
-        return "end on land"
+        return "land"
     if "off the chart" in why or "outside" in why or "no chart" in why:
-        return "end off chart"
+        return "off chart"
     if "ice" in why:
-        return "end closed by ice"
-    return "end unusable"
+        return "closed by ice"
+    return "impassable"
 
 
 def _figures(r) -> dict:
