@@ -137,3 +137,23 @@ def test_the_od_matrix_is_one_search_per_origin_and_each_pair_is_the_routes_hour
     assert od.loc["Ob", "north"] != od.loc["north", "Ob"]  # the ice moves while the ship sails
     with pytest.raises(seaway.SeawayError, match="outside the season's grid"):
         od_matrix(season, {"Ob": (71.0, 70.0), "Oslo": (59.9, 10.7)})
+
+
+@pytest.mark.dask
+def test_a_dask_cluster_gives_the_threads_table(season, table):
+    distributed = pytest.importorskip("dask.distributed")
+    cluster = distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=False, dashboard_address=":0"
+    )
+    with distributed.Client(cluster) as client:
+        dist = route_voyages(
+            season,
+            {"sea": SEA, "land": LAND, "off": OFF},
+            vessels=("Arc4", "Arc7"),
+            departures=DAYS,
+            cluster=client,
+        )
+        assert client.status == "running"  # a client given is left open
+    cluster.close()
+    assert dist.drop(columns="error").equals(table.drop(columns="error"))
+    assert list(dist.hours.dropna()) == list(table.hours.dropna()) and len(dist.hours.dropna()) == 3

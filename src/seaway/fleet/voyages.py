@@ -20,6 +20,7 @@ from .. import _core
 from ..base.interrupt import cancelling
 from ..base.units import KM_PER_NM
 from ..errors import NoRouteError, SeawayError, SeawayTypeError, SnapError
+from .run import open_client
 
 COLUMNS = [
     "vessel",
@@ -61,6 +62,7 @@ def route_voyages(
     departures: Iterable[Any] = (None,),
     snap_km: float | None = None,
     threads: int | None = None,
+    cluster: Any = None,
     keep_routes: bool = False,
     **options: Any,
 ):
@@ -77,6 +79,9 @@ def route_voyages(
     snap_km: ends in unusable water move at most this far (as the single route's snap_km).
     threads: worker threads (default 2; 1 runs in this thread). Ctrl-C stops every running
         search of the batch and raises KeyboardInterrupt.
+    cluster: run on dask.distributed instead (as route_many: a Client, a scheduler address, or
+        True / "local" for a LocalCluster of 2 workers, closed afterwards): `source` is sent to
+        each worker once and every row is computed by the same code, so the table is the same.
     keep_routes: add a `route` column with each Route (None where it failed).
     options: passed to every source.route call (e.g. objective="time", escort=True).
 
@@ -108,7 +113,10 @@ def route_voyages(
         name, vessel, key, ends, depart = item
         return _row(source, name, vessel, key, ends, depart, options, keep_routes)
 
-    rows = _run(one, work, 2 if threads is None else int(threads))
+    if cluster is not None:
+        rows = _run_dask(source, work, options, keep_routes, cluster)
+    else:
+        rows = _run(one, work, 2 if threads is None else int(threads))
     cols = COLUMNS + (["route"] if keep_routes else [])
     return pd.DataFrame(rows, columns=cols)
 
@@ -219,3 +227,29 @@ def _run(one: Callable, work: list, threads: int) -> list:
         raise
     finally:
         pool.shutdown(wait=True, cancel_futures=True)
+
+
+def _rows(source, items, options, keep) -> list:
+    """The rows of a share of the batch, on a worker."""
+    return [
+        _row(source, name, vessel, key, ends, depart, options, keep)
+        for name, vessel, key, ends, depart in items
+    ]
+
+
+def _run_dask(source, work, options, keep, cluster) -> list:
+    client, own = open_client(cluster)
+    try:
+        shared = client.scatter(source, broadcast=True, hash=False)  # once per worker
+        workers = max(len(client.scheduler_info().get("workers", {})), 1)
+        size = max(len(work) // (4 * workers), 1)
+        shares = [work[i : i + size] for i in range(0, len(work), size)]
+        futures = [client.submit(_rows, shared, share, options, keep, pure=False) for share in shares]
+        try:
+            return [row for part in client.gather(futures) for row in part]
+        except KeyboardInterrupt:
+            client.cancel(futures)
+            raise
+    finally:
+        for obj in own:
+            obj.close()
