@@ -79,3 +79,40 @@ def planar_season(stage, ct=None, hours=None, dx=10.0):
         },
         coords={"time": time, "y": dx * np.arange(rows)[::-1], "x": dx * np.arange(cols)},
     )
+
+
+#: A polar stereographic projection (NSIDC's EPSG:3413 parameters on a sphere) for projected seasons.
+POLAR = "+proj=stere +lat_0=90 +lat_ts=70 +lon_0=-45 +R=6371000 +units=m +no_defs"
+POLAR_CENTRE = (75.0, 60.0)  # lat, lon of pixel (15, 25) of projected_season()
+
+
+def projected_season(rows=31, cols=51, dx_m=10_000.0, wall=(24, 26), open_day=2, days=3):
+    """Daily charts (from DAY0) on a polar stereographic grid (POLAR) of dx_m pixels, its axes in
+    metres, with a CF grid mapping (the WKT pyproj writes) named by CT and SA: open water but for
+    a wall of thick first-year ice (SA 93, 9/10) over columns wall[0]..wall[1] (all rows) until
+    day `open_day`, when it clears. Pixel (15, 25) is centred on POLAR_CENTRE; y grows with the
+    row, x with the column."""
+    import pyproj
+
+    crs = pyproj.CRS.from_proj4(POLAR)
+    fwd = pyproj.Transformer.from_crs("EPSG:4326", crs, always_xy=True)
+    x0, y0 = fwd.transform(POLAR_CENTRE[1], POLAR_CENTRE[0])
+    y = y0 + dx_m * (np.arange(rows) - 15)
+    x = x0 + dx_m * (np.arange(cols) - 25)
+    ct = np.zeros((days, rows, cols))
+    sa = np.full((days, rows, cols), np.nan)
+    ct[:open_day, :, wall[0] : wall[1] + 1], sa[:open_day, :, wall[0] : wall[1] + 1] = 9.0, 93.0
+    gm = {"grid_mapping": "crs"}
+    time = DAY0 + np.arange(days) * np.timedelta64(1, "D")
+    return xr.Dataset(
+        {
+            "CT": (("time", "y", "x"), ct, gm),
+            "SA": (("time", "y", "x"), sa, gm),
+            "crs": ((), 0, {"crs_wkt": crs.to_wkt(), **crs.to_cf()}),
+        },
+        coords={
+            "time": time,
+            "y": ("y", y, {"standard_name": "projection_y_coordinate", "units": "m"}),
+            "x": ("x", x, {"standard_name": "projection_x_coordinate", "units": "m"}),
+        },
+    )

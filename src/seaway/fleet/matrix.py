@@ -19,7 +19,7 @@ def od_matrix(season: Any, ports: Mapping[str, tuple[float, float]], **options: 
     as rows and destinations as columns: the hours of the engine's route (the route with
     smooth=False arrives exactly then; a smoothed one may be a little quicker, never later);
     0 on the diagonal; inf where the ice never lets the vessel reach the destination. Each port
-    is read at the pixel that holds it; a port in ice no chart opens, or on land, is refused as
+    is read at the pixel that holds it (on a projected season, in its grid's km); a port in ice no chart opens, or on land, is refused as
     route() refuses it (give a point in water, or snap it first with a single route)."""
     import pandas as pd
 
@@ -35,7 +35,7 @@ def od_matrix(season: Any, ports: Mapping[str, tuple[float, float]], **options: 
         field = season.arrival_field(tuple(ports[origin]), **options)
         for j, dest in enumerate(names):
             if i != j:
-                hours[i, j] = _at(field, ports[dest], dest)
+                hours[i, j] = _at(field, ports[dest], dest, getattr(season, "plane", None))
     out = pd.DataFrame(
         hours, index=pd.Index(names, name="origin"), columns=pd.Index(names, name="destination")
     )
@@ -45,14 +45,19 @@ def od_matrix(season: Any, ports: Mapping[str, tuple[float, float]], **options: 
     return out
 
 
-def _at(field, point, name: str) -> float:
+def _at(field, point, name: str, plane=None) -> float:
     """The field's value at the pixel holding `point` (lat, lon): the pixel whose centre is
-    nearest, refused when the point lies outside the grid."""
+    nearest, refused when the point lies outside the grid. plane: a projected season's
+    (seaway.voyage.seasonproj.SeasonPlane), which finds the pixel in the grid's km."""
+    if plane is not None:
+        i, j = plane.pixel(point, f"port {name}")
+        return float(field.values[i, j])
     roles = [coord_role(d, field[d].attrs) for d in field.dims]
     if roles != ["lat", "lon"]:
         raise SeawayError(
             f"od_matrix reads ports on a lat/lon season; this one is on {tuple(field.dims)}: "
-            "route the pairs with route_voyages instead"
+            "give its grid mapping (CF grid_mapping) to read ports in lat/lon, or route the pairs "
+            "with route_voyages"
         )
     lat, lon = (field[d].values for d in field.dims)
     half = [abs(float(np.diff(c[:2])[0])) / 2 if c.size > 1 else np.inf for c in (lat, lon)]

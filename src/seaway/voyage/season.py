@@ -6,14 +6,12 @@ from __future__ import annotations
 
 import dataclasses
 import os
-import warnings
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..base.memory import SEASON_CHART
-from ..base.validate import one_line
 from ..engine.api import prepare
 from ..engine.snap import DEFAULT_SNAP_KM
 from ..errors import ChartError, NoRouteError, SeawayTypeError
@@ -28,9 +26,10 @@ from ..vessel import Vessel
 from .departures import DepartureChoice, best_departure
 from .ends import check_ends
 from .route import searching
+from .seasoncover import charts_bounds, check_cover
+from .seasonproj import SeasonPlane
 from .ship import as_vessel, vessel_notes
 from .timing import CHART_AGE_DAYS
-from .vectorchart import in_degrees
 
 if TYPE_CHECKING:
     from ..result.route import Route
@@ -42,11 +41,32 @@ Charts = str | os.PathLike[str] | Mapping[Any, str] | Sequence[tuple[Any, str]]
 class OpenSeason:
     """A season of ice charts opened for routing: `grid` (seaway.ice.SeasonGrid: the charts,
     their times, the land), `notes` (what opening it decided: the grid, charts that leave the
-    grid uncovered) and `route()`."""
+    grid uncovered, a projected grid) and `route()`. `plane`: on a projected grid with a CF grid
+    mapping (ROMS, NSIDC's polar stereographic), its projection (seaway.voyage.seasonproj,
+    found when None): ends are then given in lat/lon and routes come back in lat/lon."""
 
     grid: SeasonGrid
     source: str
     notes: list[str] = dataclasses.field(default_factory=list)
+    plane: SeasonPlane | None = dataclasses.field(default=None, repr=False)
+
+    def __post_init__(self) -> None:
+        if self.plane is None:
+            self.plane = SeasonPlane.of(self.grid)
+            if self.plane is not None:
+                self.notes.append(self.plane.note)
+
+    @property
+    def projection(self):
+        """The projection of a projected season (seaway.voyage.projected.Projection), or None."""
+        return None if self.plane is None else self.plane.projection
+
+    def pixel(self, point: tuple[float, float], name: str = "point") -> tuple[int, int]:
+        """(row, col) of the pixel that holds `point`: (lat, lon) on a projected season, else the
+        point as the engine takes it ((row, col) on a planar grid without a projection)."""
+        if self.plane is None:
+            return tuple(point)  # type: ignore[return-value]
+        return self.plane.pixel(point, name)
 
     def route(
         self,
@@ -82,6 +102,8 @@ class OpenSeason:
         said_ship = vessel_notes(ship)
         assumed = [f"assumed: {said}" for said in model.assumptions]
         snap = snap_km is not None
+        asked = (tuple(start), tuple(end))
+        start, end = self.pixel(start, "start"), self.pixel(end, "end")
         # Only an end no chart opens moves (an end closed at departure may open later: the ship waits).
         (a, b), moved = check_ends(
             self.grid.template.copy(data=np.where(usable(model), 1.0, np.inf)),
@@ -93,6 +115,8 @@ class OpenSeason:
             say=lambda note: None,
             neighbourhood=neighbourhood,
             why=closed_reason(model),
+            to_user=None if self.plane is None else self.plane.to_user,
+            asked=asked,
         )
         say(
             f"routing {model.ice_class} at {ship.speed_kn:g} kn from {model.departure} "
@@ -105,16 +129,18 @@ class OpenSeason:
         except NoRouteError:
             say("no route: reading the season's ice for why")
             err = explain_season_no_route(
-                self.grid, model, a, b, neighbourhood=neighbourhood, speed=speed, asked=(start, end), **limit
+                self.grid, model, a, b, neighbourhood=neighbourhood, speed=speed, asked=asked, **limit
             )
             err.notes = tuple(assumed) + tuple(moved)
             raise err from None
         ages = chart_ages(self.grid.times, r)
+        if self.plane is not None:  # vertices and waits in lat/lon for the legs and the outputs
+            r = self.plane.in_degrees(r)
         return dataclasses.replace(
             r,
             name=name,
             notes=r.notes + tuple(self.notes) + tuple(said_ship) + tuple(moved) + tuple(ages),
-            requested=(tuple(start), tuple(end)),
+            requested=asked,
         )
 
     def best_departure(
@@ -137,7 +163,7 @@ class OpenSeason:
 
     def arrival_field(self, start: tuple[float, float], *, neighbourhood: int = 5, **options: Any) -> Any:
         """Hours after departure at which the vessel can first reach each pixel from `start`
-        (lat, lon), waiting allowed, as route() prices the voyage (inf where never): the
+        (lat, lon; on a planar grid without a projection (row, col)), waiting allowed, as route() prices the voyage (inf where never): the
         voyage's isochrones, a DataArray on the season's grid in hours. options: route()'s
         vessel, speed_kn, depart, speed_table, fast_ice, concentration_limit. A route to a
         pixel with smooth=False arrives at its value; one search serves every destination."""
@@ -147,7 +173,9 @@ class OpenSeason:
             raise SeawayTypeError(
                 f"arrival_field takes none of {sorted(options)}; it takes {', '.join(keys)}"
             )
-        out = prepare(self.grid, neighbourhood=neighbourhood).cost_field(start, model=model)
+        out = prepare(self.grid, neighbourhood=neighbourhood).cost_field(
+            self.pixel(start, "start"), model=model
+        )
         out.name = "arrival_hours"
         out.attrs.update(
             long_name="hours to reach after departure (waiting allowed)",
@@ -227,7 +255,7 @@ def open_season(
     if grid is not None:
         target = latlon_grid(*grid, bytes_per_pixel=per_pixel, what=what)
     else:  # as `seaway route` does: the box around the voyage
-        bounds = _bounds(items)
+        bounds = charts_bounds(items)
         if ends is None:
             if bounds is None:
                 raise ChartError(
@@ -242,49 +270,5 @@ def open_season(
             target, note = route_grid(*ends, chart_bounds=bounds, bytes_per_pixel=per_pixel, what=what)
             notes.append(note)
     ds = read_season(items, target, fast_ice=fast_ice)
-    notes += _check_cover(ds, items, ends, target)
+    notes += check_cover(ds, items, ends, target)
     return OpenSeason(SeasonGrid(ds), ", ".join(str(p) for _, p in items), notes)
-
-
-def _bounds(charts):
-    """The union of the charts' extents in degrees, or None when one is not in degrees."""
-    import pyogrio
-
-    boxes = []
-    for _, path in charts:
-        try:
-            with warnings.catch_warnings():  # GDAL's notes on a damaged file: the read names it
-                warnings.simplefilter("ignore")
-                info = pyogrio.read_info(path)
-        except Exception as exc:  # pyogrio's DataSourceError, ...
-            raise ChartError(f"{path}: cannot read it as a SIGRID-3 vector file ({one_line(exc)})") from None
-        if not in_degrees(info):
-            return None
-        boxes.append(info["total_bounds"])
-    b = np.array(boxes, float)
-    return b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()
-
-
-def _check_cover(ds, charts, ends, target) -> list[str]:
-    """Say which chart does not cover an end (ChartError), or most of the grid (a note): off a
-    chart's polygons the ice is unknown, so impassable; that is the chart's extent, not the ice."""
-    off = np.asarray(ds["off_chart"].values)
-    lat, lon = np.asarray(target.y, float), np.asarray(target.x, float)
-    notes = []
-    for k, (date, path) in enumerate(charts):
-        for name, p in zip(("start", "end"), ends or ()):
-            r = int(np.argmin(np.abs(lat - p[0])))
-            c = int(np.argmin(np.abs((lon - p[1] + 180) % 360 - 180)))
-            if off[k, r, c]:
-                raise ChartError(
-                    f"the chart of {date} ({path}) does not cover the {name} {p[0]:g},{p[1]:g}: no polygon "
-                    "of it lies there, so its ice is unknown; give a chart that covers the voyage, or set "
-                    "the grid with --grid"
-                )
-        share = float(off[k].mean())
-        if share > 0.05:
-            notes.append(
-                f"the chart of {date} ({path}) leaves {100 * share:.0f} % of the grid uncovered: "
-                "off its polygons the ice is unknown and impassable"
-            )
-    return notes
