@@ -5,6 +5,10 @@ the forecast's own values then; the ice in the WMO colours; and on the real DMI 
 Farewell the pixels no polygon covers hatched as off chart, never painted as land. Read off
 the matplotlib figure as it is saved."""
 
+import base64
+import io
+import re
+
 import numpy as np
 import pytest
 import xarray as xr
@@ -13,10 +17,11 @@ from seaway.cli import main
 from support import forecast_files as ff
 
 pytest.importorskip("cartopy")
+from matplotlib import image  # noqa: E402
 from matplotlib.collections import QuadMesh  # noqa: E402
 
 from seaway.output import mapframe  # noqa: E402
-from seaway.output.voyagemap import OFF_CHART_LABEL  # noqa: E402
+from seaway.output.voyagemap import OFF_CHART_COLOUR, OFF_CHART_LABEL  # noqa: E402
 
 pytestmark = pytest.mark.cli
 DMI = ("ice_charts_sigrid3", "dmi_greenland", "201304100920_CapeFarewell_RIC.shp")
@@ -125,7 +130,7 @@ def test_ice_and_waves_on_the_dmi_chart_draw_off_chart_as_off_chart(shared_data,
     map paints; the ice is in the WMO stage colours, and the open sea shows the wave height."""
     waves = tmp_path / "waves.nc"
     _cape_farewell_waves(waves)
-    png = tmp_path / "iw.png"
+    png, page = tmp_path / "iw.png", tmp_path / "iw.html"
     _route(
         capsys,
         shared_data.joinpath(*DMI),
@@ -139,6 +144,8 @@ def test_ice_and_waves_on_the_dmi_chart_draw_off_chart_as_off_chart(shared_data,
         "58,62,-50,-40,0.1",
         "--plot",
         png,
+        "--out",
+        page,
     )
     (one,) = drawn
     off, land, routed_land = one["hatched"], one["land"], one["chart_land"]
@@ -156,3 +163,10 @@ def test_ice_and_waves_on_the_dmi_chart_draw_off_chart_as_off_chart(shared_data,
     assert label == "significant wave height (m) at departure, 2013-04-10 12:00 UTC"
     assert values.mask[off].all() and values.mask[land].all()
     assert 1.0 <= values.min() and values.max() <= 4.0 and values.count() > 1000
+    # the HTML map: the same layers in its chart image and legend
+    text = page.read_text()
+    chart = re.findall(r'L\.imageOverlay\(\s*"data:image/png;base64,([^"]+)"', text)[1]
+    rgb = np.rint(image.imread(io.BytesIO(base64.b64decode(chart)), format="png")[..., :3] * 255).astype(int)
+    grey = [int(OFF_CHART_COLOUR[i : i + 2], 16) for i in (1, 3, 5)]
+    assert (np.abs(rgb - grey).max(axis=-1) <= 2).sum() >= 20
+    assert OFF_CHART_LABEL in text and "significant wave height (m) at departure" in text

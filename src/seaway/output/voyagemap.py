@@ -118,3 +118,37 @@ def _coast_land(chart) -> np.ndarray:
         return np.zeros(chart.shape, bool)
     la, lo = np.meshgrid(np.asarray(chart.lat, float), np.asarray(chart.lon, float), indexing="ij")
     return np.asarray(globe.is_land(la, (lo + 180.0) % 360.0 - 180.0), bool)
+
+
+def voyage_rgba(v: VoyageLayers) -> tuple[np.ndarray, str, list]:
+    """The HTML map's chart image of a weather voyage (seaway.output.webmap): (RGBA uint8 on
+    the chart's grid, the layer's name, legend rows [(label, rgb)]); land is painted after."""
+    from matplotlib import colormaps
+
+    from ..ice.colours import classes
+
+    rgba = np.zeros(v.land.shape + (4,), np.uint8)
+    legend, names = [], []
+    if v.field is not None and np.isfinite(v.field).any():
+        ok = np.isfinite(v.field)
+        lo, hi = float(v.field[ok].min()), float(v.field[ok].max())
+        cmap = colormaps[WEATHER_CMAP]
+        rgba[ok] = (cmap((v.field[ok] - lo) / (hi - lo or 1.0)) * 255).astype(np.uint8)
+        quantity = v.label.split(" at departure")[0]
+        legend += [
+            (f"{quantity}: {x:.3g}", tuple(int(c * 255) for c in cmap(f)[:3])) for x, f in ((lo, 0), (hi, 1))
+        ]
+        names.append(f"{v.label} ({lo:.3g} light to {hi:.3g} dark)")
+    if v.ice is not None and np.isfinite(v.ice).any():
+        index, table = classes(v.ice, v.code)
+        shown = (index >= 0) & ~v.land & ~v.off_chart
+        colours = np.array([rgb for _, rgb in table], np.uint8).reshape(-1, 3)
+        rgba[shown, :3], rgba[shown, 3] = colours[index[shown]], 255
+        legend += [(f"ice: {table[k][0]}", table[k][1]) for k in np.unique(index[shown])]
+        by = "stage of development" if v.code == "stage" else "total concentration"
+        names.append(f"ice: WMO colour code by {by}")
+    if v.off_chart.any():
+        grey = tuple(int(OFF_CHART_COLOUR[i : i + 2], 16) for i in (1, 3, 5))
+        rgba[v.off_chart] = list(grey) + [255]
+        legend.append((OFF_CHART_LABEL, grey))
+    return rgba, "; ".join(names) or "no weather field", legend
