@@ -7,7 +7,9 @@ colour code (seaway.ice.colours: by total concentration or by stage of developme
 legend, and the route in ROUTE_COLOUR with its waypoints and ends. The coastline never comes from
 the network (cartopy's Natural Earth download): land is the chart's own land mask, and around
 it the 1-km global land mask that the global-land-mask package ships. Planar (y/x) charts are
-drawn on plain axes. A raster without an ice code (a cost, a cost field) keeps its colour bar."""
+drawn on plain axes. A raster without an ice code (a cost, a cost field) keeps its colour bar.
+A route found through a forecast is drawn on the weather it meets at departure, its ice chart's
+ice and the pixels no chart polygon covers (off chart, not land): seaway.output.voyagemap."""
 
 from __future__ import annotations
 
@@ -54,7 +56,9 @@ def route_png(
         map's aspect needs.
     shoal_m: with a depth environment (Route.with_environment({"depth": ...})), water shallower
         than this (draft + UKC) is drawn as shoal; the route's least depth is marked either way.
-    Fast ice (an FA environment, form 08) is drawn as fast ice."""
+    Fast ice (an FA environment, form 08) is drawn as fast ice. A weather voyage (a route
+    through a forecast) with no ice or values given is drawn on the forecast's main field at
+    departure, its ice chart's ice and off-chart pixels (seaway.output.voyagemap)."""
     from matplotlib.colors import BoundaryNorm, ListedColormap
     from matplotlib.patches import Patch
 

@@ -12,6 +12,7 @@ import dataclasses
 
 import numpy as np
 
+from ..ice.colours import classes
 from ..ice.impact import governing_stage
 
 #: The weather field drawn, first found first: (label, unit, roles whose magnitude it is).
@@ -124,8 +125,6 @@ def voyage_rgba(v: VoyageLayers) -> tuple[np.ndarray, str, list]:
     """The HTML map's chart image of a weather voyage (seaway.output.webmap): (RGBA uint8 on
     the chart's grid, the layer's name, legend rows [(label, rgb)]); land is painted after."""
     from matplotlib import colormaps
-
-    from ..ice.colours import classes
 
     rgba = np.zeros(v.land.shape + (4,), np.uint8)
     legend, names = [], []
