@@ -48,7 +48,8 @@ def test_threads_equal_serial_and_single_routes(sea):
     assert serial.settled.tolist() == threaded.settled.tolist()
     for (vid, (s, e)), row in zip(voyages.items(), serial.itertuples()):
         r = seaway.route(cost, s, e, neighbourhood=5, edge_cost="mean")
-        assert (row.voyage, row.start, row.end) == (vid, s, e)
+        assert (row.voyage, row.start_row, row.start_col, row.end_row, row.end_col) == (vid, *s, *e)
+        assert (row.used_start_row, row.used_start_col, row.start_moved) == (*s, 0.0)
         assert row.cost == r.cost and row.length == r.length
         assert row.settled == r.stats.search.settled and row.time_s > 0
     assert serial.cost.iloc[-1] > 100  # the corner-to-corner voyage is long
@@ -75,6 +76,17 @@ def test_bad_items_are_reported_not_fatal():
         "bad input",
         "ok",
     ]
+    assert table.cause.tolist() == [
+        "",
+        "closed by ice",  # an infinite cost that is not land
+        "no route",
+        "bad input",
+        "bad input",
+        "off chart",
+        "",
+    ]
+    walled = seaway.route_many(cost, voyages[:2], land=~np.isfinite(cost), threads=1)
+    assert walled.cause.tolist() == ["", "land"]
     assert "impassable" in table.error[1] and "nearest passable pixel" in table.error[1]
     assert "no route" in table.error[2]
     assert "pair of numbers" in table.error[3] and "(start, end) pair" in table.error[4]

@@ -187,6 +187,26 @@ def test_nsidc_g02202_native_and_on_a_latlon_grid():
     assert south.off_chart.values.all() and np.isnan(south.CT.values).all()  # unknown there
 
 
+def test_nsidc_monthly_file_names_its_variable():
+    """The monthly file's concentration is cdr_seaice_conc_monthly: without variable= the
+    reader names the variables it found and the argument to pass (issue 30)."""
+    from seaway import ChartError
+    from seaway.ice.sigrid import read_nsidc_g02202
+
+    monthly = SHARED_DATA / "sea_ice_concentration" / "seaice_conc_monthly_nh_202112_f17_v04r00.nc"
+    with pytest.raises(ChartError) as err:
+        read_nsidc_g02202(monthly)
+    said = str(err.value)
+    assert "has no variable 'cdr_seaice_conc'" in said
+    assert "cdr_seaice_conc_monthly, melt_onset_day_cdr_seaice_conc_monthly" in said
+    assert (
+        'pass variable="cdr_seaice_conc_monthly" (seaway route: --variable cdr_seaice_conc_monthly)' in said
+    )
+    ds = read_nsidc_g02202(monthly, variable="cdr_seaice_conc_monthly")
+    assert ds.CT.shape == (448, 304) and float(np.nanmax(ds.CT)) == 10
+    assert int(ds.land.sum()) == 665 + 4561 + 63707  # the daily file's flags (test above)
+
+
 def test_real_chart_route_and_summary():
     import seaway
     from seaway.ice.sigrid import read_sigrid3

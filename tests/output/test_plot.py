@@ -181,7 +181,23 @@ def test_a_cost_field_keeps_its_colour_bar(chart, tmp_path, monkeypatch):
     monkeypatch.setattr(mapframe.MapFrame, "png", lambda m, dpi: (figures.append(m.fig), real_png(m, dpi))[1])
     plot.plot_cost_field(field, tmp_path / "f.png", size=(6, 4), dpi=40)
     (fig,) = figures
-    bars = [ax for ax in fig.axes if ax.get_ylabel() == "least accumulated cost from the start"]
+    label = f"least accumulated cost from the start ({field.attrs['units']})"
+    bars = [ax for ax in fig.axes if ax.get_ylabel() == label]
     assert len(bars) == 1
     v = field.values[np.isfinite(field.values)]
     assert bars[0].get_ylim() == pytest.approx((v.min(), v.max()), rel=1e-6)
+
+
+def test_an_arrival_field_is_labelled_in_hours(tmp_path, monkeypatch):
+    """An arrival field (hours to reach through a season) says so on its colour bar, not 'cost'."""
+    from support.seasons import retreating_edge
+
+    retreating_edge(days=3).to_netcdf(tmp_path / "s.nc")
+    field = seaway.open_season(str(tmp_path / "s.nc")).arrival_field((71.0, 70.0), vessel="Arc7")
+    figures = []
+    real_png = mapframe.MapFrame.png
+    monkeypatch.setattr(mapframe.MapFrame, "png", lambda m, dpi: (figures.append(m.fig), real_png(m, dpi))[1])
+    plot.plot_cost_field(field, tmp_path / "f.png", size=(6, 4), dpi=40)
+    plot.plot_cost_field(field, tmp_path / "g.png", size=(6, 4), dpi=40, label="hours from Sabetta")
+    labels = [[ax.get_ylabel() for ax in fig.axes if ax.get_ylabel()] for fig in figures]
+    assert labels == [["hours to reach after departure (waiting allowed) (h)"], ["hours from Sabetta"]]

@@ -68,7 +68,7 @@ def demo(args) -> int:
     print(f"end:          {_end(r, 'end', VILKITSKY_STRAIT)}")
     print(f"route cost:   {r.cost:.1f} (sum of u x km)")
     print(f"length:       {km:.1f} km = {km / KM_PER_NM:.1f} nm")
-    print(f"waypoints:    {len(r.pixels)}")
+    print(f"waypoints:    {len(r.waypoint_index)} (ends and course changes; {len(r.pixels)} pixels)")
     s = r.summary()
     print(
         f"time:         {s['time_h']:.1f} h at {s['speed_kn']:g} kn in open water (Andreeva 2021's speed in "

@@ -4,6 +4,7 @@ printed, written and plotted."""
 from __future__ import annotations
 
 import dataclasses
+import os
 
 from ..base.units import KM_PER_NM
 from ..depth import check_draft
@@ -99,4 +100,8 @@ def _title(args, chart, r) -> str:
     head = f"{args.name}" + (f", chart of {chart.date}" if chart.date else "")
     length = f"{r.length:.0f} km ({r.length / KM_PER_NM:.0f} nm)" if r.geographic else f"{r.length:.1f} units"
     cls = chart.ice_class(vessel_class(args))
-    return f"{head}: {length}, cost {r.cost:.5g} {r.unit}; {chart.description}" + (f", {cls}" if cls else "")
+    what = chart.description
+    source = os.fspath(chart.source)
+    if os.path.basename(source) != source:  # the chart file's name, not its full path
+        what = what.replace(source, os.path.basename(source))
+    return f"{head}: {length}, cost {r.cost:.5g} {r.unit}; {what}" + (f", {cls}" if cls else "")

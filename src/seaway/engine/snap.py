@@ -126,6 +126,20 @@ def snap_ends(
         move). why(row, col) -> str says what makes a pixel impassable (default: land, or
         its cost). An end off the chart raises ValueError."""
     prepared = PreparedChart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land, neighbourhood=neighbourhood)
+    return snap_prepared(prepared, start, end, max_km=max_km, why=why)
+
+
+def snap_prepared(
+    prepared: PreparedChart,
+    start: Point,
+    end: Point,
+    *,
+    max_km: float = DEFAULT_SNAP_KM,
+    why: Callable[[int, int], str] | None = None,
+) -> SnappedEnds:
+    """snap_ends on a chart prepared once (seaway.prepare): its cost, land, stencil and
+    constraints decide which pixels are usable and which water joins the ends (for many
+    routes on one chart, e.g. seaway.route_many)."""
     chart = prepared.chart
     requested: tuple[End, End] = (tuple(map(float, start)), tuple(map(float, end)))
     pixels = [pixel_of(chart, p, name) for p, name in zip(requested, ("start", "end"))]
@@ -221,4 +235,4 @@ def _joint_water(
     return best
 
 
-__all__ = ["DEFAULT_SNAP_KM", "Move", "SnapError", "SnappedEnds", "snap_ends"]
+__all__ = ["DEFAULT_SNAP_KM", "Move", "SnapError", "SnappedEnds", "snap_ends", "snap_prepared"]

@@ -21,15 +21,27 @@ COLUMNS = [
     "chart",
     "vessel",
     "voyage",
-    "start",
-    "end",
+    "start_lat",
+    "start_lon",
+    "end_lat",
+    "end_lon",
+    "used_start_lat",
+    "used_start_lon",
+    "used_end_lat",
+    "used_end_lon",
+    "start_moved_km",
+    "end_moved_km",
     "cost",
     "length",
     "settled",
     "time_s",
     "status",
+    "cause",
     "error",
+    "notes",
 ]
+#: The names of the point columns on planar charts, where points are (row, col) pixels.
+PLANAR = {"_lat": "_row", "_lon": "_col", "_moved_km": "_moved"}
 
 
 def route_many(
@@ -55,6 +67,7 @@ def route_many(
     keep_away=(),
     zones=(),
     turn_penalty=None,
+    snap_km=None,
 ):
     """Route every voyage for every vessel on every chart; a pandas DataFrame, one row per route.
 
@@ -78,11 +91,23 @@ def route_many(
         LocalCluster(n_workers=2, threads_per_worker=1), closed afterwards; a scheduler address
         ("tcp://host:8786"); or a dask.distributed.Client.
     progress: print a progress bar on stderr (default: only with a cluster).
-    keep_routes: add a `route` column with the Route objects (None where a route failed).
+    keep_routes: add a `route` column with the Route objects (None where a route failed; a
+        snapped route records the ends asked for and the move, as seaway.SnappedEnds.record).
+    snap_km: None (default): an end on a pixel the ship may not use fails its row; a distance:
+        such an end moves to the nearest usable point in water that joins both ends when that is
+        at most snap_km away (km on geographic charts, chart units on planar ones), by the code
+        every snapping route uses (seaway.snap_ends); farther, the row fails with SnapError's
+        message.
 
-    Columns: chart, vessel, voyage (ids), start, end (as given), cost, length (km on geographic
-    charts, grid units otherwise), settled (pixels), time_s (wall time of the search), status
-    ("ok", "no route", "bad input" or "error") and error (the message; "" when ok)."""
+    Columns: chart, vessel, voyage (ids); start_lat, start_lon, end_lat, end_lon (the ends asked
+    for, as numbers); used_start_lat, ..., used_end_lon (the ends routed; NaN when the row
+    failed); start_moved_km, end_moved_km (how far snapping moved each end: 0 when it did not,
+    NaN when the row failed); cost, length (km on geographic charts, grid units otherwise),
+    settled (pixels), time_s (wall time of the search), status ("ok", "no route", "bad input"
+    or "error"), cause ("" when ok; "land", "closed by ice" (an impassable cost that is not
+    land), "off chart", "no route", "bad input" or "error"), error (the message; "" when ok) and
+    notes (a sentence per snapped end). When every chart is planar the point columns are named
+    start_row, start_col, ..., start_moved, end_moved (pixels and chart units)."""
     import pandas as pd
 
     threads = (
@@ -105,6 +130,7 @@ def route_many(
         land=land,
         keep=bool(keep_routes),
         turn_penalty=turn_penalty,
+        snap_km=None if snap_km is None else number(snap_km, "snap_km", minimum=0),
     )
     chart_items = _chart_items(charts, time_dim)
     vessel_items = [(None, None)] if vessels is None else _items(vessels, "vessels")
@@ -125,11 +151,30 @@ def route_many(
         bar.close()
     ids = [(c, v, y) for c, _ in chart_items for v, _ in vessel_items for y, _ in voyage_items]
     table = pd.DataFrame(
-        [dict(chart=c, vessel=v, voyage=y, **row) for (c, v, y), row in zip(ids, rows)],
+        [dict(chart=c, vessel=v, voyage=y, **_flat(row)) for (c, v, y), row in zip(ids, rows)],
         columns=COLUMNS + (["route"] if keep_routes else []),
     )
     table["settled"] = table["settled"].astype("Int64")
+    kinds = {row["geographic"] for row in rows} - {None}
+    if kinds == {False}:  # every chart planar: the points are (row, col) pixels
+        table = table.rename(columns={c: _planar(c) for c in COLUMNS})
     return table
+
+
+def _flat(row):
+    """A row's points as numbers, under the table's column names."""
+    out = {k: v for k, v in row.items() if k != "geographic"}
+    for key in ("start", "end", "used_start", "used_end"):
+        out[f"{key}_lat"], out[f"{key}_lon"] = out.pop(key)
+    out["start_moved_km"], out["end_moved_km"] = out.pop("start_moved"), out.pop("end_moved")
+    return out
+
+
+def _planar(column):
+    for geo, planar in PLANAR.items():
+        if column.endswith(geo):
+            return column[: -len(geo)] + planar
+    return column
 
 
 # -- inputs --------------------------------------------------------------------------------------

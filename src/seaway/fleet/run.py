@@ -116,21 +116,27 @@ def _run_batch(chart, vessel, voyages, opts):
     return [_route_one(shared.get, v, opts["keep"]) for v in voyages]
 
 
+def open_client(cluster):
+    """(client, what to close afterwards) for cluster=: True or "local" starts
+    LocalCluster(n_workers=2, threads_per_worker=1), a string is a scheduler address, anything
+    else is a dask.distributed.Client used as it is (and left open)."""
+    from dask.distributed import Client, LocalCluster
+
+    if cluster is True or cluster == "local":
+        local = LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=":0")
+        client = Client(local)
+        return client, [client, local]
+    if isinstance(cluster, str):
+        client = Client(cluster)
+        return client, [client]
+    return cluster, []
+
+
 def _run_dask(chart_items, vessel_items, voyage_items, opts, cluster, bar):
     import dask
-    from dask.distributed import Client, LocalCluster
     from dask.distributed import as_completed as dask_completed
 
-    own = []
-    if cluster is True or cluster == "local":
-        own.append(LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=":0"))
-        client = Client(own[0])
-        own.insert(0, client)
-    elif isinstance(cluster, str):
-        client = Client(cluster)
-        own.append(client)
-    else:
-        client = cluster
+    client, own = open_client(cluster)
     try:
 
         def ship(obj):  # arrays go to the workers once; dask-backed charts are loaded there

@@ -212,6 +212,8 @@ def read_nsidc_g02202(path, grid: Grid | None = None, *, variable="cdr_seaice_co
     import xarray as xr
 
     with xr.open_dataset(path, mask_and_scale=False) as src:
+        if variable not in src.data_vars:
+            raise _no_variable(path, variable, list(src.data_vars))
         raw = np.asarray(src[variable].squeeze().values).astype(np.int32)
         xs = src["xgrid"].values.astype(float)
         ys = src["ygrid"].values.astype(float)
@@ -254,3 +256,15 @@ def read_nsidc_g02202(path, grid: Grid | None = None, *, variable="cdr_seaice_co
         assumed_stage=-1 if stage is None else int(stage),
     )
     return ds
+
+
+def _no_variable(path, variable, found):
+    """The ChartError for a G02202 file without `variable` (e.g. a monthly file, whose
+    concentration is cdr_seaice_conc_monthly): the variables found and the one to name."""
+    conc = [v for v in found if v.startswith("cdr_seaice_conc")] or [v for v in found if "seaice_conc" in v]
+    fix = (
+        f'pass variable="{conc[0]}" (seaway route: --variable {conc[0]})'
+        if conc
+        else "pass variable= the concentration variable (seaway route: --variable NAME)"
+    )
+    return ChartError(f"{path} has no variable {variable!r}; it has {', '.join(sorted(found))}: {fix}")

@@ -2,11 +2,13 @@
 equipment imports). Every file is written atomically: to a temporary file beside the target,
 then renamed over it, so a reader never sees a half-written file.
 
-GPX and RTZ carry the waypoints (ends and course changes) with longitudes in [-180, 180);
-ECDIS joins RTZ waypoints by great-circle legs ("Orthodrome"), as the route was costed.
-GeoJSON carries every vertex; a geographic route that crosses the antimeridian is split into a
-MultiLineString at +-180 (RFC 7946, section 3.1.9), or, with antimeridian="continuous", kept
-as one LineString whose longitudes run past 180 (what Route.to_geojson() gives)."""
+Every format carries the same waypoints (the ends and course changes, with their ETAs on a route
+with a departure), from one list: seaway.result.waypoints.waypoint_list. GPX, RTZ and CSV give
+longitudes in [-180, 180); ECDIS joins RTZ waypoints by great-circle legs ("Orthodrome"), as the
+route was costed. GeoJSON's line runs through the same waypoints; a geographic route that crosses
+the antimeridian is split into a MultiLineString at +-180 (RFC 7946, section 3.1.9: the two
+points added on +-180 are cuts, not waypoints), or, with antimeridian="continuous", kept as one
+LineString whose longitudes run past 180 (what Route.to_geojson() gives)."""
 
 from __future__ import annotations
 
@@ -17,11 +19,11 @@ import os
 
 import numpy as np
 
-from ..base import sphere as geo
 from ..base.files import replace_atomically, write_all, write_atomically  # noqa: F401 - part of this API
 from ..errors import SeawayError
 from ..result.environment import CATEGORICAL, STAGES, Category, extreme_name
-from ..result.schedule import dated_schedule, iso, schedule
+from ..result.schedule import iso
+from ..result.waypoints import waypoint_list
 from .header import describe, header_lines, wrap180
 from .routexml import GPX_NS, RTZ_NS, gpx, rtz
 from .webmap import html_text
@@ -94,14 +96,14 @@ def geojson(route, antimeridian: str = "split", speed_kn=None) -> dict:
             props[k] = list(v)
     props["name"] = route.name
     props.update(_voyage_properties(route))
-    if route.geographic and antimeridian == "split":
-        c = route.coords
-        lon = geo.unwrap_lon(c[:, 1])
-        parts = _split_antimeridian(c[:, 0].tolist(), lon.tolist())
+    wl = waypoint_list(route)
+    if route.geographic and antimeridian == "split" and len(wl) > 1:
+        lat, lon = wl.lat.tolist(), wl.continuous_lon.tolist()
+        parts = _split_antimeridian(lat, lon)
         if len(parts) > 1:
             feature["geometry"] = {"type": "MultiLineString", "coordinates": parts}
         else:
-            feature["geometry"]["coordinates"] = [[wrap180(x), y] for y, x in zip(c[:, 0], lon)]
+            feature["geometry"]["coordinates"] = [[wrap180(x), y] for y, x in zip(lat, lon)]
     return feature
 
 
@@ -129,24 +131,25 @@ def csv_text(route, speed_kn=None) -> str:
     out = io.StringIO()
     out.writelines(f"# {line}\n" for line in header_lines(route, speed_kn))
     w = csv.writer(out, lineterminator="\n")
-    timed = dated_schedule(route)
-    dated = timed is not None
+    wl = waypoint_list(route)  # the waypoints every format gives
+    dated = wl.dated
+    lat = wl.lat
+    lon = wl.lon if route.geographic else wl.coords[:, 1]
     w.writerow(CSV_FIELDS + (["eta", "etd"] if dated else []) + [h for n in env for h in _env_header(n)])
-    first = route.waypoints[0]
     w.writerow(
-        [1, f"{first[0]:.7f}", f"{first[1]:.7f}"]
+        [1, f"{lat[0]:.7f}", f"{lon[0]:.7f}"]
         + [""] * (len(CSV_FIELDS) - 3)
-        + (["", iso(timed.etd(0))] if timed is not None else [])
+        + (["", iso(wl.etd[0])] if dated else [])
         + [""] * (2 * len(env))
     )
-    wi = route.waypoint_index
     km = cost = 0.0
     for leg in legs:
         km, cost = km + leg.distance, cost + leg.cost
+        k = leg.number  # the waypoint the leg ends at, 0-based
         row = [
             leg.number + 1,
-            f"{leg.end[0]:.7f}",
-            f"{leg.end[1]:.7f}",
+            f"{lat[k]:.7f}",
+            f"{lon[k]:.7f}",
             leg.number,
             f"{leg.course:.2f}",
             f"{leg.distance:.4f}",
@@ -157,9 +160,9 @@ def csv_text(route, speed_kn=None) -> str:
             f"{km:.4f}",
             f"{cost:.6g}",
         ]
-        if timed is not None:  # the waypoint's ETA, and its ETD (after any wait; none at the end)
+        if dated:  # the waypoint's ETA, and its ETD (after any wait; none at the end)
             last = leg.number == len(legs)
-            row += [iso(leg.arrive), "" if last else iso(timed.etd(int(wi[leg.number])))]
+            row += [iso(wl.eta[k]), "" if last else iso(wl.etd[k])]
         row += [c for n in env for c in _env_cells(leg.environment[n])]
         w.writerow(row)
     return out.getvalue()
@@ -216,15 +219,16 @@ def _opt(v, digits):
 
 
 def _voyage_properties(route) -> dict:
-    """GeoJSON properties of a route on a clock: the time at every vertex (ISO 8601, in the
-    order of route.coords) and each waypoint's ETA and ETD; empty for other routes."""
-    timed = schedule(route)
-    if timed is None or timed.departure is None:
+    """GeoJSON properties of a route with a departure: the time at every vertex of its line (the
+    waypoints' ETAs, ISO 8601, in the order of the line) and each waypoint's ETA and ETD; empty
+    for other routes."""
+    wl = waypoint_list(route)
+    if not wl.dated:
         return {}
     return {
-        "vertex_times": [iso(timed.eta(i)) for i in range(len(route.coords))],
+        "vertex_times": [iso(t) for t in wl.eta],
         "waypoint_schedule": [
-            {"waypoint": k, "eta": iso(timed.eta(int(i))), "etd": iso(timed.etd(int(i)))}
-            for k, i in enumerate(route.waypoint_index, start=1)
+            {"waypoint": k, "eta": iso(a), "etd": iso(d)}
+            for k, (a, d) in enumerate(zip(wl.eta, wl.etd), start=1)
         ],
     }

@@ -6,14 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..base import sphere as geo
-
-
-def wrap180(v) -> float:
-    """A longitude in [-180, 180) as the files write it, except that +180 (or 540, ...) stays +180
-    rather than becoming -180."""
-    w = float(geo.wrap_lon(v))
-    return 180.0 if w == -180.0 and v > 0 else w
+from ..result.waypoints import wrap180  # noqa: F401 - longitudes as the files write them
 
 
 def header_lines(route, speed_kn=None) -> list:

@@ -166,7 +166,12 @@ class MapFrame:
         return True
 
     def graticule(self):
+        """Parallels and meridians: the meridians labelled where they meet the bottom of the
+        frame (straight lines from the pole: the label is on its meridian), the parallels along
+        the map's central meridian, each label on its own parallel (where a parallel cuts the
+        side of a polar map is far from where it crosses the chart: 70.3 N read as 66 N)."""
         if self.chart.geographic:
+            levels = self._parallels()
             gl = self.ax.gridlines(
                 draw_labels=True,
                 linewidth=0.4,
@@ -176,12 +181,39 @@ class MapFrame:
                 x_inline=False,
                 y_inline=False,
                 zorder=5,
+                ylocs=levels,
             )
-            gl.top_labels = gl.right_labels = False
+            gl.top_labels = gl.right_labels = gl.left_labels = False
             gl.rotate_labels = False  # upright labels, as on a printed chart
             gl.xlabel_style = gl.ylabel_style = {"size": 7}
+            lon0 = float(self.ax.projection.proj4_params.get("lon_0", 0.0))
+            for lat in levels:
+                self.ax.text(
+                    lon0,
+                    lat,
+                    f"{abs(lat):g}°{'N' if lat >= 0 else 'S'}",
+                    size=7,
+                    ha="center",
+                    va="center",
+                    zorder=5.5,
+                    gid="parallel label",
+                    bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.7},
+                    clip_on=True,
+                    **self.kw,
+                )
         else:
             self.ax.grid(True, linewidth=0.4, color="#555555", alpha=0.5, linestyle="--")
+
+    def _parallels(self) -> list:
+        """The parallels to draw and label: round latitudes (every 1, 2, 2.5, 5 or 10 degrees)
+        that cross the map's central meridian inside the frame."""
+        from matplotlib.ticker import MaxNLocator
+
+        x0, x1, y0, y1 = self.ax.get_extent()
+        ends = self.data_crs.transform_points(self.ax.projection, np.array([0.0, 0.0]), np.array([y0, y1]))
+        lo, hi = sorted(float(v) for v in ends[:, 1])
+        levels = MaxNLocator(nbins=8, steps=[1, 2, 2.5, 5, 10]).tick_values(lo, hi)
+        return [float(v) for v in levels if lo < v < hi and abs(v) < 90]
 
     def route(self, route, waypoints=True):
         from matplotlib import patheffects

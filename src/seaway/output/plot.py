@@ -169,15 +169,19 @@ def _voyage(m, v):
     return patches, "; ".join(what) or "no weather field"
 
 
-def plot_cost_field(field, path, *, route=None, lat=None, lon=None, title=None, size=None, dpi=100):
+def plot_cost_field(
+    field, path, *, route=None, lat=None, lon=None, title=None, label=None, size=None, dpi=100
+):
     """Write a PNG map of an accumulated-cost field (seaway.cost_field's result: a DataArray, or
-    an array with lat/lon), with contours, a colour bar and optionally a route over it."""
+    an array with lat/lon), with contours, a colour bar and optionally a route over it. label:
+    the colour bar's (default the field's long_name and units, e.g. an arrival field's "hours
+    to reach after departure (waiting allowed) (h)")."""
     chart = as_chart(field, lat=lat, lon=lon)  # unreachable pixels (inf) are drawn as land
     m = MapFrame(chart, size, route)
     m.background_land()
     v = np.asarray(chart.values, float)
     im = m.raster(np.ma.masked_where(~np.isfinite(v), v), "viridis")
-    m.fig.colorbar(im, ax=m.ax, label="least accumulated cost from the start", shrink=0.7)
+    m.fig.colorbar(im, ax=m.ax, label=label or _field_label(field), shrink=0.7)
     finite = v[np.isfinite(v)]
     if finite.size and finite.max() > finite.min() and min(v.shape) > 1:
         m.contour(np.where(np.isfinite(v), v, np.nan), levels=10, colors="white", linewidths=0.6, zorder=4)
@@ -187,3 +191,10 @@ def plot_cost_field(field, path, *, route=None, lat=None, lon=None, title=None, 
         m.legend()
     m.title(title or "accumulated cost")
     write_all([(path, m.png(dpi))])
+
+
+def _field_label(field) -> str:
+    """A field's colour-bar label from its attributes: long_name (units)."""
+    attrs = getattr(field, "attrs", {}) or {}
+    name = attrs.get("long_name", "least accumulated cost from the start")
+    return f"{name} ({attrs['units']})" if attrs.get("units") else name

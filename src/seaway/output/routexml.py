@@ -8,8 +8,9 @@ from __future__ import annotations
 import xml.etree.ElementTree as ET
 
 from ..errors import SeawayError
-from ..result.schedule import Schedule, dated_schedule, iso, schedule
-from .header import describe, wrap180
+from ..result.schedule import dated_schedule, iso, schedule
+from ..result.waypoints import Waypoints, waypoint_list
+from .header import describe
 
 GPX_NS = "http://www.topografix.com/GPX/1/1"
 RTZ_NS = "http://www.cirm.org/RTZ/1/0"
@@ -23,11 +24,11 @@ def gpx(route, speed_kn=None) -> str:
     rte = ET.SubElement(root, f"{{{GPX_NS}}}rte")
     ET.SubElement(rte, f"{{{GPX_NS}}}name").text = route.name
     ET.SubElement(rte, f"{{{GPX_NS}}}desc").text = describe(route, speed_kn)
-    timed = schedule(route)
-    for k, ((lat, lon), i) in enumerate(zip(route.waypoints, route.waypoint_index), start=1):
-        pt = ET.SubElement(rte, f"{{{GPX_NS}}}rtept", {"lat": f"{lat:.7f}", "lon": f"{wrap180(lon):.7f}"})
-        if timed is not None and timed.departure is not None:  # GPX 1.1 orders time before name
-            ET.SubElement(pt, f"{{{GPX_NS}}}time").text = iso(timed.eta(int(i)))
+    wl = waypoint_list(route)  # the waypoints every format gives
+    for k, (lat, lon, eta) in enumerate(zip(wl.lat, wl.lon, wl.eta), start=1):
+        pt = ET.SubElement(rte, f"{{{GPX_NS}}}rtept", {"lat": f"{lat:.7f}", "lon": f"{lon:.7f}"})
+        if wl.dated:  # GPX 1.1 orders time before name
+            ET.SubElement(pt, f"{{{GPX_NS}}}time").text = iso(eta)
         ET.SubElement(pt, f"{{{GPX_NS}}}name").text = f"WP{k:03d}"
     return _xml(root)
 
@@ -57,9 +58,10 @@ def rtz(route, speed_kn=None) -> str:
     default = ET.SubElement(wps, f"{{{RTZ_NS}}}defaultWaypoint", {"radius": "0.1"})
     ET.SubElement(default, f"{{{RTZ_NS}}}leg", {"geometryType": "Orthodrome"})
     legs = route.legs(speed_kn) if route.ice_speed is not None or schedule(route) is not None else None
-    for k, (lat, lon) in enumerate(route.waypoints, start=1):
+    wl = waypoint_list(route)  # the waypoints every format gives
+    for k, (lat, lon) in enumerate(zip(wl.lat, wl.lon), start=1):
         wp = ET.SubElement(wps, f"{{{RTZ_NS}}}waypoint", {"id": str(k), "name": f"WP{k:03d}"})
-        ET.SubElement(wp, f"{{{RTZ_NS}}}position", {"lat": f"{lat:.7f}", "lon": f"{wrap180(lon):.7f}"})
+        ET.SubElement(wp, f"{{{RTZ_NS}}}position", {"lat": f"{lat:.7f}", "lon": f"{lon:.7f}"})
         if k > 1:
             attrs = {"geometryType": "Orthodrome"}
             leg_speed = legs[k - 2].speed_kn if legs is not None else speed  # in ice, on a clock: the leg's
@@ -67,22 +69,22 @@ def rtz(route, speed_kn=None) -> str:
                 attrs["speedMax"] = f"{float(leg_speed):.2f}"
             ET.SubElement(wp, f"{{{RTZ_NS}}}leg", attrs)
     if timed is not None:
-        _rtz_schedule(root, route, legs, timed)
+        _rtz_schedule(root, wl, legs)
     return _xml(root)
 
 
-def _rtz_schedule(root, route, legs, timed: Schedule) -> None:
+def _rtz_schedule(root, wl: Waypoints, legs) -> None:
     """RTZ's calculated schedule: for each waypoint its ETA and ETD (after any wait there) and
     the speed made good on the leg that ends at it (the first: the departure only)."""
     scheds = ET.SubElement(root, f"{{{RTZ_NS}}}schedules")
     one = ET.SubElement(scheds, f"{{{RTZ_NS}}}schedule", {"id": "1", "name": "seaway"})
     calc = ET.SubElement(one, f"{{{RTZ_NS}}}calculated")
-    for k, i in enumerate(route.waypoint_index, start=1):
+    for k, (eta, etd) in enumerate(zip(wl.eta, wl.etd), start=1):
         attrs = {"waypointId": str(k)}
         if k > 1:
-            attrs["eta"] = iso(timed.eta(int(i)))
-        if k < len(route.waypoint_index):
-            attrs["etd"] = iso(timed.etd(int(i)))
+            attrs["eta"] = iso(eta)
+        if k < len(wl):
+            attrs["etd"] = iso(etd)
         if k > 1 and legs[k - 2].speed_kn is not None:
             attrs["speed"] = f"{legs[k - 2].speed_kn:.2f}"
         ET.SubElement(calc, f"{{{RTZ_NS}}}scheduleElement", attrs)

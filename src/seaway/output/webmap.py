@@ -20,6 +20,7 @@ from ..base.files import write_atomically
 from ..errors import SeawayError
 from ..ice.colours import classes, guess_code
 from ..result.environment import least_depth
+from ..result.waypoints import waypoint_list
 from .leaflet import inline_leaflet, legend_control, popup_element
 from .popup import waypoint_popup
 from .style import LAND_COLOUR, ROUTE_COLOUR, SHOAL_COLOUR, edges, fast_ice, ice_layer, route_xy, shoals
@@ -162,7 +163,8 @@ def explore(route, *, ice=None, code=None, speed_kn=None, zoom_start=None, shoal
     speed = route.speed_kn if speed_kn is None else speed_kn
     legs = route.legs(speed)
     line = folium.FeatureGroup(name="route").add_to(m)
-    positions = np.column_stack([y, x])
+    wl = waypoint_list(route)  # the waypoints every export gives (seaway.result.waypoints)
+    positions = np.column_stack([y, x])[wl.index]
     folium.PolyLine(
         positions.tolist(),
         color=ROUTE_COLOUR,
@@ -170,12 +172,12 @@ def explore(route, *, ice=None, code=None, speed_kn=None, zoom_start=None, shoal
         tooltip=f"{html.escape(route.name)}: {route.length:.1f} km "
         f"({route.length / geo.KM_PER_NM:.1f} nm), cost {route.cost:.6g}",
     ).add_to(line)
-    last = len(route.waypoint_index) - 1
-    for n, i in enumerate(route.waypoint_index):
+    last = len(wl) - 1
+    for n in range(len(wl)):
         leg = legs[n] if n < len(legs) else None
         if n == last and n > 0:  # the end: a square, the start a circle
             marker = folium.Marker(
-                positions[i].tolist(),
+                positions[n].tolist(),
                 tooltip="end",
                 icon=folium.DivIcon(
                     html=f'<div style="width:12px;height:12px;background:{ROUTE_COLOUR};'
@@ -186,7 +188,7 @@ def explore(route, *, ice=None, code=None, speed_kn=None, zoom_start=None, shoal
             )
         else:
             marker = folium.CircleMarker(
-                positions[i].tolist(),
+                positions[n].tolist(),
                 radius=8 if n == 0 else 4,
                 weight=1,
                 color="black",
@@ -196,7 +198,7 @@ def explore(route, *, ice=None, code=None, speed_kn=None, zoom_start=None, shoal
                 fill_color=ROUTE_COLOUR if n == 0 else "white",
             )
         marker.add_to(line)
-        marker.add_child(popup_element(waypoint_popup(route, n + 1, route.coords[i], leg, speed)))
+        marker.add_child(popup_element(waypoint_popup(route, n + 1, wl.coords[n], leg, speed)))
     rows = legend + [("land", _rgb(LAND_COLOUR))] + _marks(folium, route, line)
     folium.LayerControl(collapsed=False).add_to(m)
     m.add_child(legend_control(layer_name, rows))

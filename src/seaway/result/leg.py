@@ -13,6 +13,7 @@ from ..errors import SeawayError
 from .environment import along
 from .schedule import schedule
 from .timing import step_times
+from .waypoints import waypoint_list
 
 
 @dataclass
@@ -52,11 +53,12 @@ def route_legs(route, speed_kn: float | None = None) -> list[Leg]:
             )
         speed, (hours_of, _, escort_of) = ice.v0_kn, step_times(route)
     timed = schedule(route)  # a route on a clock: its real times, not those at one speed
-    wi, c = route.waypoint_index, route.coords
+    wl = waypoint_list(route)  # the waypoints every output gives (seaway.result.waypoints)
+    wi, c = wl.index, wl.coords
     steps, costs = route.step_lengths, route.costs()
     out = []
     for n, (i, j) in enumerate(zip(wi[:-1], wi[1:]), start=1):
-        a, b = c[i], c[j]
+        a, b = c[n - 1], c[n]
         dist = float(steps[i:j].sum())
         if route.geographic:
             course = float(geo.course_deg(a[0], a[1], b[0], b[1]))

@@ -9,7 +9,6 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .._core import haversine_km
-from ..base import sphere as geo
 from ..chart.legs import index_coords, leg_path, turning_points
 from ..chart.raster import Chart
 from ..models.base import CostModel, EdgeCost
@@ -19,6 +18,7 @@ from .stats import RouteStats
 from .summary import route_summary
 from .table import route_table
 from .timing import SpeedField
+from .waypoints import waypoint_list
 
 
 @dataclass(frozen=True)
@@ -233,16 +233,12 @@ class Route:
         to_html(self, path, **options)
 
     def to_geojson(self) -> dict:
-        """A GeoJSON Feature (LineString) with the route's cost and length as properties.
+        """A GeoJSON Feature (LineString) through the route's waypoints (the ends and course
+        changes, as every export gives them: seaway.result.waypoints) with the route's cost and
+        length as properties.
 
         Geographic charts give [lon, lat] positions with longitudes made continuous along the
         route (a route across the antimeridian runs past 180 rather than jumping back)."""
-        c = self.coords
-        if self.geographic:
-            lon = geo.unwrap_lon(c[:, 1])
-            positions = np.column_stack([lon, c[:, 0]])
-        else:
-            positions = c[:, ::-1]
         props = {
             "cost": self.cost,
             "length": self.length,
@@ -252,7 +248,7 @@ class Route:
             "edge_cost": self.edge_cost,
             "cost_unit": self.unit,
         }
-        coords = positions.tolist()
+        coords = waypoint_list(self).positions()
         if len(coords) == 1:
             coords = coords * 2  # a LineString needs two positions; start == end
         return {

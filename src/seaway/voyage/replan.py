@@ -41,7 +41,7 @@ def read_voyage(path) -> tuple[np.ndarray, np.ndarray, dict]:
 
 def position_at(xy, times, at) -> tuple[tuple[float, float], int]:
     """((lat, lon) of the ship at `at`, the index of the vertex it last passed), linear in time
-    between the vertices (a step is a few km)."""
+    between the vertices of the route's line (its waypoints, with their ETAs)."""
     if not (times[0] <= at <= times[-1]):
         raise SeawayError(f"--at {at} is outside the voyage ({times[0]} to {times[-1]})")
     i = int(np.searchsorted(times, at, side="right") - 1)

@@ -16,7 +16,7 @@ from ..base.memory import SEASON_CHART
 from ..base.validate import one_line
 from ..engine.api import prepare
 from ..engine.snap import DEFAULT_SNAP_KM
-from ..errors import ChartError, NoRouteError
+from ..errors import ChartError, NoRouteError, SeawayTypeError
 from ..ice.grids import latlon_grid
 from ..ice.routegrid import route_grid
 from ..ice.seasongrid import SeasonGrid, read_season
@@ -76,19 +76,8 @@ class OpenSeason:
         ice, the waits kept (seaway.smoothtime); False: the engine's steps. Route.notes record the
         assumptions; NoRouteError names what closes the way."""
         say = progress or (lambda message: None)
-        ship = as_vessel(vessel, speed_kn)
-        assert ship is not None
-        curve = ship.ice_curve if speed_table is None else None
-        speed = speed_table if speed_table is not None else (curve if curve is not None else "andreeva")
-        limit = {"concentration_limit": concentration_limit and curve is None}
-        model = IceSeasonTime(
-            self.grid,
-            ship.ice_class or "Arc7",
-            ship.speed_kn,
-            departure=depart,
-            speed=speed,
-            fast_ice=fast_ice,
-            **limit,
+        ship, model, speed, limit = self._model(
+            vessel, speed_kn, depart, speed_table, fast_ice, concentration_limit
         )
         said_ship = vessel_notes(ship)
         assumed = [f"assumed: {said}" for said in model.assumptions]
@@ -145,6 +134,51 @@ class OpenSeason:
             fuel_rate_t_per_h=rate,
             **options,
         )
+
+    def arrival_field(self, start: tuple[float, float], *, neighbourhood: int = 5, **options: Any) -> Any:
+        """Hours after departure at which the vessel can first reach each pixel from `start`
+        (lat, lon), waiting allowed, as route() prices the voyage (inf where never): the
+        voyage's isochrones, a DataArray on the season's grid in hours. options: route()'s
+        vessel, speed_kn, depart, speed_table, fast_ice, concentration_limit. A route to a
+        pixel with smooth=False arrives at its value; one search serves every destination."""
+        keys = ("vessel", "speed_kn", "depart", "speed_table", "fast_ice", "concentration_limit")
+        ship, model, _, _ = self._model(*(options.pop(k, d) for k, d in zip(keys, _MODEL_DEFAULTS)))
+        if options:
+            raise SeawayTypeError(
+                f"arrival_field takes none of {sorted(options)}; it takes {', '.join(keys)}"
+            )
+        out = prepare(self.grid, neighbourhood=neighbourhood).cost_field(start, model=model)
+        out.name = "arrival_hours"
+        out.attrs.update(
+            long_name="hours to reach after departure (waiting allowed)",
+            units="h",
+            departure=str(model.departure),
+            ice_class=model.ice_class,
+            speed_kn=ship.speed_kn,
+        )
+        return out
+
+    def _model(self, vessel, speed_kn, depart, speed_table, fast_ice, concentration_limit):
+        """The vessel and the season's time model for it: (ship, model, speed, limit)."""
+        ship = as_vessel(vessel, speed_kn)
+        assert ship is not None
+        curve = ship.ice_curve if speed_table is None else None
+        speed = speed_table if speed_table is not None else (curve if curve is not None else "andreeva")
+        limit = {"concentration_limit": concentration_limit and curve is None}
+        model = IceSeasonTime(
+            self.grid,
+            ship.ice_class or "Arc7",
+            ship.speed_kn,
+            departure=depart,
+            speed=speed,
+            fast_ice=fast_ice,
+            **limit,
+        )
+        return ship, model, speed, limit
+
+
+#: route()'s defaults for the vessel and its model (arrival_field takes the same).
+_MODEL_DEFAULTS = ("Arc7", None, None, None, None, True)
 
 
 def chart_ages(times, r) -> list[str]:

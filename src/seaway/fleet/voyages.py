@@ -1,0 +1,255 @@
+"""Many voyages through time: vessels x voyages x departures on one opened chart, season or
+forecast (seaway.open_chart, open_season, open_forecast), each routed by that object's own
+route() — the answer a single route gives, waits for the ice included — on threads.
+
+`route_voyages` returns a tidy pandas DataFrame, one row per (vessel, voyage, departure): the
+ends asked for and used (as numbers), departure, arrival, hours, distance, waits, escorted
+miles, status and cause. `to_dataset` turns it into an xarray Dataset indexed by vessel x voyage
+x departure (NetCDF: ``to_dataset(table).to_netcdf(path)``); pandas writes Parquet and CSV."""
+
+from __future__ import annotations
+
+import inspect
+from collections.abc import Callable, Iterable, Mapping
+from concurrent.futures import ThreadPoolExecutor
+from typing import Any
+
+import numpy as np
+
+from .. import _core
+from ..base.interrupt import cancelling
+from ..base.units import KM_PER_NM
+from ..errors import NoRouteError, SeawayError, SeawayTypeError, SnapError
+from .run import open_client
+
+COLUMNS = [
+    "vessel",
+    "voyage",
+    "departure",
+    "start_lat",
+    "start_lon",
+    "end_lat",
+    "end_lon",
+    "used_start_lat",
+    "used_start_lon",
+    "used_end_lat",
+    "used_end_lon",
+    "arrival",
+    "hours",
+    "distance_nm",
+    "wait_h",
+    "escorted_nm",
+    "status",
+    "cause",
+    "error",
+]
+
+
+def daily(first: Any, last: Any, step_h: float = 24.0) -> np.ndarray:
+    """Departures from `first` to `last` (both included when on the step), every step_h hours."""
+    a, b = np.datetime64(first, "s"), np.datetime64(last, "s")
+    if not step_h > 0 or b < a:
+        raise SeawayError(f"departures from {a} to {b} every {step_h} h: give first <= last and step_h > 0")
+    step = np.timedelta64(int(round(step_h * 3600)), "s")
+    return np.arange(a, b + np.timedelta64(1, "s"), step)
+
+
+def route_voyages(
+    source: Any,
+    voyages: Mapping[Any, tuple] | Iterable[tuple],
+    *,
+    vessels: Mapping[str, Any] | Iterable[Any] = ("Arc7",),
+    departures: Iterable[Any] = (None,),
+    snap_km: float | None = None,
+    threads: int | None = None,
+    cluster: Any = None,
+    keep_routes: bool = False,
+    **options: Any,
+):
+    """Route every voyage for every vessel at every departure through `source`.
+
+    source: an OpenChart, OpenSeason or OpenForecast (anything whose route(start, end, vessel=,
+        depart=, ...) gives a seaway Route). Each row is what ``source.route`` answers alone.
+    voyages: a mapping id -> (start, end) or a sequence of (start, end) pairs (ids 0, 1, ...);
+        ends (lat, lon) as source.route takes them.
+    vessels: a mapping name -> vessel (a seaway.vessel.Vessel, e.g. from a vessel file, or an
+        ice class), or a sequence of them (named by their name or class).
+    departures: dates (numpy.datetime64 or ISO strings; `daily(first, last)` gives a range);
+        None: the source's own default (a season's first chart, a forecast's first time).
+    snap_km: ends in unusable water move at most this far (as the single route's snap_km).
+    threads: worker threads (default 2; 1 runs in this thread). Ctrl-C stops every running
+        search of the batch and raises KeyboardInterrupt.
+    cluster: run on dask.distributed instead (as route_many: a Client, a scheduler address, or
+        True / "local" for a LocalCluster of 2 workers, closed afterwards): `source` is sent to
+        each worker once and every row is computed by the same code, so the table is the same.
+    keep_routes: add a `route` column with each Route (None where it failed).
+    options: passed to every source.route call (e.g. objective="time", escort=True).
+
+    Status and cause (route_many's words): "ok"; "no route" (cause "closed by ice": ice the
+    vessel may not enter closes the way, or holds an end farther than snap_km from usable
+    water; "land" or "impassable": what else closes the way; "no route"); "bad input" (cause
+    "land" or "off chart" for an end farther than snap_km from usable water, "off chart" for an
+    end outside the chart, else "bad input"). `error` holds the message, with the nearest
+    usable point and its distance."""
+    import pandas as pd
+
+    if not callable(getattr(source, "route", None)):
+        raise SeawayTypeError(
+            f"route_voyages needs an opened chart, season or forecast (seaway.open_chart, "
+            f"open_season, open_forecast), not {type(source).__name__}"
+        )
+    if snap_km is not None:
+        if "snap_km" not in inspect.signature(source.route).parameters:
+            raise SeawayTypeError(f"{type(source).__name__}.route takes no snap_km: leave it out")
+        options["snap_km"] = snap_km
+    voyage_items = list(voyages.items() if isinstance(voyages, Mapping) else enumerate(voyages))
+    vessel_items = list(vessels.items() if isinstance(vessels, Mapping) else ((_name(v), v) for v in vessels))
+    departs = [None if d is None else np.datetime64(d, "s") for d in departures]
+    if not voyage_items or not vessel_items or not departs:
+        raise SeawayError("give at least one voyage, one vessel and one departure")
+    work = [(n, v, k, ends, d) for n, v in vessel_items for k, ends in voyage_items for d in departs]
+
+    def one(item):
+        name, vessel, key, ends, depart = item
+        return _row(source, name, vessel, key, ends, depart, options, keep_routes)
+
+    if cluster is not None:
+        rows = _run_dask(source, work, options, keep_routes, cluster)
+    else:
+        rows = _run(one, work, 2 if threads is None else int(threads))
+    cols = COLUMNS + (["route"] if keep_routes else [])
+    return pd.DataFrame(rows, columns=cols)
+
+
+def to_dataset(table):
+    """The table of route_voyages as an xarray Dataset indexed by vessel x voyage x departure."""
+    return (
+        table.drop(columns=[c for c in ("route",) if c in table])
+        .set_index(["vessel", "voyage", "departure"])
+        .to_xarray()
+    )
+
+
+def _name(vessel: Any) -> str:
+    if isinstance(vessel, str):
+        return vessel
+    return str(getattr(vessel, "name", None) or getattr(vessel, "ice_class", None) or vessel)
+
+
+def _row(source, name, vessel, key, ends, depart, options, keep) -> dict:
+    start, end = ends[0], ends[1]
+    row: dict[str, Any] = dict.fromkeys(COLUMNS, np.nan)
+    row.update(vessel=name, voyage=key, departure=depart, status="ok", cause="", error="")
+    row.update(
+        start_lat=float(start[0]), start_lon=float(start[1]), end_lat=float(end[0]), end_lon=float(end[1])
+    )
+    try:
+        r = source.route(start, end, vessel=vessel, depart=depart, **options)
+    except NoRouteError as exc:
+        cause = {"ice": "closed by ice", "land": "land", "impassable": "impassable"}.get(
+            exc.cause or "", "no route"
+        )
+        row.update(status="no route", cause=cause, error=str(exc))
+        return row | ({"route": None} if keep else {})
+    except SnapError as exc:
+        cause = _end_cause(exc)
+        row.update(
+            status="no route" if cause == "closed by ice" else "bad input", cause=cause, error=str(exc)
+        )
+        return row | ({"route": None} if keep else {})
+    except SeawayError as exc:
+        cause = "off chart" if "outside the chart" in str(exc) else "bad input"
+        row.update(status="bad input", cause=cause, error=str(exc))
+        return row | ({"route": None} if keep else {})
+    row.update(_figures(r))
+    return row | ({"route": r} if keep else {})
+
+
+def _end_cause(exc: SnapError) -> str:
+    """What keeps an end from usable water, from the reason its Move gives (route_many's words):
+    "land", "closed by ice", "off chart" or "impassable" (another impassable pixel)."""
+    why = " ".join(str(getattr(m, "why", "")) for m in exc.moves).lower()
+    if "land" in why:
+        return "land"
+    if "off the chart" in why or "outside" in why or "no chart" in why:
+        return "off chart"
+    if "ice" in why:
+        return "closed by ice"
+    return "impassable"
+
+
+def _figures(r) -> dict:
+    """What a row reports of a Route: the ends used, the times, the distance, waits, escort."""
+    where = r.latlon if r.latlon is not None else r.coords
+    out = dict(
+        used_start_lat=float(where[0][0]),
+        used_start_lon=float(where[0][1]),
+        used_end_lat=float(where[-1][0]),
+        used_end_lon=float(where[-1][1]),
+    )
+    legs = r.legs()
+    nm = [leg.distance_nm for leg in legs]
+    out["distance_nm"] = float(sum(nm)) if all(x is not None for x in nm) else float("nan")
+    out["escorted_nm"] = float(sum(leg.escorted_km for leg in legs)) / KM_PER_NM
+    voyage = r.stats.voyage
+    if voyage is not None:
+        out.update(hours=float(voyage.hours), departure=voyage.departure, arrival=voyage.arrival)
+        out["wait_h"] = float(np.sum(voyage.wait_h)) if voyage.wait_h is not None else float("nan")
+        return out
+    times = [leg.time_h for leg in legs]
+    out["wait_h"] = 0.0
+    if all(t is not None for t in times):
+        out["hours"] = float(sum(times))
+        if r.departure is not None:
+            out["arrival"] = r.departure + np.timedelta64(int(round(out["hours"] * 3600)), "s")
+    return out
+
+
+def _run(one: Callable, work: list, threads: int) -> list:
+    if threads < 1:
+        raise SeawayError(f"threads={threads}: give 1 or more")
+    if threads == 1:
+        return [one(w) for w in work]
+    token = _core.CancelToken()  # every search of the batch polls it (seaway.base.interrupt)
+
+    def cancellable(w):
+        with cancelling(token):
+            return one(w)
+
+    pool = ThreadPoolExecutor(max_workers=threads)
+    try:
+        futures = [pool.submit(cancellable, w) for w in work]
+        return [f.result() for f in futures]
+    except KeyboardInterrupt:
+        token.set()
+        for f in futures:
+            f.cancel()
+        raise
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
+
+
+def _rows(source, items, options, keep) -> list:
+    """The rows of a share of the batch, on a worker."""
+    return [
+        _row(source, name, vessel, key, ends, depart, options, keep)
+        for name, vessel, key, ends, depart in items
+    ]
+
+
+def _run_dask(source, work, options, keep, cluster) -> list:
+    client, own = open_client(cluster)
+    try:
+        shared = client.scatter(source, broadcast=True, hash=False)  # once per worker
+        workers = max(len(client.scheduler_info().get("workers", {})), 1)
+        size = max(len(work) // (4 * workers), 1)
+        shares = [work[i : i + size] for i in range(0, len(work), size)]
+        futures = [client.submit(_rows, shared, share, options, keep, pure=False) for share in shares]
+        try:
+            return [row for part in client.gather(futures) for row in part]
+        except KeyboardInterrupt:
+            client.cancel(futures)
+            raise
+    finally:
+        for obj in own:
+            obj.close()
