@@ -169,7 +169,9 @@ def add_route_command(commands) -> None:
         metavar="PNG",
         help="draw the chart, land and route to a PNG (needs seaway[plot]): ice in the "
         "WMO colour code (by stage of development on stage charts, fast ice grey), "
-        "with --depth/--draft the shoals and the least depth",
+        "with --depth/--draft the shoals and the least depth; with --forecast the sea "
+        "coloured by the wave height (else wind or current speed) at departure, the ice "
+        "chart's ice in the WMO colours and the pixels no chart polygon covers hatched as off chart",
     )
     rp.add_argument("-q", "--quiet", action="store_true", help="no progress messages on stderr")
     add_voyage_options(rp)

@@ -10,6 +10,8 @@ x departure (NetCDF: ``to_dataset(table).to_netcdf(path)``); pandas writes Parqu
 from __future__ import annotations
 
 import inspect
+import os
+import sys
 from collections.abc import Callable, Iterable, Mapping
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
@@ -20,6 +22,7 @@ from .. import _core
 from ..base.interrupt import cancelling
 from ..base.units import KM_PER_NM
 from ..errors import NoRouteError, SeawayError, SeawayTypeError, SnapError
+from .journal import Journal, row_key
 from .run import open_client
 
 COLUMNS = [
@@ -64,6 +67,7 @@ def route_voyages(
     threads: int | None = None,
     cluster: Any = None,
     keep_routes: bool = False,
+    journal: str | os.PathLike[str] | None = None,
     **options: Any,
 ):
     """Route every voyage for every vessel at every departure through `source`.
@@ -82,7 +86,11 @@ def route_voyages(
     cluster: run on dask.distributed instead (as route_many: a Client, a scheduler address, or
         True / "local" for a LocalCluster of 2 workers, closed afterwards): `source` is sent to
         each worker once and every row is computed by the same code, so the table is the same.
-    keep_routes: add a `route` column with each Route (None where it failed).
+    keep_routes: add a `route` column with each Route (None where it failed, or read back from
+        the journal).
+    journal: a CSV file each row is appended to as soon as it is routed; when it exists, the
+        rows it holds (same vessel name, voyage id and departure) are read back, not routed
+        again: a batch that stopped (a crash, Ctrl-C, a killed job) goes on where it was.
     options: passed to every source.route call (e.g. objective="time", escort=True).
 
     Status and cause (route_many's words): "ok"; "no route" (cause "closed by ice": ice the
@@ -109,16 +117,34 @@ def route_voyages(
         raise SeawayError("give at least one voyage, one vessel and one departure")
     work = [(n, v, k, ends, d) for n, v in vessel_items for k, ends in voyage_items for d in departs]
 
+    log = None if journal is None else Journal(journal, COLUMNS, say=_say)
+    done = {} if log is None else log.done
+    todo = [w for w in work if row_key(w[0], w[2], w[4]) not in done]
+    if log is not None and len(todo) < len(work):
+        _say(f"{log.path}: {len(work) - len(todo)} of {len(work)} rows read back, {len(todo)} to route")
+    write = (lambda row: row) if log is None else (lambda row: log.write(row) or row)
+
     def one(item):
         name, vessel, key, ends, depart = item
-        return _row(source, name, vessel, key, ends, depart, options, keep_routes)
+        return write(_row(source, name, vessel, key, ends, depart, options, keep_routes))
 
     if cluster is not None:
-        rows = _run_dask(source, work, options, keep_routes, cluster)
+        new = [write(row) for row in _run_dask(source, todo, options, keep_routes, cluster)]
     else:
-        rows = _run(one, work, 2 if threads is None else int(threads))
+        new = _run(one, todo, 2 if threads is None else int(threads))
+    routed = {row_key(w[0], w[2], w[4]): row for w, row in zip(todo, new)}
+    rows = []
+    for name, _, key, _, depart in work:  # input order; ids and dates as given
+        row = routed.get(row_key(name, key, depart)) or dict(done[row_key(name, key, depart)], route=None)
+        rows.append(
+            dict(row, vessel=name, voyage=key, departure=row["departure"] if depart is None else depart)
+        )
     cols = COLUMNS + (["route"] if keep_routes else [])
     return pd.DataFrame(rows, columns=cols)
+
+
+def _say(message: str) -> None:
+    print(f"seaway route_voyages: {message}", file=sys.stderr)
 
 
 def to_dataset(table):

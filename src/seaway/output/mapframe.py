@@ -139,9 +139,24 @@ class MapFrame:
         gx, gy = self._grid(self.y[::k], self.x[::k])
         return self.ax.contour(gx, gy, values[::k, ::k], **kw, **self.map_kw)
 
-    def chart_land(self):
-        """The chart's own land mask (what the router treated as land), with its coastline."""
-        land = self.chart.land
+    def hatch(self, mask, zorder=2.5):
+        """Grey hatching over the pixels of `mask` (off the chart)."""
+        if min(mask.shape) < 2:
+            return
+        with self.plt.rc_context({"hatch.color": "#8c8c8c", "hatch.linewidth": 0.6}):
+            self.contour_filled(
+                mask.astype(float), levels=[0.5, 1.5], colors="none", hatches=["///"], zorder=zorder
+            )
+
+    def contour_filled(self, values, **kw):
+        k = stride(values.shape)
+        gx, gy = self._grid(self.y[::k], self.x[::k])
+        return self.ax.contourf(gx, gy, values[::k, ::k], **kw, **self.map_kw)
+
+    def chart_land(self, land=None):
+        """The chart's own land mask (what the router treated as land; or `land`, e.g. without
+        the off-chart pixels), with its coastline."""
+        land = self.chart.land if land is None else land
         if land is None or not land.any():
             return False
         cmap = self.plt.matplotlib.colors.ListedColormap([LAND_COLOUR])

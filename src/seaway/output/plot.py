@@ -7,7 +7,9 @@ colour code (seaway.ice.colours: by total concentration or by stage of developme
 legend, and the route in ROUTE_COLOUR with its waypoints and ends. The coastline never comes from
 the network (cartopy's Natural Earth download): land is the chart's own land mask, and around
 it the 1-km global land mask that the global-land-mask package ships. Planar (y/x) charts are
-drawn on plain axes. A raster without an ice code (a cost, a cost field) keeps its colour bar."""
+drawn on plain axes. A raster without an ice code (a cost, a cost field) keeps its colour bar.
+A route found through a forecast is drawn on the weather it meets at departure, its ice chart's
+ice and the pixels no chart polygon covers (off chart, not land): seaway.output.voyagemap."""
 
 from __future__ import annotations
 
@@ -21,6 +23,7 @@ from ..ice.colours import classes
 from ..result.environment import least_depth
 from .mapframe import MapFrame
 from .style import COAST_COLOUR, LAND_COLOUR, SHOAL_COLOUR, fast_ice, ice_layer, point_xy, shoals
+from .voyagemap import OFF_CHART_COLOUR, OFF_CHART_LABEL, WEATHER_CMAP, voyage_layers
 
 
 def plot_route(route, path, **options) -> None:
@@ -53,7 +56,9 @@ def route_png(
         map's aspect needs.
     shoal_m: with a depth environment (Route.with_environment({"depth": ...})), water shallower
         than this (draft + UKC) is drawn as shoal; the route's least depth is marked either way.
-    Fast ice (an FA environment, form 08) is drawn as fast ice."""
+    Fast ice (an FA environment, form 08) is drawn as fast ice. A weather voyage (a route
+    through a forecast) with no ice or values given is drawn on the forecast's main field at
+    departure, its ice chart's ice and off-chart pixels (seaway.output.voyagemap)."""
     from matplotlib.colors import BoundaryNorm, ListedColormap
     from matplotlib.patches import Patch
 
@@ -67,7 +72,11 @@ def route_png(
     patches = []
     layer, kind = (None, None) if values is not None else ice_layer(route, ice, code)
     land = np.zeros(chart.shape, bool) if chart.land is None else chart.land.astype(bool)
-    if layer is not None:
+    voyage = voyage_layers(route) if values is None and layer is None else None
+    if voyage is not None:  # a weather voyage: the weather it meets, its ice, off chart
+        land = voyage.land
+        patches, what = _voyage(m, voyage)
+    elif layer is not None:
         index, table = classes(layer, kind, fast=fast_ice(route) if ice is None else None)
         present = np.unique(index[(index >= 0) & ~land])
         colours = ListedColormap([np.array(rgb) / 255 for _, rgb in table])
@@ -97,7 +106,7 @@ def route_png(
                 label=f"shoal: shallower than {float(shoal_m):g} m (draft + UKC)",
             )
         )
-    if m.chart_land() or chart.geographic:
+    if m.chart_land(land) or chart.geographic:
         patches.append(Patch(facecolor=LAND_COLOUR, edgecolor=COAST_COLOUR, label="land"))
     m.graticule()
     m.route(route)
@@ -121,6 +130,43 @@ def route_png(
     nm = f" ({route.length / KM_PER_NM:.0f} nm)" if route.geographic else ""
     m.title(title or f"{route.name}: {route.length:.1f} {units}{nm}, cost {route.cost:.5g}; {what}")
     return m.png(dpi)
+
+
+def _voyage(m, v):
+    """Draw a weather voyage's layers (seaway.output.voyagemap) on the map: (legend patches,
+    what the map shows in words)."""
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+    from matplotlib.patches import Patch
+
+    patches, what = [], []
+    if v.field is not None and np.isfinite(v.field).any():
+        im = m.raster(np.ma.masked_invalid(v.field), WEATHER_CMAP)
+        m.fig.colorbar(im, ax=m.ax, label=v.label, shrink=0.7)
+        what.append(v.label)
+    if v.ice is not None and np.isfinite(v.ice).any():
+        index, table = classes(v.ice, v.code)
+        shown = (index >= 0) & ~v.land & ~v.off_chart
+        colours = ListedColormap([np.array(rgb) / 255 for _, rgb in table])
+        norm = BoundaryNorm(np.arange(len(table) + 1) - 0.5, len(table))
+        m.raster(np.ma.masked_where(~shown, index), colours, norm, zorder=2.2)
+        by = "stage of development" if v.code == "stage" else "total concentration"
+        date = f" (chart of {v.ice_date})" if v.ice_date else ""
+        patches = [
+            Patch(facecolor=np.array(table[k][1]) / 255, edgecolor="#444444", label=f"ice: {table[k][0]}")
+            for k in np.unique(index[shown])
+        ]
+        what.append(f"ice in the WMO colour code by {by}{date}")
+    if v.off_chart.any():
+        m.raster(
+            np.ma.masked_where(~v.off_chart, np.ones(v.off_chart.shape)),
+            ListedColormap([OFF_CHART_COLOUR]),
+            zorder=2.4,
+        )
+        m.hatch(v.off_chart)
+        patches.append(
+            Patch(facecolor=OFF_CHART_COLOUR, edgecolor="#888888", hatch="///", label=OFF_CHART_LABEL)
+        )
+    return patches, "; ".join(what) or "no weather field"
 
 
 def plot_cost_field(

@@ -24,6 +24,7 @@ from ..result.waypoints import waypoint_list
 from .leaflet import inline_leaflet, legend_control, popup_element
 from .popup import waypoint_popup
 from .style import LAND_COLOUR, ROUTE_COLOUR, SHOAL_COLOUR, edges, fast_ice, ice_layer, route_xy, shoals
+from .voyagemap import voyage_layers, voyage_rgba
 
 MERCATOR_LIMIT = 85.051128779806589  # Web Mercator's latitude limit
 MAX_IMAGE = 2000  # pixels along a side of the embedded chart image (larger charts subsampled)
@@ -61,7 +62,11 @@ def _chart_image(route, ice, code, shoal_m=None):
     layer, kind = ice_layer(route, ice, code)
     rgba = np.zeros(chart.shape + (4,), np.uint8)
     legend = []
-    if layer is not None:
+    voyage = voyage_layers(route) if layer is None else None
+    if voyage is not None:  # a weather voyage: the weather it meets, its ice, off chart
+        land = voyage.land
+        rgba, name, legend = voyage_rgba(voyage)
+    elif layer is not None:
         index, table = classes(layer, kind, fast=fast_ice(route))
         colours = np.array([rgb for _, rgb in table], np.uint8).reshape(-1, 3)
         ok = index >= 0
