@@ -73,7 +73,9 @@ def _rate(name, benchmark, table):
 @pytest.mark.parametrize("threads", [1, 2])
 def test_season_study_on_threads(benchmark, season, threads):
     want = _serial(season)
-    table = benchmark.pedantic(lambda: _study(season, threads=threads), rounds=3, iterations=1, warmup_rounds=0)
+    table = benchmark.pedantic(
+        lambda: _study(season, threads=threads), rounds=3, iterations=1, warmup_rounds=0
+    )
     assert table.drop(columns="error").equals(want.drop(columns="error"))
     _rate(f"season study, {threads} thread(s)", benchmark, table)
 
