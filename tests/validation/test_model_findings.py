@@ -76,11 +76,6 @@ def test_each_legs_great_circle_is_the_line_that_was_checked(chart):
 
 
 @pytest.mark.needs_data(*NSIDC)
-@pytest.mark.xfail(
-    strict=True,
-    reason="on a projected chart a route's length is in the projection's km (EPSG:3411 is true to "
-    "scale at 70 N only): across 79 N it is shorter than the great circle between its own ends",
-)
 def test_a_route_is_never_shorter_than_the_great_circle_between_its_ends():
     path = str(SHARED_DATA.joinpath(*NSIDC))
     a, b = SABETTA, (66.07, -169.65)

@@ -167,6 +167,9 @@ class SeasonGrid:
                 )
             dry |= land
         self.dry = dry
+        #: 1/k, the projection's point scale factor, on a projected grid whose true km are known
+        #: (seaway.voyage.seasonproj): the hours per km are then per true km. None: grid km.
+        self.per_true_km: npt.NDArray[np.float64] | None = None
         spacing = np.diff(self.times) / np.timedelta64(1, "h")
         #: How long the last chart is taken as valid: the series' median spacing (a day for one chart).
         self.last_valid_h = float(np.median(spacing)) if spacing.size else 24.0
@@ -222,5 +225,7 @@ class SeasonGrid:
         for i, k in enumerate(range(k0, self.times.size)):  # frame by frame: no 7-frame float64 copies
             v = frame_speed_kn(self.ds.isel(time=k), ice_class, v0_kn, speed, **speed_options)
             hours[i] = andreeva.time_cost(v / v0_kn, v0_kn)
+            if self.per_true_km is not None:  # per projection km: the true km's hours
+                hours[i] *= self.per_true_km
         valid_from_h = (self.times[k0:] - dep) / np.timedelta64(1, "h")
         return hours, valid_from_h.astype(float), dep

@@ -47,6 +47,8 @@ class Route:
     points: np.ndarray | None = field(default=None, repr=False)
     #: (n, 2) lat/lon of the vertices when the chart is not a lat/lon grid (corridor routes).
     latlon: np.ndarray | None = field(default=None, repr=False)
+    #: Step lengths are WGS84 geodesics between the latlon vertices (projected charts: true km).
+    geodesic: bool = field(default=False, repr=False)
     #: Cost of each step between vertices (computed from the chart when None).
     step_costs: np.ndarray | None = field(default=None, repr=False)
     speed_kn: float | None = None
@@ -109,6 +111,11 @@ class Route:
         if len(self.pixels if self.points is None else self.points) < 2:
             return np.zeros(0)
         c = self.coords
+        if self.geodesic and self.latlon is not None:
+            import pyproj
+
+            lat, lon = c[:, 0], c[:, 1]
+            return np.asarray(pyproj.Geod(ellps="WGS84").inv(lon[:-1], lat[:-1], lon[1:], lat[1:])[2]) / 1e3
         if self.geographic:
             return np.array([haversine_km(a[0], a[1], b[0], b[1]) for a, b in zip(c[:-1], c[1:])])
         g = self.chart.grid  # planar charts never wrap

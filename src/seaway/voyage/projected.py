@@ -5,7 +5,13 @@ The route is searched on the chart's own grid, in kilometres of the projection; 
 given in lat/lon and projected onto it, and the route's vertices come back as lat/lon for the
 printed legs and every output (GeoJSON, GPX, RTZ, CSV). The projection comes from the cost
 variable's CF `grid_mapping` (its crs_wkt, spatial_ref or proj4 string, else its CF parameters;
-pyproj, the [ice] extra). A projected chart without one is routed in ROW,COL pixels, said so."""
+pyproj, the [ice] extra). A projected chart without one is routed in ROW,COL pixels, said so.
+
+A projection is true to scale only somewhere (EPSG:3411 at its standard parallel, 70 N): a
+projection km is 1/k true km, k the point scale factor. The search prices each pixel's step by
+its true length (the cost per projection km times 1/k at the pixel, true_cost), and the route's
+lengths and hours are WGS84 geodesics between its lat/lon vertices (Route.geodesic), so every
+figure a navigator reads is in true km."""
 
 from __future__ import annotations
 
@@ -22,6 +28,46 @@ from ..errors import ChartError, SeawayError
 class Projection:
     crs: object  # pyproj.CRS
     source: str  # where it was found, for the messages
+    #: The point scale factor k at each pixel of the chart's grid (y, x), once scale() set it.
+    k: object = None  # xarray.DataArray
+
+    def scale(self, da_km):
+        """The point scale factor k at each pixel centre of `da_km` (a DataArray with y/x in km),
+        as a DataArray on (y, x): pyproj's meridional scale. On a conformal projection (polar
+        stereographic, Lambert conformal, Mercator) it is the scale in every direction; on a
+        non-conformal one it is assumed for every direction (the scale along the meridians; the
+        error is the projection's angular distortion, which a conformal one has none of)."""
+        import pyproj
+        import xarray as xr
+
+        y, x = np.meshgrid(
+            np.asarray(da_km.y.values, float), np.asarray(da_km.x.values, float), indexing="ij"
+        )
+        lat, lon = self.to_latlon(y.ravel(), x.ravel()).T
+        with np.errstate(all="ignore"):
+            k = np.asarray(pyproj.Proj(self.crs).get_factors(lon, lat).meridional_scale, float)
+        k = np.where(np.isfinite(k) & (k > 0), k, 1.0).reshape(y.shape)
+        self.k = xr.DataArray(k, dims=("y", "x"), coords={"y": da_km.y.values, "x": da_km.x.values})
+        return self.k
+
+    def true_cost(self, cost):
+        """`cost` (per projection km, on the chart's y/x grid) per true km: times 1/k at each
+        pixel, so a search on it minimises the true cost (or hours) exactly."""
+        if self.k is None or set(getattr(cost, "dims", ())) != {"y", "x"}:
+            return cost
+        k = np.asarray(self.k.transpose(*cost.dims).values, float)
+        return cost.copy(data=np.asarray(cost.values, float) / k)
+
+    def scale_note(self, water=None) -> str:
+        """The correction in words, with the range of k over the chart (its water when given)."""
+        k = np.asarray(self.k.values, float)
+        if water is not None and np.asarray(water).any():
+            k = k[np.asarray(water, bool)]
+        return (
+            f"distances and times in true km: the projection's scale factor k, from {k.min():.2f} "
+            f"to {k.max():.2f} on this chart, is corrected (the search prices each pixel's step by "
+            "its projection km / k; lengths and hours are WGS84 geodesics between the vertices)"
+        )
 
     def to_xy_km(self, lat, lon):
         import pyproj
@@ -36,6 +82,22 @@ class Projection:
         t = pyproj.Transformer.from_crs(self.crs, "EPSG:4326", always_xy=True)
         lon, lat = t.transform(np.asarray(x_km) * 1000.0, np.asarray(y_km) * 1000.0)
         return np.column_stack([lat, lon])
+
+
+def true_cost(proj: Projection | None, cost):
+    """`cost` per true km on a projected chart with its scale set (Projection.true_cost), else
+    `cost` itself."""
+    return cost if proj is None else proj.true_cost(cost)
+
+
+def true_latlon(r, proj: Projection | None):
+    """Route `r` on a projected chart with its vertices in lat/lon and its lengths in true km
+    (WGS84 geodesics between them); `r` itself on a lat/lon chart."""
+    if proj is None:
+        return r
+    import dataclasses
+
+    return dataclasses.replace(r, latlon=proj.to_latlon(r.coords[:, 0], r.coords[:, 1]), geodesic=True)
 
 
 def _axes(da):
@@ -127,10 +189,13 @@ def project_chart(out, ds, source) -> None:
         raise ChartError(f"{source.name}: {exc}") from None
     out.projection = proj
     _check_latlon(out, source, proj)
+    proj.scale(out.grid)
+    water = None if out.land is None else ~np.asarray(out.land.transpose("y", "x").values, bool)
     out.notes.append(
         f"projected chart ({proj.crs.name}, from {proj.source}): routed on its own "
         "grid in km; --from/--to and the outputs in lat/lon"
     )
+    out.notes.append(proj.scale_note(water))
 
 
 def _check_latlon(out, source, proj) -> None:
@@ -150,4 +215,13 @@ def _check_latlon(out, source, proj) -> None:
         )
 
 
-__all__ = ["Projection", "find_projection", "in_km", "end_pixel", "project_chart", "pixel_latlon"]
+__all__ = [
+    "true_cost",
+    "true_latlon",
+    "Projection",
+    "find_projection",
+    "in_km",
+    "end_pixel",
+    "project_chart",
+    "pixel_latlon",
+]

@@ -22,7 +22,7 @@ from ..models import EdgeCost
 from .depth import with_draft
 from .ends import check_ends
 from .noroute import ClassProbe, why_no_route
-from .projected import end_pixel, pixel_latlon
+from .projected import end_pixel, pixel_latlon, true_cost, true_latlon
 from .ship import as_vessel, vessel_notes
 from .timing import blocked_words, chart_age, end_reasons, ice_time, search_cost, time_notes
 
@@ -134,7 +134,7 @@ def route_chart(
         raise SeawayError(
             "objective time needs an ice chart (a speed in its ice); this chart is a cost raster"
         )
-    routed = cost if priced is None else priced
+    routed = true_cost(chart.projection, cost if priced is None else priced)  # per true km
 
     def price(c):  # the search's cost for another class: its ice, its speed (a ship of that class)
         if c == cls:
@@ -151,7 +151,7 @@ def route_chart(
             stage_thickness=stage_thickness,
             draft_m=draft,
         )
-        return search_cost(cost_c, t, "impact")
+        return true_cost(chart.projection, search_cost(cost_c, t, "impact"))
 
     reasons = end_reasons(shallow, timing)
     (start, end), moved = check_ends(
@@ -227,9 +227,7 @@ def route_chart(
         requested=asked,
         departure=departure,
     )
-    if chart.projection is not None:  # vertices in lat/lon for the legs and the outputs
-        y, x = r.coords[:, 0], r.coords[:, 1]
-        r = dataclasses.replace(r, latlon=chart.projection.to_latlon(y, x))
+    r = true_latlon(r, chart.projection)  # projected: vertices in lat/lon, lengths in true km
     if timing is not None:
         r = r.with_ice_speed(timing.knots, escorted=timing.escorted if timing.escort_kn else None)
         hours = float(sum(leg.time_h for leg in r.legs()))
@@ -238,7 +236,7 @@ def route_chart(
             extra += _quickest(
                 timing,
                 routed,
-                chart.land,
+                chart,
                 start,
                 end,
                 hours,
@@ -258,14 +256,13 @@ def route_chart(
 
 
 def _quickest(
-    timing, routed, land, start, end, hours, method, via, turn_penalty, k, keep_away, zones
+    timing, routed, chart, start, end, hours, method, via, turn_penalty, k, keep_away, zones
 ) -> list[str]:
     """The quickest route's time beside the route's, when it is quicker by more than 1 %."""
-    fast = routed.copy(
-        data=np.where(np.isfinite(np.asarray(routed.values, float)), timing.hours_per_km(), np.inf)
-    )
+    hours_per_km = np.where(np.isfinite(np.asarray(routed.values, float)), timing.hours_per_km(), np.inf)
+    fast = true_cost(chart.projection, routed.copy(data=hours_per_km))
     try:
-        q = prepare(fast, land=land, neighbourhood=k, keep_away=keep_away, zones=zones).route(
+        q = prepare(fast, land=chart.land, neighbourhood=k, keep_away=keep_away, zones=zones).route(
             start,
             end,
             model=EdgeCost("integral", unit="h"),
@@ -277,6 +274,7 @@ def _quickest(
         return []
     if q.cost >= hours * 0.99:
         return []
+    q = true_latlon(q, chart.projection)
     return [
         f"the quickest route (objective time) takes {q.cost:.1f} h over {q.length:.0f} km, "
         f"{hours - q.cost:.1f} h less than this one ({hours:.1f} h, the least ice impact)"

@@ -3,8 +3,11 @@ native grid) with a CF grid mapping, served as seaway.voyage.projected serves a 
 the projection is read from the grid mapping of the season's variables (find_projection, i.e.
 seaway.chart.cf.grid_mapping_crs, the one CRS reader), the ends are given in lat/lon and turned
 into the pixels of the grid (its own km), and the route's vertices and waits come back in
-lat/lon for the leg table and every output (CSV, GeoJSON, GPX, RTZ). A season on a projected
-grid without a grid mapping is routed in (row, col) pixels, as before."""
+lat/lon for the leg table and every output (CSV, GeoJSON, GPX, RTZ). As on a projected chart,
+the season's hours per km are per true km (times 1/k, the projection's point scale factor, at
+each pixel: SeasonGrid.per_true_km) and the route's lengths are WGS84 geodesics between its
+vertices. A season on a projected grid without a grid mapping is routed in (row, col) pixels,
+as before."""
 
 from __future__ import annotations
 
@@ -57,7 +60,9 @@ class SeasonPlane:
         if proj is None:
             return None
         y, x = (np.asarray(template[d].values, float) for d in template.dims)
-        return cls(proj, xr.Dataset(coords={"y": ("y", y), "x": ("x", x)}))
+        plane = cls(proj, xr.Dataset(coords={"y": ("y", y), "x": ("x", x)}))
+        grid.per_true_km = 1.0 / np.asarray(proj.scale(plane.axes).values, float)
+        return plane
 
     @property
     def note(self) -> str:
@@ -65,7 +70,7 @@ class SeasonPlane:
         p = self.projection
         return (
             f"projected season ({p.crs.name}, from {p.source}): routed on its own grid in km; "
-            "the ends (lat, lon) and the outputs in lat/lon"
+            "the ends (lat, lon) and the outputs in lat/lon; " + p.scale_note()
         )
 
     def pixel(self, point, name: str = "point") -> tuple[int, int]:
@@ -80,8 +85,9 @@ class SeasonPlane:
         return show(rc)
 
     def in_degrees(self, r: Route) -> Route:
-        """The route with its vertices (Route.latlon) and its waits in lat/lon: every output,
-        the leg table and the waits read degrees; its search, hours and pixels are unchanged."""
+        """The route with its vertices (Route.latlon) and its waits in lat/lon and its lengths
+        WGS84 geodesics (true km): every output, the leg table and the waits read degrees; its
+        search, hours (per true km already) and pixels are unchanged."""
         yx = np.asarray(r.coords, float)  # km of the projection on the planar chart
         latlon = self.projection.to_latlon(yx[:, 0], yx[:, 1])
         voyage = r.stats.voyage
@@ -92,7 +98,7 @@ class SeasonPlane:
             waits = tuple(w._replace(position=(float(a), float(b))) for w, (a, b) in zip(voyage.waits, at))
             stats = dataclasses.replace(r.stats, voyage=dataclasses.replace(voyage, waits=waits))
             r = dataclasses.replace(r, stats=stats)
-        return dataclasses.replace(r, latlon=latlon)
+        return dataclasses.replace(r, latlon=latlon, geodesic=True)
 
 
 __all__ = ["SeasonPlane", "season_projection"]
