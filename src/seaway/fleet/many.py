@@ -17,10 +17,8 @@ from ..base.validate import number
 from ..errors import SeawayError, SeawayTypeError
 from .run import _Progress, _run_dask, _run_threads
 
-COLUMNS = [
-    "chart",
-    "vessel",
-    "voyage",
+#: The ends of a row as numbers: as asked for, and as used (after snapping); route_voyages's too.
+ENDS = [
     "start_lat",
     "start_lon",
     "end_lat",
@@ -29,6 +27,13 @@ COLUMNS = [
     "used_start_lon",
     "used_end_lat",
     "used_end_lon",
+]
+
+COLUMNS = [
+    "chart",
+    "vessel",
+    "voyage",
+    *ENDS,
     "start_moved_km",
     "end_moved_km",
     "cost",

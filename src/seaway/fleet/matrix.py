@@ -10,6 +10,8 @@ from typing import Any
 import numpy as np
 
 from ..chart.cf import coord_role
+from ..chart.locate import pixel_of
+from ..chart.raster import as_chart
 from ..errors import SeawayError, SeawayTypeError
 
 
@@ -46,9 +48,9 @@ def od_matrix(season: Any, ports: Mapping[str, tuple[float, float]], **options: 
 
 
 def _at(field, point, name: str, plane=None) -> float:
-    """The field's value at the pixel holding `point` (lat, lon): the pixel whose centre is
-    nearest, refused when the point lies outside the grid. plane: a projected season's
-    (seaway.voyage.seasonproj.SeasonPlane), which finds the pixel in the grid's km."""
+    """The field's value at the pixel holding `point` (lat, lon), as the engine finds an end's
+    pixel (seaway.chart.locate.pixel_of: refused when it lies outside the grid). plane: a
+    projected season's (seaway.voyage.seasonproj.SeasonPlane), which finds it in the grid's km."""
     if plane is not None:
         i, j = plane.pixel(point, f"port {name}")
         return float(field.values[i, j])
@@ -59,11 +61,5 @@ def _at(field, point, name: str, plane=None) -> float:
             "give its grid mapping (CF grid_mapping) to read ports in lat/lon, or route the pairs "
             "with route_voyages"
         )
-    lat, lon = (field[d].values for d in field.dims)
-    half = [abs(float(np.diff(c[:2])[0])) / 2 if c.size > 1 else np.inf for c in (lat, lon)]
-    if not (lat.min() - half[0] <= point[0] <= lat.max() + half[0]) or not (
-        lon.min() - half[1] <= point[1] <= lon.max() + half[1]
-    ):
-        raise SeawayError(f"port {name} at {tuple(point)} lies outside the season's grid: give a point on it")
-    i, j = int(np.abs(lat - point[0]).argmin()), int(np.abs(lon - point[1]).argmin())
-    return float(field.values[i, j])
+    chart = as_chart(field)  # the engine's own reading of the grid (row order, longitudes)
+    return float(chart.values[pixel_of(chart, point, f"port {name}")])

@@ -23,20 +23,14 @@ from ..base.interrupt import cancelling
 from ..base.units import KM_PER_NM
 from ..errors import NoRouteError, SeawayError, SeawayTypeError, SnapError
 from .journal import Journal, row_key
+from .many import ENDS
 from .run import open_client
 
 COLUMNS = [
     "vessel",
     "voyage",
     "departure",
-    "start_lat",
-    "start_lon",
-    "end_lat",
-    "end_lon",
-    "used_start_lat",
-    "used_start_lon",
-    "used_end_lat",
-    "used_end_lon",
+    *ENDS,
     "arrival",
     "hours",
     "distance_nm",
@@ -169,6 +163,7 @@ def _row(source, name, vessel, key, ends, depart, options, keep) -> dict:
     row.update(
         start_lat=float(start[0]), start_lon=float(start[1]), end_lat=float(end[0]), end_lon=float(end[1])
     )
+    r = None
     try:
         r = source.route(start, end, vessel=vessel, depart=depart, **options)
     except NoRouteError as exc:
@@ -176,19 +171,19 @@ def _row(source, name, vessel, key, ends, depart, options, keep) -> dict:
             exc.cause or "", "no route"
         )
         row.update(status="no route", cause=cause, error=str(exc))
-        return row | ({"route": None} if keep else {})
     except SnapError as exc:
         cause = _end_cause(exc)
         row.update(
             status="no route" if cause == "closed by ice" else "bad input", cause=cause, error=str(exc)
         )
-        return row | ({"route": None} if keep else {})
     except SeawayError as exc:
         cause = "off chart" if "outside the chart" in str(exc) else "bad input"
         row.update(status="bad input", cause=cause, error=str(exc))
-        return row | ({"route": None} if keep else {})
-    row.update(_figures(r))
-    return row | ({"route": r} if keep else {})
+    else:
+        row.update(_figures(r))
+    if keep:
+        row["route"] = r
+    return row
 
 
 def _end_cause(exc: SnapError) -> str:

@@ -15,7 +15,7 @@ figure a navigator reads is in true km."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -95,9 +95,7 @@ def true_latlon(r, proj: Projection | None):
     (WGS84 geodesics between them); `r` itself on a lat/lon chart."""
     if proj is None:
         return r
-    import dataclasses
-
-    return dataclasses.replace(r, latlon=proj.to_latlon(r.coords[:, 0], r.coords[:, 1]), geodesic=True)
+    return replace(r, latlon=proj.to_latlon(r.coords[:, 0], r.coords[:, 1]), geodesic=True)
 
 
 def _axes(da):
