@@ -134,6 +134,7 @@ struct WaveDangerModel : NoStepValues {
 struct IceSeasonModel {
   static constexpr Capabilities caps = IceSeasonTime::caps;
   pybind11::object keep;  // the hours-per-km frames
+  pybind11::object keep_closed;  // their closed_for table, when given
   IceSeries series;
   std::vector<double> valid_from_h;
   std::int64_t rows = 0, cols = 0;

@@ -19,6 +19,7 @@ namespace {
 template <class T>
 using Raster = py::array_t<T, py::array::c_style>;
 using Field = py::array_t<float, py::array::c_style>;
+using Closed = py::array_t<std::int16_t, py::array::c_style>;
 using Values = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 template <class Model, class T>
@@ -97,7 +98,8 @@ std::shared_ptr<ForecastFields> forecast(double first_h, double step_h, const py
 
 // A season of ice charts as hours per km (read in place, kept alive) and validity times.
 IceSeasonModel ice_season(const Field& hours_per_km, std::vector<double> valid_from_h,
-                          double min_hours_per_km) {
+                          double min_hours_per_km, double max_hours_per_km,
+                          const std::optional<Closed>& closed_for) {
   if (hours_per_km.ndim() != 3 || hours_per_km.shape(0) < 1)
     throw std::invalid_argument("hours_per_km must be a (time, rows, cols) array");
   if (std::int64_t(valid_from_h.size()) != hours_per_km.shape(0))
@@ -109,8 +111,10 @@ IceSeasonModel ice_season(const Field& hours_per_km, std::vector<double> valid_f
     throw std::invalid_argument("min_hours_per_km must be positive and finite");
   IceSeasonModel m;
   m.keep = hours_per_km;
-  double slowest = 0;  // the largest finite hours per km: a step that does not wait (queue choice)
-  {
+  // The largest finite hours per km: a step that does not wait (queue choice); when not given.
+  double slowest = max_hours_per_km;
+  if (!(slowest >= 0 && slowest < inf)) {
+    slowest = 0;
     const float* h = hours_per_km.data();
     const py::ssize_t n = hours_per_km.size();
     py::gil_scoped_release release;
@@ -119,6 +123,13 @@ IceSeasonModel ice_season(const Field& hours_per_km, std::vector<double> valid_f
   }
   m.series = {hours_per_km.shape(0), nullptr, hours_per_km.data(), min_hours_per_km,
               slowest > 0 ? slowest : inf};
+  if (closed_for) {
+    if (closed_for->ndim() != 3 || closed_for->shape(0) != hours_per_km.shape(0) ||
+        closed_for->shape(1) != hours_per_km.shape(1) || closed_for->shape(2) != hours_per_km.shape(2))
+      throw std::invalid_argument("closed_for must have the shape of hours_per_km");
+    m.keep_closed = *closed_for;
+    m.series.closed_for = closed_for->data();
+  }
   m.valid_from_h = std::move(valid_from_h);
   m.rows = hours_per_km.shape(1);
   m.cols = hours_per_km.shape(2);
@@ -178,7 +189,10 @@ void register_models(py::module_& m) {
            py::arg("forecast"), py::arg("ship_length_m"), py::arg("speed_kn"));
   py::class_<IceSeasonModel>(m, "IceSeasonModel", "Hours through a season of ice charts (waiting allowed)")
       .def(py::init(&ice_season), py::arg("hours_per_km").noconvert(), py::arg("valid_from_h"),
-           py::arg("min_hours_per_km"));
+           py::arg("min_hours_per_km"), py::arg("max_hours_per_km") = -1.0,
+           py::arg("closed_for").noconvert() = py::none(),
+           "max_hours_per_km: the largest finite value of hours_per_km, when known (else found); "
+           "closed_for: int16 charts each pixel stays closed from each chart on (ice_time.hpp)");
   py::class_<IceWeatherModel>(m, "IceWeatherModel", "Hours through ice and weather at once (waiting allowed)")
       .def(py::init([](const IceSeasonModel& ice, std::shared_ptr<ForecastFields> f, const Vessel& v,
                        double min_hours_per_km) {

@@ -12,6 +12,7 @@
 #include <type_traits>
 
 #include "results.hpp"
+#include "seaway/many_targets.hpp"
 
 namespace py = pybind11;
 using namespace seaway;
@@ -70,6 +71,23 @@ void def_queries(ChartClass& router) {
              py::arg("cancel") = nullptr,
              "The QueryResult (cost, path, figures, values per step); weight 0: Dijkstra, 1: A*, "
              "> 1: weighted A*");
+  router.def("routes",
+             [](PreparedChart& chart, const M& m, std::int64_t start, const std::vector<std::int64_t>& targets,
+                const CancelToken* cancel) {
+               std::vector<QueryResult> out(targets.size());
+               py::gil_scoped_release release;
+               m.visit(chart, [&](const auto& model) {
+                 routes_to(chart, model, start, targets, flag_of(cancel), [&](std::size_t i, RouteResult&& r) {
+                   out[i].route = std::move(r);
+                   out[i].steps = m.step_values(model, chart, out[i].route);
+                 });
+                 return 0;
+               });
+               return out;
+             },
+             py::arg("model"), py::arg("start"), py::arg("targets"), py::arg("cancel") = nullptr,
+             "[QueryResult per target] of one Dijkstra search from start until every target is "
+             "settled: each the route a Dijkstra search to that target alone finds");
   router.def("field",
              [](PreparedChart& chart, const M& m, std::int64_t start, const CancelToken* cancel) {
                const Geometry& g = chart.geometry();

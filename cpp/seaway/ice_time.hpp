@@ -36,6 +36,10 @@ struct IceSeries {
   const float* hours_per_km = nullptr;
   double min_hours_per_km = 0;  // the least finite value of any frame (> 0): A*'s bound
   double max_hours_per_km = inf;  // the largest finite value of any frame: a step without a wait
+  // Optional, frames x rows x cols like hours_per_km: how many charts from this one on the
+  // pixel stays closed (0: open in this chart; at most 32767): a step closed in chart j cannot
+  // open before chart j + closed_for of any pixel it crosses, so those charts are skipped.
+  const std::int16_t* closed_for = nullptr;
 };
 
 class IceSeasonTime {
@@ -73,6 +77,10 @@ class IceSeasonTime {
     Step best{t_h, t_h + duration(v, o, r_km, k, cell)};
     // Later charts can only help if they start before the best arrival so far.
     for (std::int64_t j = k + 1; j < s_.frames && from[j] < best.arrive_h; ++j) {
+      if (const std::int64_t skip = closed_charts(j, o, cell); skip > 0) {
+        j += skip - 1;
+        continue;
+      }
       const double a = from[j] + duration(v, o, r_km, j, cell);
       if (a < best.arrive_h) best = {from[j], a};
     }
@@ -126,6 +134,17 @@ class IceSeasonTime {
     std::int64_t c = v - row * g_.cols + dj;
     if (g_.wrap) c = c < 0 ? c + g_.cols : (c >= g_.cols ? c - g_.cols : c);
     return (row + di) * g_.cols + c;
+  }
+
+  // How many charts from chart j on the step's own pixels keep it closed (0: it may be open).
+  template <class Cell>
+  std::int64_t closed_charts(std::int64_t j, int o, Cell&& cell) const {
+    if (!s_.closed_for) return 0;
+    const std::int16_t* c = s_.closed_for + j * g_.size();
+    std::int64_t most = 0;
+    const auto& shares = st_[std::size_t(o)].shares;
+    for (std::size_t m = 0; m < shares.size(); ++m) most = std::max<std::int64_t>(most, c[cell(m)]);
+    return most;
   }
 
   // Hours to sail the step through chart k; inf when the step touches closed ice or land.

@@ -16,13 +16,19 @@
 
 namespace seaway {
 
-// Runs from `start` until `target` is settled (target < 0: until every reachable pixel is).
+// A search that stops only at its target.
+struct NeverStop {
+  bool operator()(std::int64_t) const { return false; }
+};
+
+// Runs from `start` until `target` is settled (target < 0: until every reachable pixel is),
+// or `stop(v)` says so for a settled pixel v (many targets: many_targets.hpp).
 // ws.cost(v) ends as the accumulated cost of v (exact for settled pixels), inf if not reached.
 // `bound(v)` is A*'s lower bound on the cost from v to target (used when bound.active()).
-template <class Queue, class Model, class Bound>
+template <class Queue, class Model, class Bound, class Stop = NeverStop>
 SearchStats search_with_bound(const StepEnumerator& steps, const Model& model, std::int64_t start,
                               std::int64_t target, Workspace& ws, Queue heap, const Bound& bound,
-                              const SearchControl* control) {
+                              const SearchControl* control, const Stop& stop = Stop{}) {
   const bool use_bound = bound.active() && target >= 0;
   ws.reset(steps.geometry().size());
   double* dist = ws.dist.data();
@@ -40,7 +46,7 @@ SearchStats search_with_bound(const StepEnumerator& steps, const Model& model, s
     if (std::signbit(dv)) continue;  // an older, costlier entry of an expanded pixel
     dist[v] = -dv;                   // expanded: never reopened (weighted A* keeps its bound)
     count_settled(stats.settled, control);
-    if (v == target) break;
+    if (v == target || stop(v)) break;
     steps.each(v, [&](std::int64_t w, std::int64_t o, std::int64_t from, std::int64_t to, double r, auto&& cell) {
       const double nd = dv + model(from, to, int(o), r, dv, cell);
       const double old = dist[w];

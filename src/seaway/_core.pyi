@@ -167,7 +167,12 @@ class IceSeasonModel:
     #: time_dependent, smoothable.
     capabilities: ClassVar[dict[str, bool]]
     def __init__(
-        self, hours_per_km: npt.NDArray[np.float32], valid_from_h: list[float], min_hours_per_km: float
+        self,
+        hours_per_km: npt.NDArray[np.float32],
+        valid_from_h: list[float],
+        min_hours_per_km: float,
+        max_hours_per_km: float = -1.0,
+        closed_for: npt.NDArray[np.int16] | None = None,
     ) -> None: ...
 
 class IceWeatherModel:
@@ -212,6 +217,9 @@ class PreparedChart:
         heuristic_weight: float,
         cancel: CancelToken | None = None,
     ) -> QueryResult: ...
+    def routes(
+        self, model: Model, start: int, targets: list[int], cancel: CancelToken | None = None
+    ) -> list[QueryResult]: ...
     def field(
         self, model: Model, start: int, cancel: CancelToken | None = None
     ) -> tuple[npt.NDArray[np.float64], SearchStats]: ...

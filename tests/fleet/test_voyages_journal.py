@@ -33,9 +33,11 @@ def test_a_stopped_batch_goes_on_where_it_was(season, tmp_path, monkeypatch, cap
     assert len(lines) == 1 + 12 and lines[0].startswith("vessel,voyage,departure,start_lat")
     # The job was killed while writing its fourth row: three whole rows and part of a line.
     path.write_text("\n".join(lines[:4]) + "\n" + lines[4][:25])
-    calls = []
-    route = type(season).route
-    monkeypatch.setattr(type(season), "route", lambda self, *a, **k: calls.append(a) or route(self, *a, **k))
+    calls = []  # the ends each search of the batch routes to (OpenSeason.routes)
+    routes = type(season).routes
+    monkeypatch.setattr(
+        type(season), "routes", lambda self, a, ends, **k: calls.extend(ends) or routes(self, a, ends, **k)
+    )
     again = _batch(season, threads=2, journal=path)
     assert len(calls) == 12 - 3  # only the rows the journal did not hold
     pd.testing.assert_frame_equal(again, fresh)  # hours, arrivals, causes read back exactly

@@ -7,7 +7,7 @@ constraints) is a method or property of it: `router` (the C++ prepared chart), `
 
 from __future__ import annotations
 
-from collections.abc import Collection, Hashable
+from collections.abc import Collection, Hashable, Sequence
 from typing import TYPE_CHECKING, TypedDict
 
 import numpy as np
@@ -19,7 +19,7 @@ from ..base.memory import SEARCH, check_pixels
 from ..chart.locate import check_overflow, check_tiny, locate, nearest_passable
 from ..chart.raster import Chart, as_chart
 from ..constraints import constrain
-from ..errors import ChartError, SeawayError
+from ..errors import ChartError, NoRouteError, SeawayError
 from ..models.base import CostModel, EdgeCost, as_model
 from ..result.route import Route
 from . import methods
@@ -198,6 +198,30 @@ class PreparedChart:
         if not found.found:
             raise no_route(self, model, (("start", s), ("end", e)))
         return model.finish(to_route(self, found, model, method), found.per_step)
+
+    def routes(
+        self, start: Point, ends: Sequence[Point], *, model: CostModel | str | None = None
+    ) -> list[Route | NoRouteError]:
+        """The routes from `start` to each of `ends` under `model` from one Dijkstra search, run
+        until every end is reached: each is the route route(start, end, method="dijkstra")
+        gives, step for step; an end no route reaches gives its NoRouteError in its place.
+        Ends are located and checked as route() does (a bad end raises)."""
+        model = self.model if model is None else as_model(model)
+        s = locate(self.chart, start, "start")
+        targets = [locate(self.chart, e, "end") for e in ends]
+        for e in targets:
+            model.check_ends(self, s, e)
+        engine = model.engine(self)
+        flat = [self.flat(e) for e in targets]
+        found = interruptible(lambda cancel: self.router.routes(engine, self.flat(s), flat, cancel))
+        out: list[Route | NoRouteError] = []
+        for e, q in zip(targets, found):
+            f = Search.from_core(q)
+            if f.found:
+                out.append(model.finish(to_route(self, f, model, "dijkstra"), f.per_step))
+            else:
+                out.append(no_route(self, model, (("start", s), ("end", e))))
+        return out
 
     def cost_field(
         self, start: Point, *, model: CostModel | str | None = None

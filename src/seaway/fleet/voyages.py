@@ -20,26 +20,10 @@ import numpy as np
 
 from .. import _core
 from ..base.interrupt import cancelling
-from ..base.units import KM_PER_NM
-from ..errors import NoRouteError, SeawayError, SeawayTypeError, SnapError
+from ..errors import SeawayError, SeawayTypeError
 from .journal import Journal, row_key
-from .many import ENDS
-from .run import open_client
-
-COLUMNS = [
-    "vessel",
-    "voyage",
-    "departure",
-    *ENDS,
-    "arrival",
-    "hours",
-    "distance_nm",
-    "wait_h",
-    "escorted_nm",
-    "status",
-    "cause",
-    "error",
-]
+from .rows import COLUMNS, unit_rows, units
+from .run import _Progress, open_client
 
 
 def daily(first: Any, last: Any, step_h: float = 24.0) -> np.ndarray:
@@ -62,12 +46,18 @@ def route_voyages(
     cluster: Any = None,
     keep_routes: bool = False,
     journal: str | os.PathLike[str] | None = None,
+    progress: bool | None = None,
     **options: Any,
 ):
     """Route every voyage for every vessel at every departure through `source`.
 
     source: an OpenChart, OpenSeason or OpenForecast (anything whose route(start, end, vessel=,
-        depart=, ...) gives a seaway Route). Each row is what ``source.route`` answers alone.
+        depart=, ...) gives a seaway Route). Each row is what ``source.route`` answers alone; a
+        source that routes from one start to many ends (OpenSeason.routes) answers the rows of
+        one vessel, start and departure from one Dijkstra search, each row then what
+        ``source.route(..., method="dijkstra")`` answers (exact, as the default A*: the same
+        least time; where two ways tie, the search may take the other); a `method` option
+        routes row by row.
     voyages: a mapping id -> (start, end) or a sequence of (start, end) pairs (ids 0, 1, ...);
         ends (lat, lon) as source.route takes them.
     vessels: a mapping name -> vessel (a seaway.vessel.Vessel, e.g. from a vessel file, or an
@@ -79,12 +69,14 @@ def route_voyages(
         search of the batch and raises KeyboardInterrupt.
     cluster: run on dask.distributed instead (as route_many: a Client, a scheduler address, or
         True / "local" for a LocalCluster of 2 workers, closed afterwards): `source` is sent to
-        each worker once and every row is computed by the same code, so the table is the same.
+        each worker once (and keeps what it computed for the batch there: each class's speeds
+        in every chart) and every row is computed by the same code, so the table is the same.
     keep_routes: add a `route` column with each Route (None where it failed, or read back from
         the journal).
     journal: a CSV file each row is appended to as soon as it is routed; when it exists, the
         rows it holds (same vessel name, voyage id and departure) are read back, not routed
         again: a batch that stopped (a crash, Ctrl-C, a killed job) goes on where it was.
+    progress: a progress bar on stderr (default: only with a cluster).
     options: passed to every source.route call (e.g. objective="time", escort=True).
 
     Status and cause (route_many's words): "ok"; "no route" (cause "closed by ice": ice the
@@ -118,15 +110,26 @@ def route_voyages(
         _say(f"{log.path}: {len(work) - len(todo)} of {len(work)} rows read back, {len(todo)} to route")
     write = (lambda row: row) if log is None else (lambda row: log.write(row) or row)
 
-    def one(item):
-        name, vessel, key, ends, depart = item
-        return write(_row(source, name, vessel, key, ends, depart, options, keep_routes))
+    bar = _Progress(len(todo), cluster is not None if progress is None else bool(progress))
+    share = units(source, todo, options)
 
-    if cluster is not None:
-        new = [write(row) for row in _run_dask(source, todo, options, keep_routes, cluster)]
-    else:
-        new = _run(one, todo, 2 if threads is None else int(threads))
-    routed = {row_key(w[0], w[2], w[4]): row for w, row in zip(todo, new)}
+    def done_unit(rows):
+        bar.update(len(rows))
+        return [write(row) for row in rows]
+
+    try:
+        if cluster is not None:
+            parts = _run_dask(source, share, options, keep_routes, cluster, done_unit)
+        else:
+            parts = _run(
+                lambda unit: done_unit(unit_rows(source, unit, options, keep_routes)),
+                share,
+                2 if threads is None else int(threads),
+            )
+    finally:
+        bar.close()
+    new = {row_key(w[0], w[2], w[4]): row for unit, rows in zip(share, parts) for w, row in zip(unit, rows)}
+    routed = new
     rows = []
     for name, _, key, _, depart in work:  # input order; ids and dates as given
         row = routed.get(row_key(name, key, depart)) or dict(done[row_key(name, key, depart)], route=None)
@@ -156,76 +159,6 @@ def _name(vessel: Any) -> str:
     return str(getattr(vessel, "name", None) or getattr(vessel, "ice_class", None) or vessel)
 
 
-def _row(source, name, vessel, key, ends, depart, options, keep) -> dict:
-    start, end = ends[0], ends[1]
-    row: dict[str, Any] = dict.fromkeys(COLUMNS, np.nan)
-    row.update(vessel=name, voyage=key, departure=depart, status="ok", cause="", error="")
-    row.update(
-        start_lat=float(start[0]), start_lon=float(start[1]), end_lat=float(end[0]), end_lon=float(end[1])
-    )
-    r = None
-    try:
-        r = source.route(start, end, vessel=vessel, depart=depart, **options)
-    except NoRouteError as exc:
-        cause = {"ice": "closed by ice", "land": "land", "impassable": "impassable"}.get(
-            exc.cause or "", "no route"
-        )
-        row.update(status="no route", cause=cause, error=str(exc))
-    except SnapError as exc:
-        cause = _end_cause(exc)
-        row.update(
-            status="no route" if cause == "closed by ice" else "bad input", cause=cause, error=str(exc)
-        )
-    except SeawayError as exc:
-        cause = "off chart" if "outside the chart" in str(exc) else "bad input"
-        row.update(status="bad input", cause=cause, error=str(exc))
-    else:
-        row.update(_figures(r))
-    if keep:
-        row["route"] = r
-    return row
-
-
-def _end_cause(exc: SnapError) -> str:
-    """What keeps an end from usable water, from the reason its Move gives (route_many's words):
-    "land", "closed by ice", "off chart" or "impassable" (another impassable pixel)."""
-    why = " ".join(str(getattr(m, "why", "")) for m in exc.moves).lower()
-    if "land" in why:
-        return "land"
-    if "off the chart" in why or "outside" in why or "no chart" in why:
-        return "off chart"
-    if "ice" in why:
-        return "closed by ice"
-    return "impassable"
-
-
-def _figures(r) -> dict:
-    """What a row reports of a Route: the ends used, the times, the distance, waits, escort."""
-    where = r.latlon if r.latlon is not None else r.coords
-    out = dict(
-        used_start_lat=float(where[0][0]),
-        used_start_lon=float(where[0][1]),
-        used_end_lat=float(where[-1][0]),
-        used_end_lon=float(where[-1][1]),
-    )
-    legs = r.legs()
-    nm = [leg.distance_nm for leg in legs]
-    out["distance_nm"] = float(sum(nm)) if all(x is not None for x in nm) else float("nan")
-    out["escorted_nm"] = float(sum(leg.escorted_km for leg in legs)) / KM_PER_NM
-    voyage = r.stats.voyage
-    if voyage is not None:
-        out.update(hours=float(voyage.hours), departure=voyage.departure, arrival=voyage.arrival)
-        out["wait_h"] = float(np.sum(voyage.wait_h)) if voyage.wait_h is not None else float("nan")
-        return out
-    times = [leg.time_h for leg in legs]
-    out["wait_h"] = 0.0
-    if all(t is not None for t in times):
-        out["hours"] = float(sum(times))
-        if r.departure is not None:
-            out["arrival"] = r.departure + np.timedelta64(int(round(out["hours"] * 3600)), "s")
-    return out
-
-
 def _run(one: Callable, work: list, threads: int) -> list:
     if threads < 1:
         raise SeawayError(f"threads={threads}: give 1 or more")
@@ -250,27 +183,31 @@ def _run(one: Callable, work: list, threads: int) -> list:
         pool.shutdown(wait=True, cancel_futures=True)
 
 
-def _rows(source, items, options, keep) -> list:
-    """The rows of a share of the batch, on a worker."""
-    return [
-        _row(source, name, vessel, key, ends, depart, options, keep)
-        for name, vessel, key, ends, depart in items
-    ]
+def _unit_rows(source, units_, options, keep) -> list[list[dict]]:
+    """The rows of a share of the batch's units, on a worker."""
+    return [unit_rows(source, unit, options, keep) for unit in units_]
 
 
-def _run_dask(source, work, options, keep, cluster) -> list:
+def _run_dask(source, work, options, keep, cluster, done) -> list:
+    """The rows of each unit of `work` on a Dask cluster; done(rows) as each share comes back."""
+    from dask.distributed import as_completed
+
     client, own = open_client(cluster)
     try:
         shared = client.scatter(source, broadcast=True, hash=False)  # once per worker
         workers = max(len(client.scheduler_info().get("workers", {})), 1)
         size = max(len(work) // (4 * workers), 1)
         shares = [work[i : i + size] for i in range(0, len(work), size)]
-        futures = [client.submit(_rows, shared, share, options, keep, pure=False) for share in shares]
+        futures = [client.submit(_unit_rows, shared, share, options, keep, pure=False) for share in shares]
+        where = {f.key: k for k, f in enumerate(futures)}
+        parts: list = [None] * len(futures)
         try:
-            return [row for part in client.gather(futures) for row in part]
+            for fut in as_completed(futures):
+                parts[where[fut.key]] = [done(rows) for rows in fut.result()]
         except KeyboardInterrupt:
             client.cancel(futures)
             raise
+        return [rows for part in parts for rows in part]
     finally:
         for obj in own:
             obj.close()

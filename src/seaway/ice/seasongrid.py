@@ -25,7 +25,8 @@ from ..chart.raster import Chart, as_chart
 from ..errors import ChartError, SeawayError
 from . import andreeva
 from .forms import check_fast_ice
-from .seasonfast import record_rule, season_layers
+from .seasoncache import FrameCache, Frames, speed_key
+from .seasonfast import record_rule, season_assumptions, season_layers
 from .seasonspeed import frame_speed_kn, is_curve
 from .sigrid import read_sigrid3
 
@@ -173,6 +174,17 @@ class SeasonGrid:
         spacing = np.diff(self.times) / np.timedelta64(1, "h")
         #: How long the last chart is taken as valid: the series' median spacing (a day for one chart).
         self.last_valid_h = float(np.median(spacing)) if spacing.size else 24.0
+        #: Each class's hours per km, kept between routes (seaway.ice.seasoncache).
+        self._frames = FrameCache()
+        self._said: dict[tuple[int, Any], tuple[str, ...]] = {}
+
+    def assumed_from(self, first: int, fast_ice: str | float) -> tuple[str, ...]:
+        """What the charts from index `first` on assume under the fast-ice rule, in words
+        (seaway.ice.seasonfast.season_assumptions), read once per departure chart and rule."""
+        key = (first, fast_ice)
+        if key not in self._said:
+            self._said[key] = season_assumptions(self.ds, first, fast_ice)
+        return self._said[key]
 
     def as_chart(self) -> Chart:
         """The season's grid as a chart (lat/lon or planar y/x) whose static cost is 1 per unit
@@ -208,7 +220,21 @@ class SeasonGrid:
         **speed_options: Any,
     ) -> tuple[npt.NDArray[np.float32], npt.NDArray[np.float64], np.datetime64]:
         """(hours per km float32 (frames, rows, cols) from the chart valid at departure on, inf
-        where closed; validity of each in hours after departure; departure)."""
+        where closed, read-only; validity of each in hours after departure; departure)."""
+        frames, k0, valid_from_h, dep = self.class_frames(ice_class, v0_kn, departure, speed, **speed_options)
+        return frames.hours[k0:], valid_from_h, dep
+
+    def class_frames(
+        self,
+        ice_class: str | classes.IceClass,
+        v0_kn: float,
+        departure: Departure = None,
+        speed: str | SpeedTable = "andreeva",
+        **speed_options: Any,
+    ) -> tuple[Frames, int, npt.NDArray[np.float64], np.datetime64]:
+        """(the class's Frames over every chart (seaway.ice.seasoncache: computed once per class,
+        speed and options, kept for the next departure), the index of the chart valid at
+        departure, the validity of each chart from it on in hours after departure, departure)."""
         if not (np.isfinite(v0_kn) and v0_kn > 0):
             raise SeawayError(f"v0_kn must be a positive speed in knots, got {v0_kn!r}")
         dep, k0 = self.departure_frames(departure)
@@ -221,11 +247,17 @@ class SeasonGrid:
                 f"speed must be 'andreeva', 'class', a ship's ice curve (seaway.vessel.IceCurve) or a "
                 f"table {{stage: knots}}, got {speed!r}"
             )
-        hours = np.empty((self.times.size - k0,) + self.shape, np.float32)
-        for i, k in enumerate(range(k0, self.times.size)):  # frame by frame: no 7-frame float64 copies
-            v = frame_speed_kn(self.ds.isel(time=k), ice_class, v0_kn, speed, **speed_options)
-            hours[i] = andreeva.time_cost(v / v0_kn, v0_kn)
-            if self.per_true_km is not None:  # per projection km: the true km's hours
-                hours[i] *= self.per_true_km
+        key = speed_key(ice_class, v0_kn, speed, dict(speed_options, true_km=self.per_true_km is not None))
+        frames = self._frames.get(key, speed, lambda: self._hours(ice_class, v0_kn, speed, speed_options))
         valid_from_h = (self.times[k0:] - dep) / np.timedelta64(1, "h")
-        return hours, valid_from_h.astype(float), dep
+        return frames, k0, valid_from_h.astype(float), dep
+
+    def _hours(self, ice_class, v0_kn, speed, speed_options) -> npt.NDArray[np.float32]:
+        """Hours per km in every chart of the season (frames, rows, cols), inf where closed."""
+        hours = np.empty((self.times.size,) + self.shape, np.float32)
+        for k in range(self.times.size):  # frame by frame: no 7-frame float64 copies
+            v = frame_speed_kn(self.ds.isel(time=k), ice_class, v0_kn, speed, **speed_options)
+            hours[k] = andreeva.time_cost(v / v0_kn, v0_kn)
+            if self.per_true_km is not None:  # per projection km: the true km's hours
+                hours[k] *= self.per_true_km
+        return hours

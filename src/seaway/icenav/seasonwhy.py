@@ -47,7 +47,7 @@ __all__ = ["usable", "closed_reason", "snap_season_ends", "explain_season_no_rou
 
 def usable(model: IceSeasonTime) -> np.ndarray:
     """Pixels some chart of the season, from the departure on, lets the model's class use."""
-    return np.isfinite(model.hours_per_km).any(axis=0) & ~model.season.dry
+    return model.open_somewhen & ~model.season.dry
 
 
 def closed_reason(model: IceSeasonTime):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import warnings
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
@@ -15,7 +15,7 @@ from ..base.validate import number
 from ..chart.locate import describe
 from ..errors import ChartError, ForecastError, SeawayError
 from ..ice.classes import get_class
-from ..ice.seasonfast import describer, season_assumptions, season_rule
+from ..ice.seasonfast import describer, season_rule
 from ..ice.seasongrid import SeasonGrid
 from ..vessel import Vessel
 from .base import CostModel, Prepared, RouteT
@@ -63,23 +63,31 @@ class IceSeasonTime(CostModel):
         self.season = season if isinstance(season, SeasonGrid) else SeasonGrid(season)
         self.ice_class = get_class(ice_class).name
         self.fast_ice: str | float = season_rule(self.season.ds, fast_ice)
-        self.hours_per_km, self.valid_from_h, self.departure = self.season.hours_per_km(
+        frames, first, self.valid_from_h, self.departure = self.season.class_frames(
             ice_class, v0_kn, departure, speed, fast_ice=self.fast_ice, **speed_options
         )
-        first = self.season.times.size - self.valid_from_h.size
+        self.hours_per_km = frames.hours[first:]  # read-only: shared by every departure's model
         #: What the charts from the departure on assume (fast ice, open and bergy water), in words.
-        self.assumptions = self.season.assumptions + season_assumptions(self.season.ds, first, self.fast_ice)
-        # where some chart lets the class go; numpy types any(axis=0) as "bool or array"
-        self._open = cast("npt.NDArray[np.bool_]", np.isfinite(self.hours_per_km).any(axis=0))
+        self.assumptions = self.season.assumptions + self.season.assumed_from(first, self.fast_ice)
+        self._open: npt.NDArray[np.bool_] = frames.open_from[first]  # where some chart lets the class go
         if not self._open.any():
             raise SeawayError(
                 f"class {self.ice_class} may go nowhere in any chart of the season from "
                 f"{self.departure} on; try a stronger class or other speeds"
             )
-        fastest = float(np.min(self.hours_per_km, where=self._open[None], initial=np.inf))
+        self._fastest = float(frames.frame_min[first:].min())
         self._engine: _core.IceSeasonModel | _core.IceWeatherModel = _core.IceSeasonModel(
-            self.hours_per_km, list(self.valid_from_h), fastest
+            self.hours_per_km,
+            list(self.valid_from_h),
+            self._fastest,
+            float(frames.frame_max[first:].max()),
+            frames.closed_for[first:],
         )
+
+    @property
+    def open_somewhen(self) -> npt.NDArray[np.bool_]:
+        """Pixels some chart from the departure on lets the class use (read-only)."""
+        return self._open
 
     def unit(self, geographic: bool) -> str:
         return "h"
@@ -195,9 +203,7 @@ class IceWeatherTime(IceSeasonTime):
                 "(seaway.weather.projected.on_grid)"
             )
         self.forecast, self.vessel = forecast, vessel
-        fastest_kn = 1.0 / (
-            KM_PER_NM * float(np.min(self.hours_per_km, where=self._open[None], initial=np.inf))
-        )
+        fastest_kn = 1.0 / (KM_PER_NM * self._fastest)
         best = fastest_kn + forecast.best_extra_kn(vessel, slowest_kn=0.0)
         assert isinstance(self._engine, _core.IceSeasonModel)  # set so by IceSeasonTime
         self._engine = _core.IceWeatherModel(

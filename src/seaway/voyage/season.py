@@ -13,23 +13,19 @@ import numpy as np
 
 from ..base.memory import SEASON_CHART
 from ..engine.api import prepare
-from ..engine.snap import DEFAULT_SNAP_KM
-from ..errors import ChartError, NoRouteError, SeawayTypeError
+from ..errors import ChartError, NoRouteError, SeawayError, SeawayTypeError
 from ..ice.grids import latlon_grid
 from ..ice.routegrid import route_grid
 from ..ice.seasongrid import SeasonGrid, read_season
-from ..icenav.seasonwhy import closed_reason, explain_season_no_route, usable
 from ..models import IceSeasonTime
-from ..result.schedule import schedule
-from ..smoothtime import on_clock
 from ..vessel import Vessel
 from .departures import DepartureChoice, best_departure
-from .ends import check_ends
 from .route import searching
 from .seasoncover import charts_bounds, check_cover
+from .seasonmany import season_routes
 from .seasonproj import SeasonPlane
-from .ship import as_vessel, vessel_notes
-from .timing import CHART_AGE_DAYS
+from .seasonroutes import ends, explain, finish, plan
+from .ship import as_vessel
 
 if TYPE_CHECKING:
     from ..result.route import Route
@@ -49,6 +45,7 @@ class OpenSeason:
     source: str
     notes: list[str] = dataclasses.field(default_factory=list)
     plane: SeasonPlane | None = dataclasses.field(default=None, repr=False)
+    _prepared: dict = dataclasses.field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         if self.plane is None:
@@ -96,52 +93,37 @@ class OpenSeason:
         ice, the waits kept (seaway.smoothtime); False: the engine's steps. Route.notes record the
         assumptions; NoRouteError names what closes the way."""
         say = progress or (lambda message: None)
-        ship, model, speed, limit = self._model(
-            vessel, speed_kn, depart, speed_table, fast_ice, concentration_limit
-        )
-        said_ship = vessel_notes(ship)
-        assumed = [f"assumed: {said}" for said in model.assumptions]
-        snap = snap_km is not None
-        asked = (tuple(start), tuple(end))
-        start, end = self.pixel(start, "start"), self.pixel(end, "end")
-        # Only an end no chart opens moves (an end closed at departure may open later: the ship waits).
-        (a, b), moved = check_ends(
-            self.grid.template.copy(data=np.where(usable(model), 1.0, np.inf)),
-            self.grid.dry,
-            None,
-            (start, end),
-            snap=snap,
-            snap_km=snap_km if snap else DEFAULT_SNAP_KM,
-            say=lambda note: None,
-            neighbourhood=neighbourhood,
-            why=closed_reason(model),
-            to_user=None if self.plane is None else self.plane.to_user,
-            asked=asked,
-        )
+        p = plan(self, vessel, speed_kn, depart, speed_table, fast_ice, concentration_limit)
+        (a, b), moved, asked = ends(self, p, start, end, snap_km, neighbourhood)
         say(
-            f"routing {model.ice_class} at {ship.speed_kn:g} kn from {model.departure} "
+            f"routing {p.model.ice_class} at {p.ship.speed_kn:g} kn from {p.model.departure} "
             f"({neighbourhood}x{neighbourhood} stencil, waiting allowed)"
         )
-        chart = prepare(self.grid, neighbourhood=neighbourhood)
         try:
             with searching(progress, int(np.prod(self.grid.shape))):
-                r = on_clock(chart.route(a, b, model=model, method=method), smooth)
+                found = self.prepared(neighbourhood).route(a, b, model=p.model, method=method)
         except NoRouteError:
             say("no route: reading the season's ice for why")
-            err = explain_season_no_route(
-                self.grid, model, a, b, neighbourhood=neighbourhood, speed=speed, asked=asked, **limit
-            )
-            err.notes = tuple(assumed) + tuple(moved)
-            raise err from None
-        ages = chart_ages(self.grid.times, r)
-        if self.plane is not None:  # vertices and waits in lat/lon for the legs and the outputs
-            r = self.plane.in_degrees(r)
-        return dataclasses.replace(
-            r,
-            name=name,
-            notes=r.notes + tuple(self.notes) + tuple(said_ship) + tuple(moved) + tuple(ages),
-            requested=asked,
-        )
+            raise explain(self, p, a, b, neighbourhood, asked, moved) from None
+        return finish(self, p, found, asked, moved, smooth, name)
+
+    def routes(
+        self, start: tuple[float, float], ends_: Sequence[tuple[float, float]], **options: Any
+    ) -> list[Route | SeawayError]:
+        """The routes from `start` to each of `ends_` (options as route()'s, except method and
+        progress), from one search per start pixel used: each is what
+        ``route(start, end, method="dijkstra", **options)`` gives, or the SeawayError it raises
+        (an end off the chart, too far from usable water, no route) in its place."""
+        return season_routes(self, start, ends_, **options)
+
+    def prepared(self, neighbourhood: int = 5):
+        """The season's grid prepared for routing (seaway.prepare), kept for the next route."""
+        if neighbourhood not in self._prepared:
+            self._prepared[neighbourhood] = prepare(self.grid, neighbourhood=neighbourhood)
+        return self._prepared[neighbourhood]
+
+    def __getstate__(self) -> dict:
+        return dict(self.__dict__, _prepared={})  # the engine's charts are rebuilt where unpickled
 
     def best_departure(
         self, start, end, window, *, step_h=24.0, arrive_by=None, **options
@@ -173,9 +155,7 @@ class OpenSeason:
             raise SeawayTypeError(
                 f"arrival_field takes none of {sorted(options)}; it takes {', '.join(keys)}"
             )
-        out = prepare(self.grid, neighbourhood=neighbourhood).cost_field(
-            self.pixel(start, "start"), model=model
-        )
+        out = self.prepared(neighbourhood).cost_field(self.pixel(start, "start"), model=model)
         out.name = "arrival_hours"
         out.attrs.update(
             long_name="hours to reach after departure (waiting allowed)",
@@ -207,25 +187,6 @@ class OpenSeason:
 
 #: route()'s defaults for the vessel and its model (arrival_field takes the same).
 _MODEL_DEFAULTS = ("Arc7", None, None, None, None, True)
-
-
-def chart_ages(times, r) -> list[str]:
-    """The charts used against the legs that use them: a warning when a leg runs more than
-    CHART_AGE_DAYS after the date of the chart it crosses (the charts are too sparse)."""
-    timed = schedule(r)
-    if timed is None or timed.departure is None or times.size == 0:
-        return []
-    at = np.array([timed.eta(i) for i in range(len(r.coords))], dtype="datetime64[s]")
-    k = np.clip(np.searchsorted(times.astype("datetime64[s]"), at, side="right") - 1, 0, times.size - 1)
-    age = (at - times.astype("datetime64[s]")[k]) / np.timedelta64(1, "D")
-    worst = int(np.argmax(age))
-    if age[worst] <= CHART_AGE_DAYS:
-        return []
-    date = str(times[k[worst]])[:16]
-    return [
-        f"warning: the ice chart of {date} is {age[worst]:.1f} days older than the part of the voyage that "
-        f"crosses it (at {str(at[worst])[:16]}; more than {CHART_AGE_DAYS:g}): add newer charts"
-    ]
 
 
 def open_season(
