@@ -1,11 +1,16 @@
-"""A season study as one call (seaway.fleet.route_voyages): vessels x voyages x departures
-through a season of daily ice charts, waits allowed, on 1 and 2 threads and on a local 2-worker
-Dask cluster; routes per second, and the extrapolation to the study of 120 days x 3 classes x
-50 voyages (18,000 routes). Every run's table equals the serial run's (asserted).
+"""A season study as one call (seaway.fleet.route_voyages): 3 classes x 50 voyages between 10
+ports x daily departures through a season of daily ice charts, waits allowed, on 1 and 2
+threads and on a local 2-worker Dask cluster; routes per second, and the whole study of the
+issue (120 days x 3 classes x 50 voyages = 18,000 routes) on 2 threads.
 
-The season: 30 daily charts on 0.05 deg pixels of the Kara Sea (70-78 N, 55-105 E: 160 x 1000)
-with an ice edge retreating north 0.15 deg a day, thin first-year ice (4-7/10) behind it and
-medium first-year (8/10) beyond, land along the south and a Novaya-Zemlya-like bar."""
+Rows of one vessel, port and departure come from one search (OpenSeason.routes): each equals
+the single route(method="dijkstra") answer (asserted on a sample), and every run's table equals
+the serial run's (asserted).
+
+The season: 150 daily charts on 0.05 deg pixels of the Kara Sea (70-78 N, 55-105 E: 160 x 1000)
+with an ice edge retreating north 0.06 deg a day, thin first-year ice (4-7/10) behind it and
+medium first-year (8/10) beyond, land along the south and a Novaya-Zemlya-like bar. Ports: five
+in the south-west, five in the north-east; the voyages are the 25 pairs both ways."""
 
 import time
 
@@ -19,10 +24,14 @@ from seaway.fleet import daily, route_voyages
 from .conftest import NOTES, record
 
 pytest.importorskip("pandas")
-DAY0 = np.datetime64("2026-07-01T00")
+DAY0 = np.datetime64("2026-06-15T00")
 CLASSES = ("Arc4", "Arc5", "Arc7")
-VOYAGES = {f"v{i}": ((70.6 + 0.3 * i, 56.5 + 0.5 * i), (77.0 - 0.2 * i, 100.0 - 1.5 * i)) for i in range(5)}
-DEPARTURES = daily(DAY0, DAY0 + np.timedelta64(3, "D"))
+WEST = [(70.45, 58.0), (71.2, 66.5), (72.5, 69.0), (73.5, 58.5), (70.6, 73.0)]
+EAST = [(72.0, 80.0), (73.5, 80.5), (75.5, 88.0), (76.5, 97.0), (77.3, 104.0)]
+VOYAGES = {f"w{i}-e{j}": (a, b) for i, a in enumerate(WEST) for j, b in enumerate(EAST)}
+VOYAGES |= {f"e{j}-w{i}": (b, a) for i, a in enumerate(WEST) for j, b in enumerate(EAST)}
+SLICE = daily(DAY0, DAY0 + np.timedelta64(4, "D"))  # 5 departures: 750 routes
+STUDY = daily(DAY0, DAY0 + np.timedelta64(119, "D"))  # 120 departures: 18,000 routes
 _SERIAL = {}
 
 
@@ -31,16 +40,19 @@ def season(tmp_path_factory):
     lat = np.round(np.arange(77.975, 69.99, -0.05), 6)
     lon = np.round(np.arange(55.025, 105.0, 0.05), 6)
     la, lo = np.meshgrid(lat, lon, indexing="ij")
-    days = 30
-    beyond = la[None] - (71.5 + 0.15 * np.arange(days)[:, None, None])
-    ct = np.where(beyond < 0, 0.0, np.where(beyond < 1, 4.0, np.where(beyond < 3, 7.0, 8.0)))
-    sa = np.where(beyond < 0, np.nan, np.where(beyond < 3, 87.0, 91.0))
+    days = 150
+    ct = np.empty((days,) + la.shape, np.float32)
+    sa = np.empty_like(ct)
+    for d in range(days):
+        beyond = la - (71.5 + 0.06 * d)
+        ct[d] = np.where(beyond < 0, 0.0, np.where(beyond < 1, 4.0, np.where(beyond < 3, 7.0, 8.0)))
+        sa[d] = np.where(beyond < 0, np.nan, np.where(beyond < 3, 87.0, 91.0))
     land = (la < 70.3) | ((lo <= 57.0) & (la >= 71.0) & (la <= 76.5))
     ds = xr.Dataset(
         {
             "CT": (("time", "lat", "lon"), ct),
             "SA": (("time", "lat", "lon"), sa),
-            "land": (("time", "lat", "lon"), np.broadcast_to(land, ct.shape)),
+            "land": (("lat", "lon"), land),
         },
         coords={"time": DAY0 + np.arange(days) * np.timedelta64(1, "D"), "lat": lat, "lon": lon},
     )
@@ -49,8 +61,8 @@ def season(tmp_path_factory):
     return seaway.open_season(str(path))
 
 
-def _study(season, **kw):
-    return route_voyages(season, VOYAGES, vessels=CLASSES, departures=DEPARTURES, snap_km=30, **kw)
+def _study(season, departures=SLICE, **kw):
+    return route_voyages(season, VOYAGES, vessels=CLASSES, departures=departures, snap_km=30, **kw)
 
 
 def _serial(season):
@@ -65,9 +77,18 @@ def _rate(name, benchmark, table):
     ok = int((table.status == "ok").sum())
     NOTES[name] = (
         f"{n} routes ({ok} ok, waits {table.wait_h.fillna(0).sum():.0f} h in all): {n / med:.1f} routes/s; "
-        f"the 18,000-route study would take {18000 / (n / med) / 60:.0f} min at this rate"
+        f"the 18,000-route study would take {18000 / (n / med) / 60:.1f} min at this rate"
     )
     record(name, benchmark, NOTES[name])
+
+
+def _check_rows(season, table, every=97):
+    """A sample of rows equals the single route(method="dijkstra") answer."""
+    for row in table.iloc[::every].itertuples():
+        start, end = VOYAGES[row.voyage]
+        depart = np.datetime64(row.departure, "s")
+        r = season.route(start, end, vessel=row.vessel, depart=depart, snap_km=30, method="dijkstra")
+        assert row.status == "ok" and row.hours == r.stats.voyage.hours
 
 
 @pytest.mark.parametrize("threads", [1, 2])
@@ -77,6 +98,7 @@ def test_season_study_on_threads(benchmark, season, threads):
         lambda: _study(season, threads=threads), rounds=3, iterations=1, warmup_rounds=0
     )
     assert table.drop(columns="error").equals(want.drop(columns="error"))
+    _check_rows(season, table)
     _rate(f"season study, {threads} thread(s)", benchmark, table)
 
 
@@ -88,7 +110,10 @@ def test_season_study_on_a_local_cluster(benchmark, season):
             t = time.perf_counter()
             client.run(lambda: None)
             table = benchmark.pedantic(
-                lambda: _study(season, cluster=client), rounds=3, iterations=1, warmup_rounds=0
+                lambda: _study(season, cluster=client, progress=False),
+                rounds=3,
+                iterations=1,
+                warmup_rounds=0,
             )
             rss = client.run(lambda: __import__("psutil").Process().memory_info().rss)
     assert table.drop(columns="error").equals(want.drop(columns="error"))
@@ -96,3 +121,13 @@ def test_season_study_on_a_local_cluster(benchmark, season):
     NOTES["season study, local cluster (2 workers)"] += (
         f"; worker memory {max(rss.values()) / 2**20:.0f} MiB at most; cluster ready in {time.perf_counter() - t:.1f} s"
     )
+
+
+def test_the_whole_study_on_two_threads(benchmark, season):
+    """The issue's study as it is asked: 120 days x 3 classes x 50 voyages, once."""
+    table = benchmark.pedantic(
+        lambda: _study(season, departures=STUDY, threads=2), rounds=1, iterations=1, warmup_rounds=0
+    )
+    assert len(table) == 18000
+    _check_rows(season, table, every=1499)
+    _rate("season study, all 18,000 routes, 2 threads", benchmark, table)

@@ -85,13 +85,15 @@ class TimedLegs:
 
     def __init__(self, chart: Chart, model: _core.TimeModel, neighbourhood: int = 3) -> None:
         self.chart = chart
-        self.router = _core.make_router(
-            chart.values, chart.land, chart.grid, neighbourhood, "full", "segment"
-        )
-        closed = ~(np.isfinite(chart.values) & (chart.values >= 0))
-        if chart.land is not None:
-            closed |= chart.land.astype(bool)
-        self.pricer = _core.TimedLegs(self.router, model, closed.astype(np.uint8))
+        key = ("timed legs", neighbourhood)
+        if key not in chart.kept:  # built once per chart: a season's routes share it
+            router = _core.make_router(chart.values, chart.land, chart.grid, neighbourhood, "full", "segment")
+            closed = ~(np.isfinite(chart.values) & (chart.values >= 0))
+            if chart.land is not None:
+                closed |= chart.land.astype(bool)
+            chart.kept[key] = (router, closed.astype(np.uint8))
+        self.router, closed = chart.kept[key]
+        self.pricer = _core.TimedLegs(self.router, model, closed)
 
     def arrive(self, p: Vertex, q: Vertex, depart_h: float) -> float:
         """Hours after departure at which the leg p -> q, left at depart_h, arrives (inf if it is

@@ -5,7 +5,7 @@ All validation happens here, so the C++ core only sees consistent input."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
@@ -38,6 +38,11 @@ class Chart:
     x: npt.NDArray[np.floating] | None = None
     template: xr.DataArray | None = None  # the DataArray the cost came in, for DataArray results
     lowest: float = float("nan")  # the smallest cost, NaN ignored (NaN: not known or all NaN)
+    #: What pricing legs on the chart builds once (seaway.chart.legs.TimedLegs), by neighbourhood.
+    kept: dict[Any, Any] = field(default_factory=dict, init=False, repr=False, compare=False)
+
+    def __getstate__(self) -> dict[str, Any]:
+        return dict(self.__dict__, kept={})  # the engine's objects are rebuilt where unpickled
 
     @property
     def geographic(self) -> bool:
