@@ -154,6 +154,12 @@ def test_a_dask_cluster_gives_the_threads_table(season, table):
             cluster=client,
         )
         assert client.status == "running"  # a client given is left open
+        sent = []
+        scatter = client.scatter
+        client.scatter = lambda *a, **k: sent.append(a) or scatter(*a, **k)
+        again = route_voyages(season, {"sea": SEA}, vessels=("Arc7",), departures=DAYS, cluster=client)
+        assert sent == []  # the season on the workers is reused by the next batch
+        assert list(again.hours) == list(table[(table.vessel == "Arc7") & (table.voyage == "sea")].hours)
     cluster.close()
     assert dist.drop(columns="error").equals(table.drop(columns="error"))
     assert list(dist.hours.dropna()) == list(table.hours.dropna()) and len(dist.hours.dropna()) == 3

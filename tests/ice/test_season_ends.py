@@ -159,3 +159,22 @@ def test_real_ocean_model_season_ends_and_a_way_closed_by_ice(shared_data):
     assert np.isfinite(route_season(grid, start, (36, 66), ice_class="Arc7", v0_kn=12).cost)
     with pytest.raises(NoRouteError):
         route_season(grid, start, (36, 66), ice_class="Arc6", v0_kn=12)
+
+
+@pytest.mark.needs_data("ocean_model", "metno_ROMS_Arctic20_1to5Feb_2016.nc")
+def test_an_ocean_models_own_land_mask_is_the_seasons_land(shared_data):
+    """The ROMS file's `mask` (area_type; option_0 land) closes its 363 land pixels, said in
+    every route's notes, and an end there is refused as land (not as unknown ice)."""
+    import xarray as xr
+
+    path = shared_data / "ocean_model" / "metno_ROMS_Arctic20_1to5Feb_2016.nc"
+    with xr.open_dataset(path) as src:
+        mask = src["mask"].values
+    season = seaway.open_season(str(path))
+    assert np.array_equal(season.grid.dry, mask == 0) and int(season.grid.dry.sum()) == 363
+    start, land = season.plane.to_user((20, 2)), season.plane.to_user((37, 90))  # pixel centres
+    assert mask[37, 90] == 0 and season.pixel(land) == (37, 90)
+    with pytest.raises(SnapError, match=r"is on an impassable pixel \(land\)"):
+        season.route(start, land, vessel="Arc7")
+    r = season.route(start, season.plane.to_user((30, 40)), vessel="Arc7")
+    assert "land: the file's mask (0 is land, 1 water)" in r.stats.voyage.assumptions

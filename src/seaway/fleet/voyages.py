@@ -12,6 +12,7 @@ from __future__ import annotations
 import inspect
 import os
 import sys
+import weakref
 from collections.abc import Callable, Iterable, Mapping
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
@@ -70,7 +71,8 @@ def route_voyages(
     cluster: run on dask.distributed instead (as route_many: a Client, a scheduler address, or
         True / "local" for a LocalCluster of 2 workers, closed afterwards): `source` is sent to
         each worker once (and keeps what it computed for the batch there: each class's speeds
-        in every chart) and every row is computed by the same code, so the table is the same.
+        in every chart), and on a Client given the next batch through the same source reuses
+        it; every row is computed by the same code, so the table is the same.
     keep_routes: add a `route` column with each Route (None where it failed, or read back from
         the journal).
     journal: a CSV file each row is appended to as soon as it is routed; when it exists, the
@@ -183,6 +185,26 @@ def _run(one: Callable, work: list, threads: int) -> list:
         pool.shutdown(wait=True, cancel_futures=True)
 
 
+#: Each source sent to a client's workers, by client: the next batch on the same warm client
+#: reuses it (and what the workers computed for it: each class's speeds in every chart). An
+#: entry goes when its source is garbage-collected, which releases the workers' copies.
+_SENT: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _scattered(client, source, keep: bool):
+    """The future of `source` on every worker of `client`: sent once (per client, when `keep`)."""
+    try:
+        sent = _SENT.setdefault(source, {}) if keep else None
+    except TypeError:  # a source that cannot be weakly referenced: sent for this batch only
+        sent = None
+    future = None if sent is None else sent.get(client.id)
+    if future is None or future.status != "finished":
+        future = client.scatter(source, broadcast=True, hash=False)
+        if sent is not None:
+            sent[client.id] = future
+    return future
+
+
 def _unit_rows(source, units_, options, keep) -> list[list[dict]]:
     """The rows of a share of the batch's units, on a worker."""
     return [unit_rows(source, unit, options, keep) for unit in units_]
@@ -194,7 +216,7 @@ def _run_dask(source, work, options, keep, cluster, done) -> list:
 
     client, own = open_client(cluster)
     try:
-        shared = client.scatter(source, broadcast=True, hash=False)  # once per worker
+        shared = _scattered(client, source, keep=not own)
         workers = max(len(client.scheduler_info().get("workers", {})), 1)
         size = max(len(work) // (4 * workers), 1)
         shares = [work[i : i + size] for i in range(0, len(work), size)]

@@ -107,12 +107,31 @@ def as_season(season) -> xr.Dataset:
             f"stage) or thickness (m, or CF sea_ice_thickness); it has {sorted(ds.data_vars)}"
         )
     if "land" not in ds:
-        ds = ds.assign(land=xr.zeros_like(ds["CT"], dtype=bool))
+        found = land_of(ds)
+        ds = ds.assign(land=xr.zeros_like(ds["CT"], dtype=bool) if found is None else found)
     _check_increasing(ds["time"].values, "ds.sortby('time')")
     for name, lo, hi, what in PLAUSIBLE:
         if name in ds:
             _check_range(ds[name], lo, hi, what)
     return ds
+
+
+def land_of(ds: xr.Dataset) -> xr.DataArray | None:
+    """The land a season file's own mask marks, or None: CF land_binary_mask (1: land) or
+    sea_binary_mask (1: sea), or an ocean model's 0/1 land-sea mask (ROMS `mask`, `mask_rho`;
+    met.no's area_type with option_0 "land"), where 0 is land. Its attrs say which was read."""
+    for name, v in ds.data_vars.items():
+        std, opt0 = v.attrs.get("standard_name"), str(v.attrs.get("option_0", "")).strip().lower()
+        if std == "land_binary_mask":
+            land, rule = v == 1, f"the file's {name} (CF land_binary_mask: 1 is land)"
+        elif std == "sea_binary_mask" or name in ("mask", "mask_rho") or (std == "area_type" and opt0 == "land"):
+            land, rule = v == 0, f"the file's {name} (0 is land, 1 water)"
+        else:
+            continue
+        if set(np.unique(np.asarray(v.values))) - {0, 1}:
+            continue  # not a 0/1 mask
+        return land.assign_attrs(read_from=rule)
+    return None
 
 
 #: What a season's layers may hold (NaN: unknown): anything else is a damaged file or a wrong unit.
@@ -168,6 +187,8 @@ class SeasonGrid:
                 )
             dry |= land
         self.dry = dry
+        if "read_from" in self.ds["land"].attrs:
+            self.assumptions += (f"land: {self.ds['land'].attrs['read_from']}",)
         #: 1/k, the projection's point scale factor, on a projected grid whose true km are known
         #: (seaway.voyage.seasonproj): the hours per km are then per true km. None: grid km.
         self.per_true_km: npt.NDArray[np.float64] | None = None
