@@ -124,7 +124,11 @@ def land_of(ds: xr.Dataset) -> xr.DataArray | None:
         std, opt0 = v.attrs.get("standard_name"), str(v.attrs.get("option_0", "")).strip().lower()
         if std == "land_binary_mask":
             land, rule = v == 1, f"the file's {name} (CF land_binary_mask: 1 is land)"
-        elif std == "sea_binary_mask" or name in ("mask", "mask_rho") or (std == "area_type" and opt0 == "land"):
+        elif (
+            std == "sea_binary_mask"
+            or name in ("mask", "mask_rho")
+            or (std == "area_type" and opt0 == "land")
+        ):
             land, rule = v == 0, f"the file's {name} (0 is land, 1 water)"
         else:
             continue
