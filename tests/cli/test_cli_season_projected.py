@@ -55,6 +55,7 @@ def test_roms_season_by_lat_lon_writes_degrees_and_replans(shared_data, tmp_path
     line = np.array(feature["geometry"]["coordinates"], float)[:, ::-1]
     assert np.allclose(line, expected, atol=1e-9)
     assert feature["properties"]["requested_start"] == list(START)
+    assert feature["properties"]["ice_class"] == "Arc4"
 
     # seaway replan reads the GeoJSON's degrees and times: the ship's position at --at is the
     # line's, linear in time between its vertices (worked here from the file).
@@ -71,6 +72,7 @@ def test_roms_season_by_lat_lon_writes_degrees_and_replans(shared_data, tmp_path
     assert code == 0, err
     assert f"the ship is at {here[0]:.4f},{here[1]:.4f} (after vertex {i + 1} of {len(line)})" in out
     assert f"re-planning to {line[-1, 0]:.4f},{line[-1, 1]:.4f}" in out
+    assert "the route's ice class Arc4" in out  # not the default Arc7
     replanned = list(csv.DictReader(x for x in again.read_text().splitlines() if not x.startswith("#")))
     first = (float(replanned[0]["lat"]), float(replanned[0]["lon"]))
     # the centre of the forecast grid's 20-km pixel holding it: within half its diagonal

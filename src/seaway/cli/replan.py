@@ -34,6 +34,7 @@ def run_replan(args) -> int:
         args.at,
         end=args.end,
         vessel=vessel,
+        ice_class=args.vessel,
         persist=args.persist,
         objective=args.objective or "time",
         arrive_by=args.arrive_by,
@@ -64,7 +65,9 @@ def add_replan_command(commands) -> None:
     )
     rp.add_argument("--to", dest="end", type=point, metavar="LAT,LON", help="a new end (default the route's)")
     rp.add_argument("--speed", type=float, metavar="KN", help="calm-water speed (default the route's)")
-    rp.add_argument("--vessel", metavar="CLASS", help="ice class (unused on the forecast's grid)")
+    rp.add_argument(
+        "--vessel", metavar="CLASS", help="ice class through ice (default the route's, else Arc7)"
+    )
     rp.add_argument(
         "--neighbourhood",
         type=neighbourhood,

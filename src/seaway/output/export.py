@@ -219,13 +219,15 @@ def _opt(v, digits):
 
 
 def _voyage_properties(route) -> dict:
-    """GeoJSON properties of a route with a departure: the time at every vertex of its line (the
-    waypoints' ETAs, ISO 8601, in the order of the line) and each waypoint's ETA and ETD; empty
-    for other routes."""
+    """GeoJSON properties of a route with a departure: the ice class it was routed for (routes
+    through ice), the time at every vertex of its line (the waypoints' ETAs, ISO 8601, in the
+    order of the line) and each waypoint's ETA and ETD; empty for other routes."""
     wl = waypoint_list(route)
     if not wl.dated:
         return {}
-    return {
+    voyage = route.stats.voyage
+    cls = {} if voyage is None or not getattr(voyage, "ice_class", None) else {"ice_class": voyage.ice_class}
+    return cls | {
         "vertex_times": [iso(t) for t in wl.eta],
         "waypoint_schedule": [
             {"waypoint": k, "eta": iso(a), "etd": iso(d)}

@@ -56,8 +56,8 @@ def replan_voyage(path, forecast: OpenForecast, at, *, end=None, vessel=None, **
     """(the new Route, (lat, lon) of the ship at `at`, what was decided in words): the quickest
     route from where the ship is at `at` on the voyage GeoJSON `path` (a route through a forecast,
     with vertex times) to `end` (default the voyage's) through `forecast`, leaving at `at`. The
-    vessel defaults to the voyage's speed (its speed_kn property); route_options go to
-    OpenForecast.route."""
+    vessel defaults to the voyage's speed (its speed_kn property), the ice class to the voyage's
+    (its ice_class property, through ice); route_options go to OpenForecast.route."""
     xy, times, props = read_voyage(path)
     if at is None:
         raise SeawayError("give the time to re-plan from (--at ISO-TIME), within the voyage")
@@ -71,5 +71,14 @@ def replan_voyage(path, forecast: OpenForecast, at, *, end=None, vessel=None, **
     if vessel is None and props.get("speed_kn"):
         vessel = Vessel(speed_kn=float(props["speed_kn"]))
         notes.append(f"the route's speed {vessel.speed_kn:g} kn (give --speed or --vessel-file to change it)")
+    if (
+        route_options.get("ice_class") is None
+        and props.get("ice_class")
+        and getattr(vessel, "ice_class", None) is None
+    ):
+        route_options["ice_class"] = props["ice_class"]  # through ice: the class the route was for
+        notes.append(
+            f"the route's ice class {props['ice_class']} (give --vessel CLASS or --vessel-file to change it)"
+        )
     r = forecast.route(here, end, vessel=vessel, depart=at, **route_options)
     return dataclasses.replace(r, notes=tuple(notes) + tuple(r.notes)), here, notes
