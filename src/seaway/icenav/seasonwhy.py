@@ -53,7 +53,12 @@ def usable(model: IceSeasonTime) -> np.ndarray:
 def closed_reason(model: IceSeasonTime):
     """(row, col) -> what keeps the class off a pixel in every chart from the departure on."""
     grid, first = model.season, model.season.times.size - model.valid_from_h.size
-    ice = describer(grid.ds.isel(time=first), model.fast_ice)
+    read: list = []  # the departure chart's describer, read when a pixel is first asked about
+
+    def ice(r, c) -> str:
+        if not read:
+            read.append(describer(grid.ds.isel(time=first), model.fast_ice))
+        return read[0](r, c)
 
     def why(r, c) -> str:
         if grid.dry[r, c]:
