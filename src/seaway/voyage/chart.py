@@ -10,6 +10,7 @@ from ..errors import ChartError
 from ..ice.concentration import DEFAULT_STAGE
 from ..ice.forms import DEFAULT_FAST_ICE, check_fast_ice
 from ..ice.impact import chart_impact, ice_impact
+from .chartfield import arrival_field, time_cost
 from .projected import in_km
 from .route import route_chart
 
@@ -17,6 +18,7 @@ if TYPE_CHECKING:
     import xarray as xr
 
     from ..result.route import Route
+    from ..vessel import Vessel
     from .projected import Projection
 
 
@@ -155,3 +157,24 @@ class OpenChart:
         projection), as ``seaway route`` finds it: ends checked and snapped, the no-route
         explanation, smoothing, times in the ice. Options: seaway.voyage.route.route_chart."""
         return route_chart(self, start, end, **options)
+
+    def arrival_field(self, start: tuple[float, float], **options: Any) -> xr.DataArray:
+        """Hours the ship takes from `start` (lat, lon; ROW, COL on a planar chart without a
+        projection) to every pixel: the isochrones of one chart, a DataArray in hours (units
+        "h"; lat/lon coordinates, 2-D beside y/x in km on a projected chart), inf where the ship
+        may not go or cannot reach. The model is route(objective="time")'s: options vessel,
+        speed_kn, escort, escort_speed_kn, stage_thickness, draft_m, ukc_m and neighbourhood
+        as route() takes them; route(..., objective="time", smooth=False) to a pixel costs its
+        value there. One search serves every destination (seaway.fleet.od_matrix)."""
+        return arrival_field(self, start, **options)
+
+    def hours_per_km(self, vessel: Vessel | str | None = None, **options: Any) -> xr.DataArray:
+        """The hours per km the least-time route (route(objective="time")) and arrival_field
+        search for `vessel`: the ship's speed in each pixel's ice (seaway.ice.speed), inf where
+        its class may not go (the chart's impact is inf: land, ice closed to the class) or it
+        has no speed of its own there (escort=True: the escort's speed); per true km on a
+        projected chart (y/x in km). options: speed_kn, escort, escort_speed_kn,
+        stage_thickness, draft_m, ukc_m. seaway.cost_field on it, with the chart's land, is
+        arrival_field; 1 / seaway.ice.ice_speed is not: a speed does not close what the class
+        may not enter."""
+        return time_cost(self, vessel=vessel, **options)[0]
