@@ -12,7 +12,7 @@ import pytest
 import xarray as xr
 
 import seaway
-from seaway.errors import ChartError, SeawayError
+from seaway.errors import ChartError, SeawayError, SnapError
 from seaway.fleet import od_matrix
 from seaway.ice import ice_speed
 from seaway.samples import synthetic_endpoints, synthetic_sea
@@ -61,8 +61,20 @@ def test_a_cost_raster_has_no_hours_and_options_are_checked(kara, tmp_path):
         seaway.open_chart(str(path)).arrival_field(synthetic_endpoints((60, 80))[0])
     with pytest.raises(SeawayError, match=r"takes none of \['depart'\]; it takes vessel, speed_kn"):
         kara.arrival_field(KARA_START, depart="2026-03-01")
-    with pytest.raises(SeawayError, match="start is on an impassable pixel"):
+    with pytest.raises(
+        SnapError,
+        match=r"^start 71,70 is on an impassable pixel \(land\); the nearest point the ship may use is 71.5921,67.6217, 107.3 km away: give it, or pass --snap to move the start there$",
+    ):
         kara.arrival_field((71.0, 70.0), vessel="Arc7")  # on the Yamal shore
+
+
+def test_a_start_on_land_snaps_as_a_routes_start(kara):
+    field = kara.arrival_field((71.0, 70.0), vessel="Arc7", snap_km=110)
+    assert field.attrs["notes"].endswith("moved 107.3 km to 71.5921,67.6217 (--snap, at most 110 km)")
+    r = kara.route((71.0, 70.0), (70.43, 57.9), vessel="Arc7", objective="time", smooth=False, snap_km=110)
+    assert np.argwhere(np.asarray(field.values) == 0.0).tolist() == [r.pixels[0].tolist()] == [[1412, 675]]
+    assert r.cost == pytest.approx(float(field.values[tuple(r.pixels[-1])]), abs=1e-9)
+    assert r.cost == pytest.approx(55.677218310774, abs=1e-9)
 
 
 @pytest.mark.needs_data(*NSIDC)

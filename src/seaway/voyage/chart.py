@@ -163,9 +163,10 @@ class OpenChart:
         projection) to every pixel: the isochrones of one chart, a DataArray in hours (units
         "h"; lat/lon coordinates, 2-D beside y/x in km on a projected chart), inf where the ship
         may not go or cannot reach. The model is route(objective="time")'s: options vessel,
-        speed_kn, escort, escort_speed_kn, stage_thickness, draft_m, ukc_m and neighbourhood
-        as route() takes them; route(..., objective="time", smooth=False) to a pixel costs its
-        value there. One search serves every destination (seaway.fleet.od_matrix)."""
+        speed_kn, escort, escort_speed_kn, stage_thickness, draft_m, ukc_m, neighbourhood and
+        snap_km (a start the ship may not use moves at most that far; None: refused, naming
+        why) as route() takes them; route(..., objective="time", smooth=False) to a pixel costs
+        its value there. One search serves every destination (seaway.fleet.od_matrix)."""
         return arrival_field(self, start, **options)
 
     def hours_per_km(self, vessel: Vessel | str | None = None, **options: Any) -> xr.DataArray:

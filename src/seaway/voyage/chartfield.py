@@ -11,12 +11,14 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..engine.api import prepare
-from ..errors import ChartError, SeawayError
+from ..engine.snap import DEFAULT_SNAP_KM
+from ..errors import ChartError, SeawayError, SnapError
 from ..models import EdgeCost
 from .depth import with_draft
-from .projected import end_pixel, true_cost
+from .ends import check_ends
+from .projected import end_pixel, pixel_latlon, true_cost
 from .ship import as_vessel
-from .timing import ice_time, search_cost
+from .timing import end_reasons, ice_time, search_cost
 
 if TYPE_CHECKING:
     import xarray as xr
@@ -35,9 +37,10 @@ def time_cost(
     stage_thickness: Any = None,
     draft_m: float | None = None,
     ukc_m: float | None = None,
-) -> tuple[xr.DataArray, Any]:
-    """(hours per true km on the chart's grid, inf where the ship may not go; the Vessel) — the
-    raster OpenChart.route(objective="time") searches, built as route() builds it."""
+) -> tuple[xr.DataArray, Any, dict[str, Any]]:
+    """(hours per true km on the chart's grid, inf where the ship may not go; the Vessel; what
+    check_ends needs to say why an end is closed) — the raster OpenChart.route(objective="time")
+    searches, built as route() builds it."""
     if not chart.is_ice or chart.layers is None:
         raise ChartError(
             f"{chart.source} is a cost raster ({chart.description}): hours need an ice chart (a "
@@ -52,7 +55,8 @@ def time_cost(
     if draft is not None and draft_m is None and chart.depth is None:
         draft = None  # route() says so: the chart has no depth to enforce the vessel's draft on
     ukc = ukc_m if ukc_m is not None else (ship.ukc_m if draft is not None else None)
-    cost, _ = with_draft(chart.cost_for(cls), chart.depth, draft, ukc)
+    chart_cost = chart.cost_for(cls)
+    cost, shallow = with_draft(chart_cost, chart.depth, draft, ukc)
     timing = ice_time(
         chart,
         cls,
@@ -63,22 +67,59 @@ def time_cost(
         stage_thickness=stage_thickness,
         draft_m=draft,
     )
-    return true_cost(chart.projection, search_cost(cost, timing, "time")), ship
+    hours = true_cost(chart.projection, search_cost(cost, timing, "time"))
+    return hours, ship, {"chart_cost": chart_cost, "reasons": end_reasons(shallow, timing), "vessel": cls}
 
 
 def arrival_field(
-    chart: OpenChart, start: tuple[float, float], *, neighbourhood: int = 5, **options: Any
+    chart: OpenChart,
+    start: tuple[float, float],
+    *,
+    neighbourhood: int = 5,
+    snap_km: float | None = None,
+    **options: Any,
 ) -> xr.DataArray:
     """Hours from `start` to every pixel of `chart` (inf where the ship may not go or cannot
-    reach): OpenChart.arrival_field."""
-    keys = ("vessel", "speed_kn", "escort", "escort_speed_kn", "stage_thickness", "draft_m", "ukc_m")
-    unknown = sorted(set(options) - set(keys))
+    reach): OpenChart.arrival_field. A start the ship may not use is refused as route() refuses
+    it (why, and the nearest usable point), or with snap_km moved there when that is at most
+    snap_km away (the field's attribute `start_used` says where)."""
+    keys = (
+        "vessel",
+        "speed_kn",
+        "escort",
+        "escort_speed_kn",
+        "stage_thickness",
+        "draft_m",
+        "ukc_m",
+        "snap_km",
+    )
+    unknown = sorted(set(options) - set(keys[:-1]))
     if unknown:
         raise SeawayError(f"arrival_field takes none of {unknown}; it takes {', '.join(keys)}")
-    hours, ship = time_cost(chart, **options)
+    hours, ship, why = time_cost(chart, **options)
     point = tuple(start)
     if chart.projection is not None:
         point = end_pixel(hours, chart.projection, point, "start")
+    to_user = pixel_latlon(hours, chart.projection)
+    try:  # the start as route() checks an end (both ends of check_ends: the start)
+        (point, _), moved = check_ends(
+            hours,
+            chart.land,
+            chart.layers,
+            (point, point),
+            vessel=why["vessel"],
+            snap=snap_km is not None,
+            snap_km=snap_km if snap_km is not None else DEFAULT_SNAP_KM,
+            say=lambda note: None,
+            neighbourhood=neighbourhood,
+            reasons=why["reasons"],
+            fast_ice=chart.options.fast_ice,
+            chart_cost=why["chart_cost"],
+            to_user=to_user,
+            asked=(tuple(start), tuple(start)),
+        )
+    except SnapError as exc:  # say it once, for the start
+        raise SnapError(exc.moves[:1], exc.limit, exc.unit, str(exc).split("; end ", 1)[0]) from None
     out = prepare(hours, land=chart.land, neighbourhood=neighbourhood).cost_field(
         point, model=EdgeCost("integral", unit="h")
     )
@@ -107,4 +148,7 @@ def arrival_field(
         "speed_kn": float(ship.speed_kn),
         "chart": chart.source,
     }
+    if moved:  # the start as routed, and how it moved
+        used = to_user(point) if to_user is not None else tuple(point)
+        out.attrs.update(start_used=str(tuple(float(v) for v in used)), notes=moved[0])
     return out
