@@ -7,6 +7,8 @@ NSIDC's polar stereographic concentration and MET Norway's ROMS ice in ../shared
 
 from __future__ import annotations
 
+import pickle
+
 import numpy as np
 import pytest
 import xarray as xr
@@ -139,6 +141,11 @@ def test_od_matrix_on_an_opened_chart_is_the_routes_hours(shared_data):
             )
             assert od.loc[o, d] == pytest.approx(want, abs=1e-9)
     assert od.loc["North Cape", "Kolguyev"] == pytest.approx(od.loc["Kolguyev", "North Cape"], rel=1e-9)
+    # the search kept for the next origin is not pickled (to Dask workers); a copy builds its own
+    copy = pickle.loads(pickle.dumps(chart))
+    assert copy._searched == [] and len(chart._searched) == 2
+    again = copy.arrival_field(ports["Kolguyev"], speed_kn=11)
+    assert np.array_equal(again.values, chart.arrival_field(ports["Kolguyev"], speed_kn=11).values)
 
 
 def test_od_matrix_on_a_prepared_chart_is_the_routes_cost():

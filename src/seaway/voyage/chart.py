@@ -94,6 +94,12 @@ class OpenChart:
     #: A 2-D DataArray on the grid the route is searched on (projected charts: y/x in km).
     grid: xr.DataArray | None = None
     _costs: dict[str, xr.DataArray] = field(default_factory=dict, repr=False)
+    #: The last least-time search set up by arrival_field: [options, what it built] (chartfield).
+    _searched: list[Any] = field(default_factory=list, repr=False)
+
+    def __getstate__(self) -> dict[str, Any]:
+        """Pickled (to Dask workers) without the kept search, which the worker builds again."""
+        return {**self.__dict__, "_searched": []}
 
     @property
     def is_ice(self) -> bool:

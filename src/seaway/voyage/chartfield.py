@@ -96,7 +96,7 @@ def arrival_field(
     unknown = sorted(set(options) - set(keys[:-1]))
     if unknown:
         raise SeawayError(f"arrival_field takes none of {unknown}; it takes {', '.join(keys)}")
-    hours, ship, why = time_cost(chart, **options)
+    hours, ship, why, prepared = _search(chart, neighbourhood, options)
     point = tuple(start)
     if chart.projection is not None:
         point = end_pixel(hours, chart.projection, point, "start")
@@ -120,9 +120,7 @@ def arrival_field(
         )
     except SnapError as exc:  # say it once, for the start
         raise SnapError(exc.moves[:1], exc.limit, exc.unit, str(exc).split("; end ", 1)[0]) from None
-    out = prepare(hours, land=chart.land, neighbourhood=neighbourhood).cost_field(
-        point, model=EdgeCost("integral", unit="h")
-    )
+    out = prepared.cost_field(point, model=EdgeCost("integral", unit="h"))
     out = out.copy(data=np.asarray(out.values, float))
     if chart.projection is not None:  # lat/lon of every pixel centre beside the grid's km
         y, x = np.meshgrid(np.asarray(out.y.values, float), np.asarray(out.x.values, float), indexing="ij")
@@ -152,3 +150,19 @@ def arrival_field(
         used = to_user(point) if to_user is not None else tuple(point)
         out.attrs.update(start_used=str(tuple(float(v) for v in used)), notes=moved[0])
     return out
+
+
+def _search(chart: OpenChart, neighbourhood: int, options: dict[str, Any]) -> tuple[Any, ...]:
+    """(hours per km, ship, why, the prepared chart) for these options: the last ones kept on
+    the chart, so fields from many starts (od_matrix) build the search once. Kept only when
+    every option is a plain value (a Vessel or a thickness table builds it afresh)."""
+    key = (neighbourhood, tuple(sorted(options.items())))
+    plain = all(v is None or isinstance(v, (str, int, float, bool)) for _, v in key[1])
+    memo = chart._searched
+    if plain and memo and memo[0] == key:
+        return memo[1]
+    hours, ship, why = time_cost(chart, **options)
+    built = (hours, ship, why, prepare(hours, land=chart.land, neighbourhood=neighbourhood))
+    if plain:
+        memo[:] = [key, built]
+    return built
