@@ -161,3 +161,30 @@ def test_od_matrix_on_a_prepared_chart_is_the_routes_cost():
     assert od.loc["a", "b"] == pytest.approx(od.loc["b", "a"], rel=1e-12)  # a static chart: symmetric
     with pytest.raises(seaway.SeawayTypeError, match=r"prepare it first \(seaway.prepare"):
         od_matrix(cost, ports)
+
+
+@pytest.mark.needs_data(*NSIDC)
+def test_the_concentration_limit_closes_ice_over_the_class_limit_in_route_and_field(shared_data):
+    """Issue 30: the chart's least-time model took no concentration limit, which a season
+    applies by default; concentration_limit=True closes ice over the class's max_concentration
+    in hours_per_km, arrival_field and route alike (NSIDC, PC3: limit 8/10)."""
+    chart = seaway.open_chart(str(shared_data.joinpath(*NSIDC)), vessel="PC3")
+    ct = np.asarray(chart.layers.CT.values, float)
+    start = (71.5, 25.0)
+    free, limited = chart.hours_per_km(), chart.hours_per_km(concentration_limit=True)
+    assert int(np.isfinite(free.values).sum()) == 67_259 and int(np.isfinite(limited.values).sum()) == 48_608
+    assert not (np.isfinite(limited.values) & (ct > 8)).any()
+    field = chart.arrival_field(start, concentration_limit=True)
+    hours = np.asarray(field.values)
+    assert int(np.isfinite(hours).sum()) == 27_557
+    assert int(np.isfinite(chart.arrival_field(start).values).sum()) == 66_899
+    cell = tuple(int(v) for v in np.argwhere(hours == 0.0)[0])
+    mine = np.asarray(seaway.cost_field(limited, cell, land=chart.land, edge_cost="integral").values)
+    assert np.array_equal(np.isfinite(mine), np.isfinite(hours))
+    assert np.allclose(mine[np.isfinite(mine)], hours[np.isfinite(hours)], rtol=0, atol=1e-9)
+    p = (350, 110)  # the pixel the limit delays most: 3.66 h of detour round the close ice
+    end = (float(field.lat[p]), float(field.lon[p]))
+    r = chart.route(start, end, objective="time", smooth=False, concentration_limit=True)
+    assert tuple(r.pixels[-1]) == p and r.cost == pytest.approx(hours[p], abs=1e-9)
+    r0 = chart.route(start, end, objective="time", smooth=False)
+    assert r.cost - r0.cost == pytest.approx(3.6598, abs=1e-4)

@@ -13,6 +13,7 @@ from ..ice.impact import chart_impact, ice_impact
 from .chartfield import arrival_field, time_cost
 from .projected import in_km
 from .route import route_chart
+from .timing import concentration_closed
 
 if TYPE_CHECKING:
     import xarray as xr
@@ -137,13 +138,18 @@ class OpenChart:
         """The cost per unit length routes are searched on by default (cost_for(None))."""
         return self.cost_for(None)
 
-    def cost_for(self, vessel: str | None = None) -> xr.DataArray:
+    def cost_for(self, vessel: str | None = None, *, concentration_limit: bool = False) -> xr.DataArray:
         """The cost per unit length the route is searched on: the cost raster, or the ice priced
-        for `vessel`'s class (Grinyak et al. 2022's impact; inf where the class may not go)."""
+        for `vessel`'s class (Grinyak et al. 2022's impact; inf where the class may not go).
+        concentration_limit: also inf where the total concentration is over the class's limit
+        for independent navigation (its max_concentration, Grinyak et al. 2022 Table 1), as a
+        season closes it by default."""
         cls = self.ice_class(vessel)
         if cls is None:
             assert self.fixed_cost is not None
             return self.fixed_cost
+        if concentration_limit:
+            return concentration_closed(self, cls, self.cost_for(cls))
         if cls not in self._costs:
             try:
                 if self.ice == "stage":
@@ -169,7 +175,8 @@ class OpenChart:
         projection) to every pixel: the isochrones of one chart, a DataArray in hours (units
         "h"; lat/lon coordinates, 2-D beside y/x in km on a projected chart), inf where the ship
         may not go or cannot reach. The model is route(objective="time")'s: options vessel,
-        speed_kn, escort, escort_speed_kn, stage_thickness, draft_m, ukc_m, neighbourhood and
+        speed_kn, escort, escort_speed_kn, stage_thickness, draft_m, ukc_m,
+        concentration_limit, neighbourhood and
         snap_km (a start the ship may not use moves at most that far; None: refused, naming
         why) as route() takes them; route(..., objective="time", smooth=False) to a pixel costs
         its value there. One search serves every destination (seaway.fleet.od_matrix)."""
@@ -181,7 +188,8 @@ class OpenChart:
         its class may not go (the chart's impact is inf: land, ice closed to the class) or it
         has no speed of its own there (escort=True: the escort's speed); per true km on a
         projected chart (y/x in km). options: speed_kn, escort, escort_speed_kn,
-        stage_thickness, draft_m, ukc_m. seaway.cost_field on it, with the chart's land, is
+        stage_thickness, draft_m, ukc_m, concentration_limit (True: ice over the class's
+        concentration limit closed too, as a season closes it by default). seaway.cost_field on it, with the chart's land, is
         arrival_field; 1 / seaway.ice.ice_speed is not: a speed does not close what the class
         may not enter."""
         return time_cost(self, vessel=vessel, **options)[0]

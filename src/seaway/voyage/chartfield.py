@@ -37,6 +37,7 @@ def time_cost(
     stage_thickness: Any = None,
     draft_m: float | None = None,
     ukc_m: float | None = None,
+    concentration_limit: bool = False,
 ) -> tuple[xr.DataArray, Any, dict[str, Any]]:
     """(hours per true km on the chart's grid, inf where the ship may not go; the Vessel; what
     check_ends needs to say why an end is closed) — the raster OpenChart.route(objective="time")
@@ -55,7 +56,7 @@ def time_cost(
     if draft is not None and draft_m is None and chart.depth is None:
         draft = None  # route() says so: the chart has no depth to enforce the vessel's draft on
     ukc = ukc_m if ukc_m is not None else (ship.ukc_m if draft is not None else None)
-    chart_cost = chart.cost_for(cls)
+    chart_cost = chart.cost_for(cls, concentration_limit=concentration_limit)
     cost, shallow = with_draft(chart_cost, chart.depth, draft, ukc)
     timing = ice_time(
         chart,
@@ -91,6 +92,7 @@ def arrival_field(
         "stage_thickness",
         "draft_m",
         "ukc_m",
+        "concentration_limit",
         "snap_km",
     )
     unknown = sorted(set(options) - set(keys[:-1]))
