@@ -1,7 +1,7 @@
 """Many routes in one call: route_many (static charts: voyages x vessels x charts, in threads or
 on a Dask cluster) and route_voyages (vessels x voyages x departures through an opened chart,
 season or forecast, waits for the ice included); od_matrix (hours between ports through a
-season, one search per origin)."""
+season or across one ice chart, or the cost on a prepared chart: one search per origin)."""
 
 from .many import COLUMNS, route_many
 from .matrix import od_matrix

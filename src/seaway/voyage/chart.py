@@ -10,13 +10,16 @@ from ..errors import ChartError
 from ..ice.concentration import DEFAULT_STAGE
 from ..ice.forms import DEFAULT_FAST_ICE, check_fast_ice
 from ..ice.impact import chart_impact, ice_impact
+from .chartfield import arrival_field, time_cost
 from .projected import in_km
 from .route import route_chart
+from .timing import concentration_closed
 
 if TYPE_CHECKING:
     import xarray as xr
 
     from ..result.route import Route
+    from ..vessel import Vessel
     from .projected import Projection
 
 
@@ -92,6 +95,12 @@ class OpenChart:
     #: A 2-D DataArray on the grid the route is searched on (projected charts: y/x in km).
     grid: xr.DataArray | None = None
     _costs: dict[str, xr.DataArray] = field(default_factory=dict, repr=False)
+    #: The last least-time search set up by arrival_field: [options, what it built] (chartfield).
+    _searched: list[Any] = field(default_factory=list, repr=False)
+
+    def __getstate__(self) -> dict[str, Any]:
+        """Pickled (to Dask workers) without the kept search, which the worker builds again."""
+        return {**self.__dict__, "_searched": []}
 
     @property
     def is_ice(self) -> bool:
@@ -129,13 +138,18 @@ class OpenChart:
         """The cost per unit length routes are searched on by default (cost_for(None))."""
         return self.cost_for(None)
 
-    def cost_for(self, vessel: str | None = None) -> xr.DataArray:
+    def cost_for(self, vessel: str | None = None, *, concentration_limit: bool = False) -> xr.DataArray:
         """The cost per unit length the route is searched on: the cost raster, or the ice priced
-        for `vessel`'s class (Grinyak et al. 2022's impact; inf where the class may not go)."""
+        for `vessel`'s class (Grinyak et al. 2022's impact; inf where the class may not go).
+        concentration_limit: also inf where the total concentration is over the class's limit
+        for independent navigation (its max_concentration, Grinyak et al. 2022 Table 1), as a
+        season closes it by default."""
         cls = self.ice_class(vessel)
         if cls is None:
             assert self.fixed_cost is not None
             return self.fixed_cost
+        if concentration_limit:
+            return concentration_closed(self, cls, self.cost_for(cls))
         if cls not in self._costs:
             try:
                 if self.ice == "stage":
@@ -155,3 +169,27 @@ class OpenChart:
         projection), as ``seaway route`` finds it: ends checked and snapped, the no-route
         explanation, smoothing, times in the ice. Options: seaway.voyage.route.route_chart."""
         return route_chart(self, start, end, **options)
+
+    def arrival_field(self, start: tuple[float, float], **options: Any) -> xr.DataArray:
+        """Hours the ship takes from `start` (lat, lon; ROW, COL on a planar chart without a
+        projection) to every pixel: the isochrones of one chart, a DataArray in hours (units
+        "h"; lat/lon coordinates, 2-D beside y/x in km on a projected chart), inf where the ship
+        may not go or cannot reach. The model is route(objective="time")'s: options vessel,
+        speed_kn, escort, escort_speed_kn, stage_thickness, draft_m, ukc_m,
+        concentration_limit, neighbourhood and
+        snap_km (a start the ship may not use moves at most that far; None: refused, naming
+        why) as route() takes them; route(..., objective="time", smooth=False) to a pixel costs
+        its value there. One search serves every destination (seaway.fleet.od_matrix)."""
+        return arrival_field(self, start, **options)
+
+    def hours_per_km(self, vessel: Vessel | str | None = None, **options: Any) -> xr.DataArray:
+        """The hours per km the least-time route (route(objective="time")) and arrival_field
+        search for `vessel`: the ship's speed in each pixel's ice (seaway.ice.speed), inf where
+        its class may not go (the chart's impact is inf: land, ice closed to the class) or it
+        has no speed of its own there (escort=True: the escort's speed); per true km on a
+        projected chart (y/x in km). options: speed_kn, escort, escort_speed_kn,
+        stage_thickness, draft_m, ukc_m, concentration_limit (True: ice over the class's
+        concentration limit closed too, as a season closes it by default). seaway.cost_field on it, with the chart's land, is
+        arrival_field; 1 / seaway.ice.ice_speed is not: a speed does not close what the class
+        may not enter."""
+        return time_cost(self, vessel=vessel, **options)[0]

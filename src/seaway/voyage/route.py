@@ -59,6 +59,7 @@ def route_chart(
     edge_cost: str = "max",
     method: str = "auto",
     smooth: bool = True,
+    concentration_limit: bool = False,
     draft_m: float | None = None,
     ukc_m: float | None = None,
     via: Collection[tuple[float, float]] = (),
@@ -86,6 +87,7 @@ def route_chart(
         nearest usable point; a distance: such an end moves there when it is at most that far.
     neighbourhood, method, via, turn_penalty, keep_away, zones: as seaway.route.
     smooth: any-angle smoothing (never costlier; not with via or turn_penalty).
+    concentration_limit: close ice over the class's concentration limit (as a season does).
     progress: called with progress messages (stage, pixels settled), or None for silence.
     On an ice chart every leg has a time, a speed and (with depart) an ETA; NoRouteError says why
     from the chart (its ice, land or depth)."""
@@ -98,7 +100,7 @@ def route_chart(
     if chart.is_ice and (ship is None or ship.ice_class is None):
         ship = as_vessel(cls, ship.speed_kn if ship is not None else speed_kn, ukc_m=ukc_m)
     notes = vessel_notes(ship) if chart.is_ice or ship is not None and ship.path else []
-    cost = chart.cost_for(cls)
+    cost = chart.cost_for(cls, concentration_limit=concentration_limit)
     asked = (tuple(start), tuple(end))
     if chart.projection is not None:
         start, end = (end_pixel(cost, chart.projection, p, n) for p, n in ((start, "start"), (end, "end")))

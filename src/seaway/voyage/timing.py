@@ -171,3 +171,20 @@ def blocked_words(shallow, timing) -> str | None:
     if timing is not None and timing.closed.any():
         return "ice the ship has no speed of its own in (--escort takes it under icebreaker escort)"
     return None
+
+
+def concentration_closed(chart, ice_class, cost):
+    """`cost` with ice over the class's concentration limit for independent navigation closed
+    (inf where the total concentration exceeds its max_concentration, Grinyak et al. 2022 Table
+    1; seaway.ice.classes), as a season closes it by default (concentration_limit)."""
+    layers = chart.layers
+    name = next((n for n in ("CT", "sea_ice_concentration") if layers is not None and n in layers), None)
+    if name is None:
+        raise ChartError(
+            f"{chart.source} gives no total concentration (CT or sea_ice_concentration): the "
+            "concentration limit cannot be read; give concentration_limit=False"
+        )
+    ct = np.asarray(layers[name].values, float)
+    with np.errstate(invalid="ignore"):
+        over = ct > get_class(ice_class).max_concentration
+    return cost.copy(data=np.where(over, np.inf, np.asarray(cost.values, float)))
