@@ -176,7 +176,7 @@ def test_roms_mask_is_read_with_its_options_and_the_projection_found(shared_data
     assert x[1] - x[0] == pytest.approx(20.0)  # ROMS's X is in km already
     ll = data.projection.to_latlon([y[0]], [x[0]])[0]
     ds = xr.open_dataset(path)
-    # The file's own 2-D latitude and its projection disagree by up to 0.16 degrees (its X/Y sit
-    # about half a cell from the centres its latitude/longitude give): said, and within a pixel.
+    # The file's own 2-D latitude/longitude and its projection disagree by up to 17.8 km (its X/Y
+    # sit about half a cell from the centres its latitude/longitude give): said, and within a pixel.
     assert ll == pytest.approx([float(ds.latitude[0, 0]), float(ds.longitude[0, 0])], abs=0.3)
-    assert any("differ by up to 0.16 deg" in n for n in data.notes)
+    assert "aice: the file's latitude/longitude lie up to 17.8 km (0.89 pixel)" in " ".join(data.notes)

@@ -172,6 +172,8 @@ def test_an_ocean_models_own_land_mask_is_the_seasons_land(shared_data):
         mask = src["mask"].values
     season = seaway.open_season(str(path))
     assert np.array_equal(season.grid.dry, mask == 0) and int(season.grid.dry.sum()) == 363
+    said = "the file's latitude/longitude lie up to 17.8 km (0.89 pixel) from where its grid mapping puts"
+    assert any(n.startswith(said) for n in season.notes)  # the ends use the grid mapping: said
     start, land = season.plane.to_user((20, 2)), season.plane.to_user((37, 90))  # pixel centres
     assert mask[37, 90] == 0 and season.pixel(land) == (37, 90)
     with pytest.raises(SnapError, match=r"is on an impassable pixel \(land\)"):

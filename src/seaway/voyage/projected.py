@@ -19,6 +19,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..base.sphere import distance_km
 from ..base.units import km_per
 from ..chart.cf import coord_role, grid_mapping_crs
 from ..errors import ChartError, SeawayError
@@ -199,18 +200,32 @@ def project_chart(out, ds, source) -> None:
 def _check_latlon(out, source, proj) -> None:
     """A projected chart that also gives 2-D latitude/longitude: say how far they are from the
     projection's (the route and outputs use the projection)."""
+    note = latlon_note(source, out.grid.y.values, out.grid.x.values, proj)
+    if note:
+        out.notes.append(f"{source.name}: {note}")
+
+
+def latlon_note(source, y_km, x_km, proj) -> str | None:
+    """When `source` (a DataArray on a projected grid) also gives 2-D latitude/longitude and
+    they lie more than a tenth of a pixel from where the projection puts the pixel centres
+    (y_km, x_km axes): the sentence saying how far, in km and pixels (else None)."""
     two = {coord_role(str(c.name), c.attrs): c for c in source.coords.values() if c.ndim == 2}
     if "lat" not in two or "lon" not in two:
-        return
-    y, x = np.meshgrid(out.grid.y.values, out.grid.x.values, indexing="ij")
+        return None
+    y, x = np.meshgrid(np.asarray(y_km, float), np.asarray(x_km, float), indexing="ij")
     ll = proj.to_latlon(y.ravel(), x.ravel())
-    lat = np.asarray(two["lat"].transpose(*source.dims[-2:]).values, float).ravel()
-    err = np.nanmax(np.abs(ll[:, 0] - lat)) if lat.size == ll.shape[0] else 0.0
-    if err > 0.01:
-        out.notes.append(
-            f"{source.name}: the file's latitudes and its projection differ by up to "
-            f"{err:.2f} deg; the route and the outputs use the projection"
-        )
+    lat, lon = (np.asarray(two[k].transpose(*source.dims[-2:]).values, float).ravel() for k in ("lat", "lon"))
+    if lat.size != ll.shape[0]:
+        return None
+    km = float(np.nanmax(distance_km(lat, lon, ll[:, 0], ll[:, 1])))
+    pixel = float(min(np.min(np.abs(np.diff(y_km))), np.min(np.abs(np.diff(x_km))))) if y.size > 1 else km
+    if not km > 0.1 * pixel:
+        return None
+    return (
+        f"the file's latitude/longitude lie up to {km:.1f} km ({km / pixel:.2f} pixel) "
+        "from where its grid mapping puts the pixel centres; the ends, the route and the outputs "
+        "use the grid mapping"
+    )
 
 
 __all__ = [

@@ -52,6 +52,8 @@ class OpenSeason:
             self.plane = SeasonPlane.of(self.grid)
             if self.plane is not None:
                 self.notes.append(self.plane.note)
+                if self.plane.latlon:
+                    self.notes.append(self.plane.latlon)
 
     @property
     def projection(self):

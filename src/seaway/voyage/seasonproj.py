@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import xarray as xr
 
-from .projected import Projection, end_pixel, find_projection, pixel_latlon
+from .projected import Projection, end_pixel, find_projection, latlon_note, pixel_latlon
 
 if TYPE_CHECKING:
     from ..ice.seasongrid import SeasonGrid
@@ -48,6 +48,8 @@ class SeasonPlane:
 
     projection: Projection
     axes: xr.Dataset
+    #: How far the file's own 2-D latitude/longitude lie from the grid mapping's, when they do.
+    latlon: str | None = None
 
     @classmethod
     def of(cls, grid: SeasonGrid) -> SeasonPlane | None:
@@ -61,6 +63,7 @@ class SeasonPlane:
             return None
         y, x = (np.asarray(template[d].values, float) for d in template.dims)
         plane = cls(proj, xr.Dataset(coords={"y": ("y", y), "x": ("x", x)}))
+        plane.latlon = latlon_note(grid.ds["CT"].isel(time=0), y, x, proj)
         grid.per_true_km = 1.0 / np.asarray(proj.scale(plane.axes).values, float)
         return plane
 
