@@ -109,6 +109,7 @@ def test_season_study_on_a_local_cluster(benchmark, season):
         with distributed.Client(cluster) as client:
             t = time.perf_counter()
             client.run(lambda: None)
+            ready = time.perf_counter() - t
             table = benchmark.pedantic(
                 lambda: _study(season, cluster=client, progress=False),
                 rounds=3,
@@ -119,7 +120,7 @@ def test_season_study_on_a_local_cluster(benchmark, season):
     assert table.drop(columns="error").equals(want.drop(columns="error"))
     _rate("season study, local cluster (2 workers)", benchmark, table)
     NOTES["season study, local cluster (2 workers)"] += (
-        f"; worker memory {max(rss.values()) / 2**20:.0f} MiB at most; cluster ready in {time.perf_counter() - t:.1f} s"
+        f"; worker memory {max(rss.values()) / 2**20:.0f} MiB at most; cluster ready in {ready:.1f} s"
     )
 
 
