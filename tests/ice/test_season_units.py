@@ -1,52 +1,62 @@
-"""A season on a planar grid prices its steps in hours per km, so its y/x coordinates must be
-lengths in km: metres are converted, coordinates without units are taken as km and the route
-says so, other units are refused naming the fix."""
+"""A season's concentration in its own units (seaway.ice.seasonvars): CF sea_ice_area_fraction
+as a fraction, in % or in tenths ("0.1", as seaway.samples.kara_sea() gives it) becomes CT in
+tenths; a chart's stage_of_development becomes SA; unknown units and values outside their range
+are refused naming the fix. The Kara sample as a one-day season reaches what the chart does."""
 
 import numpy as np
 import pytest
+import xarray as xr
 
-from seaway.icenav.season import route_season
-from support.seasons import planar_season
+import seaway
+from seaway.ice.seasongrid import as_season
+from seaway.samples import kara_sea
 
-KN = 1.852
-#: Open water at 12 kn, medium first-year ice at 3 kn (WMO stage codes).
-TABLE = {55: 12.0, 91: 3.0}
-
-
-def _season(dx, units=None):
-    stage = np.full((2, 10, 30), 55)
-    stage[:, 3:, 10:12] = 91  # a band of ice across the route, open along rows 0-2
-    ds = planar_season(stage, hours=[0.0, 48.0], dx=dx)
-    if units is not None:
-        for c in ("y", "x"):
-            ds[c].attrs.update(units=units, standard_name=f"projection_{c}_coordinate")
-    return ds
+DAY = np.datetime64("2026-03-01")
 
 
-def _route(ds):
-    return route_season(ds, (5, 0), (5, 29), speed=TABLE, concentration_limit=False)
-
-
-def test_a_season_in_metres_routes_as_the_same_season_in_km():
-    km, m = _route(_season(10.0, "km")), _route(_season(10_000.0, "m"))
-    assert m.cost == pytest.approx(km.cost, rel=1e-12)
-    assert np.array_equal(m.pixels, km.pixels)
-    # 290 km at 12 kn if the band is crossed at 3 kn for 20 km, or the detour: at most that.
-    h = float(np.float32(1 / (12 * KN)))
-    assert km.cost <= 270 * h + 20 * float(np.float32(1 / (3 * KN))) + 1e-9
-    assert km.cost >= 290 * h - 1e-9  # no route is shorter than the straight 290 km in open water
-    assert km.assumptions == () and m.assumptions == ()
-
-
-def test_coordinates_without_units_are_taken_as_km_and_the_route_says_so():
-    r = _route(_season(10.0))
-    assert r.cost == pytest.approx(_route(_season(10.0, "km")).cost, rel=1e-12)
-    said = (
-        "the season's y and x coordinates have no units: taken as km (set the units attribute to 'm' or 'km')"
+def _season(values, units):
+    frac = xr.DataArray(
+        np.asarray(values, float).reshape(1, 1, -1),
+        dims=("time", "y", "x"),
+        attrs={"standard_name": "sea_ice_area_fraction", "units": units},
     )
-    assert said in r.assumptions
+    thick = xr.DataArray(np.full(frac.shape, 0.5), dims=frac.dims, attrs={"units": "m"})
+    return xr.Dataset({"conc": frac, "thickness": thick}, coords={"time": [DAY]})
 
 
-def test_coordinates_in_other_units_are_refused_naming_the_fix():
-    with pytest.raises(ValueError, match=r"'pixels': give planar coordinates in a length \('m' or 'km'\)"):
-        _route(_season(10.0, "pixels"))
+@pytest.mark.parametrize(
+    "values,units",
+    [([0.0, 0.45, 1.0], "1"), ([0, 45, 100], "%"), ([0.0, 4.5, 10.0], "0.1"), ([0, 0.45, 1], None)],
+)
+def test_a_concentration_in_its_units_becomes_tenths(values, units):
+    ds = _season(values, units)
+    if units is None:
+        del ds["conc"].attrs["units"]
+    np.testing.assert_allclose(as_season(ds)["CT"].values.ravel(), [0.0, 4.5, 10.0])
+
+
+def test_round_off_is_clipped_and_other_units_refused():
+    np.testing.assert_allclose(as_season(_season([-1e-6, 1 + 1e-6], "1"))["CT"].values.ravel(), [0.0, 10.0])
+    with pytest.raises(
+        seaway.ChartError, match=r"units 'furlongs'.* give units '1' \(a fraction\), '%' or '0.1'"
+    ):
+        as_season(_season([0.5], "furlongs"))
+    with pytest.raises(seaway.ChartError, match=r"CT holds 1 value\(s\) outside its range.*other units"):
+        as_season(_season([0.0, 45.0], "1"))  # percent labelled as a fraction: refused, not clipped
+
+
+def test_the_kara_sample_as_a_one_day_season_reaches_what_the_chart_does(tmp_path):
+    path = tmp_path / "kara.nc"
+    chart = kara_sea()
+    chart.expand_dims(time=[DAY]).to_netcdf(path)
+    season = seaway.open_season(str(path))
+    ds = season.grid.ds
+    np.testing.assert_array_equal(ds["CT"].values[0], chart["sea_ice_concentration"].values)  # tenths
+    stage = chart["stage_of_development"].values
+    np.testing.assert_array_equal(ds["SA"].values[0], np.where(stage == 55, np.nan, stage))
+    gulf_of_ob = (71.7026, 67.2826)
+    opened = seaway.open_chart("kara")
+    for limit, reached in ((False, 2048938), (True, 125057)):
+        field = season.arrival_field(gulf_of_ob, vessel="Arc7", concentration_limit=limit)
+        same = opened.arrival_field(gulf_of_ob, vessel="Arc7", speed_kn=12, concentration_limit=limit)
+        assert int(np.isfinite(field).sum()) == int(np.isfinite(same).sum()) == reached

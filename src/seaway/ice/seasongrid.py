@@ -28,6 +28,7 @@ from .forms import check_fast_ice
 from .seasoncache import FrameCache, Frames, speed_key
 from .seasonfast import record_rule, season_assumptions, season_layers
 from .seasonspeed import frame_speed_kn, is_curve
+from .seasonvars import sigrid_layers
 from .sigrid import read_sigrid3
 
 if TYPE_CHECKING:
@@ -84,18 +85,12 @@ def _check_increasing(t, fix):
 
 
 def as_season(season) -> xr.Dataset:
-    """A season Dataset from a Dataset or NetCDF path: CF sea_ice_area_fraction (fraction or %)
-    becomes CT in tenths, sea_ice_thickness becomes `thickness` (m); times must increase."""
+    """A season Dataset from a Dataset or NetCDF path: CF sea_ice_area_fraction (in its units)
+    becomes CT in tenths, sea_ice_thickness `thickness` (m), stage_of_development SA
+    (seaway.ice.seasonvars); times must increase."""
     if not isinstance(season, xr.Dataset):
         season = open_netcdf(season, "a season of ice charts is a NetCDF file with a time axis", ChartError)
-    ds = season
-    by_std = {v.attrs.get("standard_name"): k for k, v in ds.data_vars.items()}
-    if "CT" not in ds and "sea_ice_area_fraction" in by_std:
-        frac = ds[by_std["sea_ice_area_fraction"]]
-        scale = 0.1 if str(frac.attrs.get("units", "")).strip() in ("%", "percent") else 10.0
-        ds = ds.assign(CT=(frac * scale).clip(0.0, 10.0))  # models' round-off: -1e-6 ... 1 + 1e-6
-    if "thickness" not in ds and "sea_ice_thickness" in by_std:
-        ds = ds.assign(thickness=ds[by_std["sea_ice_thickness"]])
+    ds = sigrid_layers(season)  # CT in tenths, thickness and SA from their other names
     if "time" not in ds.dims:
         raise ChartError(
             "a season needs a `time` dimension (one chart per time); for one chart, "
