@@ -32,7 +32,6 @@
 #include <vector>
 
 #include "prepared_chart.hpp"
-#include "turn_heading.hpp"
 #include "turn_penalty.hpp"
 #include "turn_states.hpp"
 
@@ -58,13 +57,12 @@ RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPe
   const TurnCosts penalty(g, st, turn);
   const StepBounds b = model.bounds(pg.passability());
   const bool astar = weight == 1 && b.per_length;
-  const HeadingBound heading(g, st, penalty, target, astar);  // turn_heading.hpp
-  // The largest key increase of one step: its cost and penalty, plus the bounds' largest rises
-  // (without penalties: a step's cost; the heading bound: at most the largest penalty).
+  // The largest key increase of one step: its cost and penalty, plus the bound's largest drop
+  // (exact A*'s bound below drops by at most a step's cost).
   double eps = astar ? turn_bucket_eps : 1.0;
   auto choose = [&] {
     return choose_queue(b, pg.shortest_step(), pg.longest_step(), eps, astar ? b.max_rate : 0.0,
-                        penalty.largest() + heading.largest_rise());
+                        penalty.largest());
   };
   QueueChoice q = choose();
   if (astar && q.kind != QueueKind::buckets) q = (eps = astar_bucket_eps, choose());
@@ -141,8 +139,7 @@ RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPe
         if (nd < S.get(s)) {  // false for settled states: their cost is negative
           S.set(s, nd, code);
           if (prune) S.offer(w, o, nd);
-          const double key = use_bound ? nd + h(w) : nd;
-          heap.push({heading.on() ? key + scale * heading(w, o) : key, std::uint32_t(s)});
+          heap.push({use_bound ? nd + h(w) : nd, std::uint32_t(s)});
         }
       });
     };

@@ -198,12 +198,13 @@ def test_dominated_states_dropped_exactly_for_any_penalty_table(seed):
 
 
 @pytest.mark.parametrize("seed", range(6))
-def test_heading_bound_exact_on_planar_charts(seed):
-    """A* on planar charts adds to its bound the least penalty still due for facing the end
-    (turn_heading.hpp) and keeps its buckets at 1 % of the bound (5 % when that needs too many
-    buckets: costs up to 1000; a heap beyond: costs up to 1e5). Non-square pixels, ends behind
-    walls that force turning away and back, steep per-degree and table penalties: the same cost
-    as the expanded brute-force reference and as Dijkstra over the states."""
+def test_turn_search_exact_on_planar_charts_with_walls(seed):
+    """A* keeps its buckets at 1 % of the bound (5 % when that needs too many buckets: costs up
+    to 1000; a heap beyond: costs up to 1e5), a second expansion of a pixel skips the steps an
+    earlier one took no dearer, and a pop checks only the pixel's expanded states (a bit mask).
+    Non-square pixels, ends behind a wall that forces turning away and back, steep per-degree
+    and table penalties: the same cost as the expanded brute-force reference and as Dijkstra
+    over the states."""
     rng = np.random.default_rng(900 + seed)
     rows, cols = 20, 26
     top = (3.0, 3.0, 1000.0, 1e5, 3.0, 3.0)[seed]
