@@ -1,15 +1,21 @@
 """What the turn penalty costs: peak resident memory and time of the expanded-state
 search (pixel x incoming step) on the synthetic Kara-sized chart, each in a fresh process,
-beside the plain search in the same process. Slow (tens of seconds per case): run on its own,
-`pytest benchmarks/test_constraints.py -s` (see benchmarks/README.md)."""
+beside the plain search in the same process; and the turn route against the plain one on
+charts of the family (benchmarks/family.py), tuned on and held out. Slow (tens of seconds per
+case): run on its own, `pytest benchmarks/test_constraints.py -s -p no:randomly` (see
+benchmarks/README.md)."""
 
 import subprocess
 import sys
+import time
 
 import numpy as np
 import pytest
 
+import seaway
+
 from .conftest import NOTES
+from .family import BUILDERS
 
 _SCRIPT = """
 import sys, time, resource, numpy as np, seaway
@@ -58,7 +64,8 @@ def test_turn_penalty_memory_and_time(chart, tmp_path, k):
         f"course changes {turns:.0f} vs {plain_turns:.0f}"
     )
     print(f"\nk={k}: {NOTES[f'turn penalty k={k}: peak RSS added']}")
-    assert 9 * offsets <= own <= 9 * offsets + 16  # 8 B of cost + 1 of predecessor per state
+    # 8 B of cost + 1 of predecessor per state; per pixel 9 B of best state, 8 of expanded mask
+    assert 9 * offsets + 17 <= own <= 9 * offsets + 24
     assert rss <= own + 16  # pages never touched stay unmapped (calloc)
     assert c_turn > c_plain and turns < plain_turns  # the penalty buys a straighter route
 
@@ -96,3 +103,31 @@ def test_turn_penalty_against_the_plain_route(chart, tmp_path):
     )
     print("\n" + NOTES["turn penalty 0.5/degree vs plain, corner voyage"])
     assert c_turn > c_plain and turns < plain_turns
+
+
+@pytest.mark.parametrize("name", ["A winter", "B winter", "game map", "maze"])
+def test_turn_penalty_against_the_plain_route_per_chart(name, tmp_path):
+    """The issue-29 goal, turn route <= 3 x the plain route: voyages 0 (corner to corner) and 1
+    of a family chart (A winter tuned on; B winter, game map, maze held out), prepared once,
+    `route(s, e)` (auto) and `route(s, e, turn_penalty=0.5)` alternated, wall medians of 3 after
+    a warm-up each. Records the ratio; asserts the penalty's real effect (a dearer route with
+    fewer course changes, its cost the sum of its steps)."""
+    chart = BUILDERS[name](str(tmp_path))
+    prepared = seaway.prepare(chart.cost)
+    for v, (s, e) in enumerate(chart.voyages[:2]):
+        plain, turn = [], []
+        for _ in range(4):
+            t = time.perf_counter()
+            p = prepared.route(s, e)
+            plain.append(time.perf_counter() - t)
+            t = time.perf_counter()
+            r = prepared.route(s, e, turn_penalty=0.5)
+            turn.append(time.perf_counter() - t)
+        a, b = np.median(plain[1:]), np.median(turn[1:])
+        NOTES[f"turn penalty 0.5/degree vs plain, {name} v{v}"] = (
+            f"{b:.3f} s = {b / a:.1f} x the plain route ({a:.3f} s, {p.method}); "
+            f"{r.stats.search.settled:,} states settled; cost {r.cost:.1f} vs {p.cost:.1f}"
+        )
+        print(f"\n{name} v{v}: " + NOTES[f"turn penalty 0.5/degree vs plain, {name} v{v}"])
+        assert r.cost > p.cost and r.course_changes <= p.course_changes
+        assert r.step_costs.sum() == pytest.approx(r.cost, rel=1e-12)

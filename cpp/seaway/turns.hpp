@@ -13,13 +13,10 @@
 // label, and a state taken off the queue is not expanded when a state of the same pixel expanded
 // before it dominates it the same way; whatever route continues from the dropped state continues
 // at no more cost from the other. A pixel then expands about two states instead of all of them
-// (the benchmark chart's corner voyage: 14.9 M states settled without, benchmarks/README.md).
+// (A winter's corner voyage: 14.9 M states settled without, benchmarks/README.md).
 //
-// Memory (turn_states.hpp): 8 bytes of cost + 1 byte of predecessor per state, i.e. 9 x (number
-// of stencil offsets) bytes per pixel of address space (k=3: 72, k=5: 216, k=7: 432), and 9
-// bytes per pixel for its best state. It is allocated zero-filled (calloc: the kernel maps pages
-// only when they are first written, so a search that reaches a small part of the chart uses
-// physical memory only there).
+// A state expanded at a pixel where another was expanded before skips the steps the other took
+// at no dearer label plus turn. Memory: turn_states.hpp (k=5: 233 bytes per pixel of address space).
 #pragma once
 
 #include <algorithm>
@@ -44,7 +41,7 @@ namespace seaway {
 // offset of the step that reached the start (charged at the first turn), or -1 for none.
 // weight 0: Dijkstra, 1: A*, > 1: weighted A*. The queue is chosen as in PreparedChart::run
 // (every step plus a penalty >= 0 costs at least a step): exact A* in buckets with its bound
-// scaled by 1 - astar_bucket_eps.
+// scaled by 1 - turn_bucket_eps (1 - astar_bucket_eps when the finer buckets would be too many).
 template <class Model>
 RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPenalty& turn,
                              std::int64_t start, std::int64_t target, int incoming, double weight,
@@ -60,15 +57,19 @@ RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPe
   const TurnCosts penalty(g, st, turn);
   const StepBounds b = model.bounds(pg.passability());
   const bool astar = weight == 1 && b.per_length;
-  const double eps = astar ? astar_bucket_eps : 1.0;
   // The largest key increase of one step: its cost and penalty, plus the bound's largest drop
   // (exact A*'s bound below drops by at most a step's cost).
-  QueueChoice q = choose_queue(b, pg.shortest_step(), pg.longest_step(), eps, astar ? b.max_rate : 0.0,
-                               penalty.largest());
+  double eps = astar ? turn_bucket_eps : 1.0;
+  auto choose = [&] {
+    return choose_queue(b, pg.shortest_step(), pg.longest_step(), eps, astar ? b.max_rate : 0.0,
+                        penalty.largest());
+  };
+  QueueChoice q = choose();
+  if (astar && q.kind != QueueKind::buckets) q = (eps = astar_bucket_eps, choose());
   if (weight > 1) q.kind = QueueKind::quaternary;
   const bool buckets = q.kind == QueueKind::buckets;
   const bool use_bound = weight > 0 && b.per_length;
-  // A* in a heap: the bound is consistent; shave it by 1e-9 against rounding. In buckets: 0.95.
+  // A* in a heap: the bound is consistent; shave it by 1e-9 against rounding. In buckets: 1 - eps.
   const double scale = weight != 1 ? weight : (buckets ? 1 - eps : 1 - 1e-9);
   const DistanceBound bound(g, target, use_bound ? b.min_rate * scale : 0);
   // Exact A*'s bound: the least cost to the target without turn penalties, by one plain search
@@ -100,7 +101,6 @@ RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPe
     return scale * (std::signbit(d) ? -d : radius);  // settled pixels have a negative cost
   };
 
-  const std::size_t states = std::size_t(n * K);
   TurnStates S(n, K);
   const bool prune = penalty.prunes();
 
@@ -114,10 +114,23 @@ RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPe
     auto expand = [&](std::int64_t v, std::int64_t in, double dv, std::uint8_t code) {
       const std::int64_t row = v / g.cols;
       const double* leave = penalty.leaving(row, in);  // nullptr: computed per step
+      // A step an earlier expanded state of v took at no dearer label plus turn is skipped: it
+      // offered w the same state at no more cost (the step costs are static).
+      std::int64_t e[4];
+      double before[4];
+      const int nb = prune && leave && in >= 0 ? S.expanded_before(v, in, e, before) : 0;
+      const double* turns_before[4];
+      for (int i = 0; i < nb; ++i) {
+        before[i] -= dv;
+        turns_before[i] = penalty.leaving(row, e[i]);
+      }
       pg.steps().each(v, [&](std::int64_t w, std::int64_t o, std::int64_t, std::int64_t, double r, auto&& cell) {
+        const double pen_o = leave ? leave[o] : penalty(row, in, o);
+        for (int i = 0; i < nb; ++i)
+          if (before[i] + turns_before[i][o] <= pen_o) return;
         const double c = model(v, w, int(o), r, dv, cell);
         if (!(c < inf)) return;
-        const double nd = dv + c + (leave ? leave[o] : penalty(row, in, o));
+        const double nd = dv + c + pen_o;
         if (prune) {  // dominated on arrival by w's best state so far
           const std::int64_t bw = S.best_in(w);
           if (bw >= 0 && bw != o && S.best(w) + penalty.margin(row + st[std::size_t(o)].di, bw, o) <= nd) return;
@@ -129,13 +142,6 @@ RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPe
           heap.push({use_bound ? nd + h(w) : nd, std::uint32_t(s)});
         }
       });
-    };
-    // Whether a state of v expanded before (v, in) dominates it.
-    auto dominated = [&](std::int64_t v, std::int64_t in, double dv) {
-      const std::int64_t row = v / g.cols;
-      for (std::int64_t o = 0; o < K; ++o)
-        if (o != in && S.expanded(v * K + o) && -S.get(v * K + o) + penalty.margin(row, o, in) <= dv) return true;
-      return false;
     };
     // A first entry at the least key any state can have (the start's bound): the bucket queue
     // starts its ring at the first key it is given. Popped, it is skipped.
@@ -153,7 +159,13 @@ RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPe
       count_settled(stats.settled, control);
       const std::int64_t v = s / K, in = s - v * K;
       if (v == target) { reached = s; break; }
-      if (prune && dominated(v, in, ds)) { S.drop(s); continue; }
+      const std::int64_t row = v / g.cols;
+      auto margin = [&](std::int64_t o1, std::int64_t o2) { return penalty.margin(row, o1, o2); };
+      if (prune && S.dominated(v, in, ds, margin)) {
+        S.drop(s);
+        continue;
+      }
+      S.mark(v, in);
       expand(v, in, ds, std::uint8_t(in + 1));
     }
     stats.heap_peak = heap.peak();
@@ -177,22 +189,7 @@ RouteResult route_with_turns(PreparedChart& pg, const Model& model, const TurnPe
   for (std::int64_t o = 0; o < K; ++o)
     if (std::fabs(S.get(target * K + o)) < std::fabs(S.get(reached))) reached = target * K + o;
   out.cost = std::fabs(S.get(reached));
-  // Back along the predecessors: state (w, o) came from pixel w - offset o, in state pred - 1.
-  std::int64_t s = reached;
-  for (;;) {
-    const std::int64_t v = s / K, o = s - v * K;
-    out.path.push_back(v);
-    out.cumulative.push_back(std::fabs(S.get(s)));
-    out.offsets.push_back(int(o));
-    const std::int64_t u = g.step(v, st[std::size_t(o)], -1);
-    const int p = S.pred(s);
-    if (p == 0) { out.path.push_back(u); out.cumulative.push_back(0.0); break; }
-    s = u * K + (p - 1);
-    if (out.path.size() > states) throw std::logic_error("predecessor cycle");
-  }
-  std::reverse(out.path.begin(), out.path.end());
-  std::reverse(out.cumulative.begin(), out.cumulative.end());
-  std::reverse(out.offsets.begin(), out.offsets.end());
+  trace_back(S, g, st, reached, out);
   return out;
 }
 

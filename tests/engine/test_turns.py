@@ -195,3 +195,45 @@ def test_dominated_states_dropped_exactly_for_any_penalty_table(seed):
             assert r.cost == pytest.approx(want, rel=1e-9, abs=1e-12), (angles, costs, method)
             checked += 1
     assert checked >= 4
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_turn_search_exact_on_planar_charts_with_walls(seed):
+    """A* keeps its buckets at 1 % of the bound (5 % when that needs too many buckets: costs up
+    to 1000; a heap beyond: costs up to 1e5), a second expansion of a pixel skips the steps an
+    earlier one took no dearer, and a pop checks only the pixel's expanded states (a bit mask).
+    Non-square pixels, ends behind a wall that forces turning away and back, steep per-degree
+    and table penalties: the same cost as the expanded brute-force reference and as Dijkstra
+    over the states."""
+    rng = np.random.default_rng(900 + seed)
+    rows, cols = 20, 26
+    top = (3.0, 3.0, 1000.0, 1e5, 3.0, 3.0)[seed]
+    u = rng.uniform(1.0, top, (rows, cols))
+    u[rng.random((rows, cols)) < 0.1] = np.inf
+    u[4:16, 12] = np.inf  # a wall between the ends' halves, open at both ends
+    geo = dict(dx=1.0, dy=(0.5, 2.0, 1.0, 0.7, 1.3, 1.0)[seed])
+    k = (3, 5, 7, 5, 3, 5)[seed]
+    per_degree = seed % 2 == 0
+    angles, costs = (
+        ([0.0, 180.0], [0.0, 180.0 * 0.3]) if per_degree else ([0, 45, 120, 180], [0.5, 3, 20, 25])
+    )
+    penalty = 0.3 if per_degree else dict(zip(angles, costs))
+    ref = RefGraph(u, k=k, edge_cost="max", **geo)
+    chart = seaway.prepare(u, neighbourhood=k, **geo)
+    water = np.argwhere(ref.ok)
+    left, right = water[water[:, 1] < 10], water[water[:, 1] > 14]
+    checked = 0
+    for _ in range(4):
+        s = tuple(int(v) for v in left[rng.integers(len(left))])
+        e = tuple(int(v) for v in right[rng.integers(len(right))])
+        want = turn_route_cost(ref, s, e, angles, costs, geo["dx"], geo["dy"])
+        if not np.isfinite(want):
+            continue
+        a = chart.route(s, e, method="astar", turn_penalty=penalty)
+        d = chart.route(s, e, method="dijkstra", turn_penalty=penalty)
+        assert a.cost == pytest.approx(want, rel=1e-9, abs=1e-12)
+        assert d.cost == pytest.approx(want, rel=1e-9, abs=1e-12)
+        assert path_cost_with_turns(ref, a.pixels, angles, costs, geo) == pytest.approx(want, rel=1e-9)
+        assert a.stats.search.settled <= d.stats.search.settled
+        checked += 1
+    assert checked >= 2
