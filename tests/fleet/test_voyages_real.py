@@ -41,3 +41,30 @@ def test_a_real_season_study_written_and_read_back(shared_data, tmp_path):
         got = float(ds.hours.sel(vessel="Arc4", voyage="out", departure=np.datetime64("2016-02-01T12:00")))
     want = table[(table.vessel == "Arc4") & (table.voyage == "out")].hours.iloc[0]
     assert got == pytest.approx(want, rel=1e-12) or (np.isnan(got) and np.isnan(want))
+
+
+def test_an_opened_chart_batch_snaps_its_ends_as_its_route_does(shared_data):
+    """route_voyages(chart, snap_km=) on the ROMS file opened as one chart: each row is the
+    chart's own route(snap_km=) answer (OpenChart.route takes its options as keywords)."""
+    chart = seaway.open_chart(str(shared_data / "ocean_model" / "metno_ROMS_Arctic20_1to5Feb_2016.nc"))
+    voyages = {"ice": (NORWAY, SVALBARD_EAST), "sea": (NORWAY, (75.0, 20.0))}
+    table = route_voyages(chart, voyages, vessels=["Arc7"], threads=1, objective="time", snap_km=60)
+    rows = table.set_index("voyage")
+    ice = rows.loc["ice"]  # 1.6 m of ice 76.4 km around the end: more than snap_km
+    assert (ice.status, ice.cause) == (
+        "no route",
+        "closed by ice",
+    ) and "farther than --snap-km 60" in ice.error
+    r = chart.route(NORWAY, (75.0, 20.0), vessel="Arc7", objective="time", snap_km=60)
+    assert rows.loc["sea"].status == "ok"
+    assert rows.loc["sea"].hours == pytest.approx(sum(leg.time_h for leg in r.legs()), rel=1e-12)
+    assert (rows.loc["sea"].used_end_lat, rows.loc["sea"].used_end_lon) == pytest.approx(tuple(r.latlon[-1]))
+
+
+def test_route_many_names_route_voyages_for_a_chart_file_or_an_opened_chart(shared_data):
+    path = shared_data / "ocean_model" / "metno_ROMS_Arctic20_1to5Feb_2016.nc"
+    for charts in (str(path), path, seaway.open_chart(str(path))):
+        with pytest.raises(
+            seaway.SeawayTypeError, match=r"use seaway.fleet.route_voyages\(seaway.open_chart"
+        ):
+            seaway.route_many(charts, {"a": (NORWAY, SVALBARD_EAST)})

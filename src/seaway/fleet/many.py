@@ -137,6 +137,12 @@ def route_many(
         turn_penalty=turn_penalty,
         snap_km=None if snap_km is None else number(snap_km, "snap_km", minimum=0),
     )
+    if isinstance(charts, (str, os.PathLike)) or callable(getattr(charts, "route", None)):
+        raise SeawayTypeError(
+            "route_many takes cost rasters (numpy, xarray) or callables making them; for a chart "
+            "file, an opened chart, season or forecast use seaway.fleet.route_voyages("
+            "seaway.open_chart(path), voyages, vessels=...)"
+        )
     chart_items = _chart_items(charts, time_dim)
     vessel_items = [(None, None)] if vessels is None else _items(vessels, "vessels")
     voyage_items = _voyage_items(voyages)

@@ -95,7 +95,8 @@ def route_voyages(
             f"open_season, open_forecast), not {type(source).__name__}"
         )
     if snap_km is not None:
-        if "snap_km" not in inspect.signature(source.route).parameters:
+        params = inspect.signature(source.route).parameters
+        if "snap_km" not in params and not any(p.kind is p.VAR_KEYWORD for p in params.values()):
             raise SeawayTypeError(f"{type(source).__name__}.route takes no snap_km: leave it out")
         options["snap_km"] = snap_km
     voyage_items = list(voyages.items() if isinstance(voyages, Mapping) else enumerate(voyages))
