@@ -24,7 +24,7 @@ from .route import searching
 from .seasoncover import charts_bounds, check_cover
 from .seasonmany import season_routes
 from .seasonproj import SeasonPlane
-from .seasonroutes import ends, explain, finish, plan
+from .seasonroutes import ends_used, explain, finish, plan
 from .ship import as_vessel
 
 if TYPE_CHECKING:
@@ -96,7 +96,7 @@ class OpenSeason:
         assumptions; NoRouteError names what closes the way."""
         say = progress or (lambda message: None)
         p = plan(self, vessel, speed_kn, depart, speed_table, fast_ice, concentration_limit)
-        (a, b), moved, asked = ends(self, p, start, end, snap_km, neighbourhood)
+        (a, b), moved, asked = ends_used(self, p, start, end, snap_km, neighbourhood)
         say(
             f"routing {p.model.ice_class} at {p.ship.speed_kn:g} kn from {p.model.departure} "
             f"({neighbourhood}x{neighbourhood} stencil, waiting allowed)"
@@ -110,13 +110,13 @@ class OpenSeason:
         return finish(self, p, found, asked, moved, smooth, name)
 
     def routes(
-        self, start: tuple[float, float], ends_: Sequence[tuple[float, float]], **options: Any
+        self, start: tuple[float, float], ends: Sequence[tuple[float, float]], **options: Any
     ) -> list[Route | SeawayError]:
-        """The routes from `start` to each of `ends_` (options as route()'s, except method and
+        """The routes from `start` to each of `ends` (options as route()'s, except method and
         progress), from one search per start pixel used: each is what
         ``route(start, end, method="dijkstra", **options)`` gives, or the SeawayError it raises
         (an end off the chart, too far from usable water, no route) in its place."""
-        return season_routes(self, start, ends_, **options)
+        return season_routes(self, start, ends, **options)
 
     def prepared(self, neighbourhood: int = 5):
         """The season's grid prepared for routing (seaway.prepare), kept for the next route."""

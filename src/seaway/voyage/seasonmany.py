@@ -11,7 +11,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 from ..errors import NoRouteError, SeawayError
-from .seasonroutes import ends, explain, finish, plan
+from .seasonroutes import ends_used, explain, finish, plan
 
 if TYPE_CHECKING:
     from ..result.route import Route
@@ -20,7 +20,7 @@ if TYPE_CHECKING:
 def season_routes(
     season,
     start: tuple[float, float],
-    ends_: Sequence[tuple[float, float]],
+    ends: Sequence[tuple[float, float]],
     *,
     vessel: Any = "Arc7",
     speed_kn: float | None = None,
@@ -35,11 +35,11 @@ def season_routes(
 ) -> list[Route | SeawayError]:
     """See OpenSeason.routes."""
     p = plan(season, vessel, speed_kn, depart, speed_table, fast_ice, concentration_limit)
-    out: list[Route | SeawayError | None] = [None] * len(ends_)
+    out: list[Route | SeawayError | None] = [None] * len(ends)
     groups: dict[tuple[int, int], list[tuple[int, Any]]] = {}  # start pixel used -> (index, its end)
-    for i, end in enumerate(ends_):
+    for i, end in enumerate(ends):
         try:  # a start that must move may move differently for each end (the water joining them)
-            (a, b), moved, asked = ends(season, p, start, end, snap_km, neighbourhood)
+            (a, b), moved, asked = ends_used(season, p, start, end, snap_km, neighbourhood)
         except SeawayError as exc:
             out[i] = exc
             continue

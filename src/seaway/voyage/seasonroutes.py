@@ -1,6 +1,6 @@
 """The steps of a route through a season (OpenSeason.route), shared with the routes from one
 start to many ends (OpenSeason.routes, which seaway.fleet.route_voyages uses): what every route
-of one vessel and departure shares (`plan`), the ends one route uses (`ends`), a found route
+of one vessel and departure shares (`plan`), the ends one route uses (`ends_used`), a found route
 as the user gets it (`finish`) and the error for an end no route reaches (`explain`)."""
 
 from __future__ import annotations
@@ -55,7 +55,7 @@ def plan(season, vessel, speed_kn, depart, speed_table, fast_ice, concentration_
     )
 
 
-def ends(season, p: Plan, start, end, snap_km, neighbourhood):
+def ends_used(season, p: Plan, start, end, snap_km, neighbourhood):
     """((start pixel, end pixel), the sentences saying how they moved, the ends as asked).
     Only an end no chart opens moves (an end closed at departure may open later: the ship
     waits); SnapError when one must move farther than snap_km (None: not at all)."""
