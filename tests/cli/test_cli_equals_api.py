@@ -8,6 +8,7 @@ import json
 
 import numpy as np
 import pytest
+import xarray as xr
 
 import seaway
 from seaway.cli import main
@@ -140,3 +141,60 @@ def test_a_season_of_sigrid3_charts(shared_data, tmp_path):
     r = season.route(a, b, vessel="PC6", snap_km=20)
     _same(cli, r)
     assert r.stats.voyage is not None and r.cost == pytest.approx(cli["properties"]["time_h"], rel=1e-12)
+
+
+def _banded(tmp_path):
+    """70-76 N, 60-76 E: open water (stage 55) with a band of thin first-year ice (87) across
+    72.5-73.5 N at 10/10, but 7/10 in a gap at 73-74 E."""
+    lat, lon = np.linspace(76.0, 70.0, 61), np.linspace(60.0, 76.0, 81)
+    band = (lat[:, None] >= 72.5) & (lat[:, None] <= 73.5) & np.ones((1, 81), bool)
+    gap = band & (lon[None, :] >= 73.0) & (lon[None, :] <= 74.0)
+    stage = np.where(band, 87.0, 55.0)
+    conc = np.where(gap, 7.0, np.where(band, 10.0, 0.0))
+    ds = xr.Dataset(
+        {
+            "stage_of_development": (("lat", "lon"), stage),
+            "sea_ice_concentration": (("lat", "lon"), conc, {"units": "0.1"}),
+            "land": (("lat", "lon"), np.zeros((61, 81), bool)),
+        },
+        coords={"lat": lat, "lon": lon},
+    )
+    path = tmp_path / "banded.nc"
+    ds.to_netcdf(path)
+    return str(path), conc, lat, lon
+
+
+def test_concentration_limit_flag(tmp_path):
+    """--concentration-limit closes ice over the class's limit (Arc7: over 8/10) as
+    OpenChart.route(concentration_limit=True) does: the route crosses the band only at its 7/10
+    gap, and says so; without it the route crosses the 10/10 ice."""
+    path, conc, lat, lon = _banded(tmp_path)
+    a, b = (75.0, 62.0), (71.0, 62.0)
+    cli = _cli(
+        tmp_path,
+        "route",
+        path,
+        "--vessel",
+        "Arc7",
+        "--from",
+        "75,62",
+        "--to",
+        "71,62",
+        "--concentration-limit",
+    )
+    chart = seaway.open_chart(path, vessel="Arc7")
+    r = chart.route(a, b, concentration_limit=True)
+    _same(cli, r)
+    free = chart.route(a, b)
+    steps, free_steps = (chart.route(a, b, concentration_limit=c, smooth=False).pixels for c in (True, False))
+    assert (
+        conc[steps[:, 0], steps[:, 1]].max() == 7.0 and conc[free_steps[:, 0], free_steps[:, 1]].max() == 10.0
+    )
+    assert r.length > free.length * 1.5  # the detour to the gap, 11 degrees of longitude east
+    said = "ice over Arc7's concentration limit for independent navigation (8/10 total concentration"
+    assert any(n.startswith(said) for n in r.notes) and not any(n.startswith(said) for n in free.notes)
+    with pytest.raises(
+        seaway.SeawayError,
+        match=r"total concentration 10/10 \(over Arc7's limit for independent navigation, 8/10\)",
+    ):
+        chart.route((73.0, 62.0), b, concentration_limit=True)

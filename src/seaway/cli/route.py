@@ -61,6 +61,7 @@ def run_route(args) -> int:
         escort=args.escort,
         escort_speed_kn=args.escort_speed,
         stage_thickness=args.stage_thickness,
+        concentration_limit=args.concentration_limit,
         snap_km=args.snap_km if args.snap else None,
         neighbourhood=args.neighbourhood,
         edge_cost=args.edge_cost,

@@ -56,6 +56,13 @@ def add_route_command(commands) -> None:
         "the assumption is printed (seaway.ice.forms)",
     )
     rp.add_argument(
+        "--concentration-limit",
+        action="store_true",
+        help="on an ice chart: also close ice whose total concentration is over the class's "
+        "limit for independent navigation (Grinyak et al. 2022, Table 1), as a season does by "
+        "default; said in the output",
+    )
+    rp.add_argument(
         "--variable",
         metavar="NAME",
         help="chart variable holding the cost per unit length (NaN/inf impassable); "

@@ -14,11 +14,10 @@ from ..engine.api import prepare
 from ..engine.snap import DEFAULT_SNAP_KM
 from ..errors import ChartError, SeawayError, SnapError
 from ..models import EdgeCost
-from .depth import with_draft
 from .ends import check_ends
-from .projected import end_pixel, pixel_latlon, true_cost
-from .ship import as_vessel
-from .timing import end_reasons, ice_time, search_cost
+from .pricing import price_chart
+from .projected import end_pixel, pixel_latlon
+from .timing import end_reasons
 
 if TYPE_CHECKING:
     import xarray as xr
@@ -41,35 +40,26 @@ def time_cost(
 ) -> tuple[xr.DataArray, Any, dict[str, Any]]:
     """(hours per true km on the chart's grid, inf where the ship may not go; the Vessel; what
     check_ends needs to say why an end is closed) — the raster OpenChart.route(objective="time")
-    searches, built as route() builds it."""
+    searches, priced as route() prices it (seaway.voyage.pricing)."""
     if not chart.is_ice or chart.layers is None:
         raise ChartError(
             f"{chart.source} is a cost raster ({chart.description}): hours need an ice chart (a "
             "speed in its ice); use seaway.cost_field for its accumulated cost"
         )
-    given = vessel if vessel is not None else chart.vessel
-    ship = as_vessel(given, speed_kn, ukc_m=ukc_m)
-    cls = chart.ice_class(ship.ice_class if ship is not None else None)
-    if ship is None or ship.ice_class is None:
-        ship = as_vessel(cls, ship.speed_kn if ship is not None else speed_kn, ukc_m=ukc_m)
-    draft = draft_m if draft_m is not None else ship.draft_m
-    if draft is not None and draft_m is None and chart.depth is None:
-        draft = None  # route() says so: the chart has no depth to enforce the vessel's draft on
-    ukc = ukc_m if ukc_m is not None else (ship.ukc_m if draft is not None else None)
-    chart_cost = chart.cost_for(cls, concentration_limit=concentration_limit)
-    cost, shallow = with_draft(chart_cost, chart.depth, draft, ukc)
-    timing = ice_time(
+    p = price_chart(
         chart,
-        cls,
-        ship,
-        cost,
+        vessel=vessel,
+        speed_kn=speed_kn,
+        objective="time",
         escort=escort,
-        escort_kn=escort_speed_kn,
+        escort_speed_kn=escort_speed_kn,
         stage_thickness=stage_thickness,
-        draft_m=draft,
+        draft_m=draft_m,
+        ukc_m=ukc_m,
+        concentration_limit=concentration_limit,
     )
-    hours = true_cost(chart.projection, search_cost(cost, timing, "time"))
-    return hours, ship, {"chart_cost": chart_cost, "reasons": end_reasons(shallow, timing), "vessel": cls}
+    why = {"chart_cost": p.chart_cost, "reasons": end_reasons(p.shallow, p.timing), "vessel": p.cls}
+    return p.routed, p.ship, why
 
 
 def arrival_field(

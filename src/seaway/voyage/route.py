@@ -19,12 +19,11 @@ from ..engine.api import prepare
 from ..engine.snap import DEFAULT_SNAP_KM
 from ..errors import NoRouteError, SeawayError
 from ..models import EdgeCost
-from .depth import with_draft
 from .ends import check_ends
 from .noroute import ClassProbe, why_no_route
+from .pricing import price_chart
 from .projected import end_pixel, pixel_latlon, true_cost, true_latlon
-from .ship import as_vessel, vessel_notes
-from .timing import blocked_words, chart_age, end_reasons, ice_time, search_cost, time_notes
+from .timing import blocked_words, chart_age, end_reasons, ice_time, search_cost
 
 if TYPE_CHECKING:
     from ..constraints import KeepAway, Zone
@@ -94,13 +93,22 @@ def route_chart(
     say = progress or (lambda message: None)
     if objective not in OBJECTIVES:
         raise SeawayError(f"objective must be one of {', '.join(OBJECTIVES)} on a chart, got {objective!r}")
-    given = vessel if vessel is not None else chart.vessel
-    ship = as_vessel(given, speed_kn, ukc_m=ukc_m)
-    cls = chart.ice_class(ship.ice_class if ship is not None else None)
-    if chart.is_ice and (ship is None or ship.ice_class is None):
-        ship = as_vessel(cls, ship.speed_kn if ship is not None else speed_kn, ukc_m=ukc_m)
-    notes = vessel_notes(ship) if chart.is_ice or ship is not None and ship.path else []
-    cost = chart.cost_for(cls, concentration_limit=concentration_limit)
+    pr = price_chart(
+        chart,
+        vessel=vessel,
+        speed_kn=speed_kn,
+        objective=objective,
+        edge_cost=edge_cost,
+        escort=escort,
+        escort_speed_kn=escort_speed_kn,
+        stage_thickness=stage_thickness,
+        draft_m=draft_m,
+        ukc_m=ukc_m,
+        concentration_limit=concentration_limit,
+        say=say,
+    )
+    ship, cls, draft, ukc, chart_cost = pr.ship, pr.cls, pr.draft, pr.ukc, pr.chart_cost
+    cost, shallow, timing, routed, notes = pr.cost, pr.shallow, pr.timing, pr.routed, pr.notes
     asked = (tuple(start), tuple(end))
     if chart.projection is not None:
         start, end = (end_pixel(cost, chart.projection, p, n) for p, n in ((start, "start"), (end, "end")))
@@ -109,51 +117,21 @@ def route_chart(
             "the chart has projected y/x coordinates but names no projection (CF grid_mapping): "
             "--from and --to are ROW,COL pixel indices"
         )
-    draft = draft_m if draft_m is not None else (ship.draft_m if ship is not None else None)
-    if draft is not None and draft_m is None and chart.depth is None:
-        notes.append(
-            f"the draft {draft:g} m is not enforced: the chart has no depth (open it with depth=FILE)"
-        )
-        draft = None
-    chart_cost = cost
-    ukc = ukc_m if ukc_m is not None else (ship.ukc_m if ship is not None and draft is not None else None)
-    cost, shallow = with_draft(cost, chart.depth, draft, ukc, say)
-    timing = priced = None
-    if chart.is_ice and chart.layers is not None:
-        timing = ice_time(
-            chart,
-            cls,
-            ship,
-            cost,
-            escort=escort,
-            escort_kn=escort_speed_kn,
-            stage_thickness=stage_thickness,
-            draft_m=draft,
-        )
-        priced = search_cost(cost, timing, objective)
-        notes += time_notes(timing, objective, edge_cost)
-    elif objective == "time":
-        raise SeawayError(
-            "objective time needs an ice chart (a speed in its ice); this chart is a cost raster"
-        )
-    routed = true_cost(chart.projection, cost if priced is None else priced)  # per true km
 
     def price(c):  # the search's cost for another class: its ice, its speed (a ship of that class)
         if c == cls:
             return routed
-        other = as_vessel(c, ship.speed_kn if ship is not None else speed_kn)
-        cost_c, _ = with_draft(chart.cost_for(c), chart.depth, draft, ukc)
-        t = ice_time(
+        return price_chart(
             chart,
-            c,
-            other,
-            cost_c,
+            vessel=c,
+            speed_kn=ship.speed_kn if ship is not None else speed_kn,
             escort=escort,
-            escort_kn=escort_speed_kn,
+            escort_speed_kn=escort_speed_kn,
             stage_thickness=stage_thickness,
             draft_m=draft,
-        )
-        return true_cost(chart.projection, search_cost(cost_c, t, "impact"))
+            ukc_m=ukc,
+            concentration_limit=concentration_limit,
+        ).routed
 
     reasons = end_reasons(shallow, timing)
     (start, end), moved = check_ends(
