@@ -15,6 +15,9 @@ Held out (never looked at while tuning):
     priced for Arc7;
   * sigrid CIS (real): the Canadian Ice Service's chart of 2020-11-02 (Baffin Bay, Davis
     Strait) rasterised onto 0.05 deg lat/lon pixels (300 x 600), priced for Arc7;
+  * sigrid DMI (real): the Danish Meteorological Institute's chart of Cape Farewell of
+    2014-04-25 on 0.01 deg lat/lon pixels (740 x 1465), Arc7: added after auto's least-cost
+    rule was read off the two charts above, and held out from it;
   * game map: seaway.samples.family.game_map() (1024 x 1024, coastline of noise at three scales,
     costs 1-20);
   * maze: seaway.samples.family.maze() (1200 x 1200, channels 8 pixels wide, costs 1-5).
@@ -37,6 +40,7 @@ from seaway.samples.family import floe_sea, game_map, maze
 PAIRS = int(os.environ.get("SEAWAY_BENCH_PAIRS", "8"))
 SHARED = os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data")
 CIS = os.path.join(SHARED, "ice_charts_sigrid3", "cis_eastern_arctic", "cis_SGRDREA_20201102T.gpkg")
+DMI = os.path.join(SHARED, "ice_charts_sigrid3", "dmi_greenland", "201404250420_CapeFarewell2_RIC.shp")
 
 
 @dataclass
@@ -136,6 +140,15 @@ def _cis(tmp):
     return _sigrid(CIS, (60.0, 75.0, -75.0, -45.0, 0.05), "sigrid CIS (real)", "SIGRID-3 real, lat/lon")
 
 
+def _dmi(tmp):
+    """Held out from the auto rule of 2026-12-06 (one-way A* where most water costs the least),
+    which was read off the CIS and AARI-shaped charts: DMI's chart of Cape Farewell (south
+    Greenland, 2014-04-25) on 0.01 deg lat/lon pixels, Arc7."""
+    if not os.path.exists(DMI):
+        return None
+    return _sigrid(DMI, (58.0, 65.4, -56.65, -42.0, 0.01), "sigrid DMI (real)", "SIGRID-3 real, lat/lon")
+
+
 BUILDERS = {
     "A winter": lambda tmp: _planar("A winter", "synthetic recipe A", True, synthetic_sea()),
     "A summer": lambda tmp: _planar("A summer", "synthetic recipe A, summer", True, summer(synthetic_sea())),
@@ -146,6 +159,7 @@ BUILDERS = {
     "B small": lambda tmp: _planar("B small", "small (10^5 px), recipe B", False, floe_sea((333, 300))),
     "sigrid (AARI-shaped)": _aari,
     "sigrid CIS (real)": _cis,
+    "sigrid DMI (real)": _dmi,
     "game map": lambda tmp: _planar("game map", "game-map coastline", False, game_map()),
     "maze": lambda tmp: _planar("maze", "maze of narrow channels", False, maze()),
 }

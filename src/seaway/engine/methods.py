@@ -15,8 +15,11 @@ Methods (all exact except weighted A*):
   mean and integral only: the bound |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
   mean of the two ends x the step's length; the integral over the same segment).
 * "auto" (the default): "astar" if a weight is given; on a chart with landmarks for the query's
-  model, "landmarks"; else "bidirectional" for a static raster model (with the A* potential on
-  a low-contrast chart); else "astar" (time-dependent models). It estimates nothing: every
+  model, "landmarks"; else, for a static raster model, "astar" on a chart where at least half
+  the water costs the least (mostly_least_cost: the straight-line bound is then the true cost
+  over most of the water, and one thread settles little more than the two sides of a
+  bidirectional search do together) and "bidirectional" elsewhere (with the A* potential on a
+  low-contrast chart); else "astar" (time-dependent models). It estimates no times: every
   two-thread search first searches alone from the start (cpp/seaway/bidirectional_side.hpp),
   so a short voyage costs what a one-way search does, and the landmark potential takes the max
   with the straight-line bound, so its bounds are at least as tight as bidirectional A*'s.
@@ -32,7 +35,7 @@ import numpy as np
 
 from ..base.validate import number
 from ..errors import SeawayError, SeawayTypeError
-from ..models.base import EDGE_COSTS
+from ..models.base import EDGE_COSTS, EdgeCost
 from .result import Search
 
 if TYPE_CHECKING:
@@ -50,6 +53,14 @@ DIRECTIONS = ("full", "unique")
 ASTAR_CONTRAST = 2.0
 #: "landmarks" runs on two threads (bidirectional A*); False: A* on one thread (both exact).
 BIDIRECTIONAL_LANDMARKS = True
+#: auto takes one-way A* on a chart without landmarks when at least this share of the passable
+#: pixels cost the chart's least cost (to 1 %): open water around patches of ice (the CIS and
+#: AARI-shaped SIGRID-3 charts: 77 % and 100 %; the synthetic and game charts 0-27 %, the real
+#: Kara chart 9 %: benchmarks/README.md).
+LEAST_COST_SHARE = 0.5
+#: Pixels sampled for that share (a fixed multiplicative-hash stride over the flat raster: the
+#: same pixels, and answer, on every run).
+SHARE_SAMPLE = 4096
 
 
 def check_options(neighbourhood: int, directions: str) -> None:
@@ -91,7 +102,9 @@ def resolve(prepared: PreparedChart, model: CostModel, method: str, weight: floa
     if method == "auto":
         if model.static and prepared.landmarks_for(model) is not None:
             return "landmarks"
-        return "bidirectional" if model.static else "astar"
+        if not model.static or mostly_least_cost(prepared, model):
+            return "astar"
+        return "bidirectional"
     if method == "bidirectional" and not model.static:
         raise SeawayError(
             f"method='bidirectional' needs a static raster model (edge_cost in {EDGE_COST_NAMES}); "
@@ -142,6 +155,32 @@ def search(
             )
         )
     return Search.from_core(router.route(engine, s, e, weight, cancel))
+
+
+def mostly_least_cost(prepared: PreparedChart, model: CostModel) -> bool:
+    """At least LEAST_COST_SHARE of the chart's passable pixels cost its least cost (to 1 %),
+    from SHARE_SAMPLE pixels read once per chart; an edge-cost model only ("length" prices
+    every step by its length: always). Kept on the prepared chart."""
+    if not isinstance(model, EdgeCost):
+        return False
+    if model.name == "length":
+        return True
+    found = prepared._least_cost_share
+    if found is None:
+        values = np.asarray(prepared.chart.values).reshape(-1)
+        picked = (
+            np.arange(min(SHARE_SAMPLE, values.size), dtype=np.uint64)
+            * np.uint64(2654435761)
+            % np.uint64(values.size)
+        )
+        cost = values[picked].astype(float)
+        ok = np.isfinite(cost) & (cost >= 0)
+        if prepared.chart.land is not None:
+            ok &= np.asarray(prepared.chart.land).reshape(-1)[picked] == 0
+        lo = prepared.router.cost_range[0]
+        found = float(np.mean(cost[ok] <= lo * 1.01)) if ok.any() and lo > 0 else 0.0
+        prepared._least_cost_share = found
+    return found >= LEAST_COST_SHARE
 
 
 def low_contrast(prepared: PreparedChart) -> bool:
