@@ -195,6 +195,6 @@ def test_concentration_limit_flag(tmp_path):
     assert any(n.startswith(said) for n in r.notes) and not any(n.startswith(said) for n in free.notes)
     with pytest.raises(
         seaway.SeawayError,
-        match=r"total concentration 10/10 \(over Arc7's limit for independent navigation, 8/10\)",
+        match=r"on an impassable pixel \(total concentration 10/10, over Arc7's limit for independent navigation \(8/10; concentration_limit\)\)",
     ):
         chart.route((73.0, 62.0), b, concentration_limit=True)

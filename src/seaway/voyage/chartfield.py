@@ -17,7 +17,6 @@ from ..models import EdgeCost
 from .ends import check_ends
 from .pricing import price_chart
 from .projected import end_pixel, pixel_latlon
-from .timing import end_reasons
 
 if TYPE_CHECKING:
     import xarray as xr
@@ -58,7 +57,7 @@ def time_cost(
         ukc_m=ukc_m,
         concentration_limit=concentration_limit,
     )
-    why = {"chart_cost": p.chart_cost, "reasons": end_reasons(p.shallow, p.timing), "vessel": p.cls}
+    why = {"chart_cost": p.chart_cost, "reasons": p.reasons, "vessel": p.cls}
     return p.routed, p.ship, why
 
 

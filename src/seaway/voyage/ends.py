@@ -14,8 +14,7 @@ import numpy as np
 from ..base.sphere import distance_km
 from ..chart.raster import as_chart
 from ..engine.snap import DEFAULT_SNAP_KM, SnapError, snap_ends
-from ..errors import SeawayError
-from ..ice.classes import get_class, with_article
+from ..ice.classes import with_article
 from ..ice.codes import stage_name
 from ..ice.forms import DEFAULT_FAST_ICE, fast_ice_mask, fast_ice_stage, ice_words
 
@@ -62,22 +61,11 @@ def describe(layers, rc, vessel, reasons=(), ice_blocks=True, fast_ice=DEFAULT_F
         text = ", ".join(ice) if ice else "ice of unknown stage"
         if np.isfinite(ct):
             text += f", total concentration {ct:g}/10"
-            limit = _limit(vessel)
-            if limit is not None and ct > limit:
-                text += f" (over {vessel}'s limit for independent navigation, {limit:g}/10)"
         who = f"{with_article(vessel)} ship" if vessel else "the ship"
         parts.insert(0, f"ice {who} may not enter: {text}")
     if not parts:
         parts.append("an impassable pixel (cost NaN or infinite)")
     return "; ".join(parts)
-
-
-def _limit(vessel) -> float | None:
-    """The class's concentration limit for independent navigation in tenths, or None."""
-    try:
-        return float(get_class(vessel).max_concentration) if vessel else None
-    except SeawayError:  # not a class name the tables know
-        return None
 
 
 def _fast_words(layers, rc, fast_ice) -> str:

@@ -15,7 +15,7 @@ from ..ice.classes import get_class
 from .depth import with_draft
 from .projected import true_cost
 from .ship import as_vessel, vessel_notes
-from .timing import ice_time, search_cost, time_notes
+from .timing import end_reasons, ice_time, over_limit, search_cost, time_notes
 
 if TYPE_CHECKING:
     import xarray as xr
@@ -32,11 +32,12 @@ class Pricing:
     cls: str | None  # its ice class on an ice chart
     draft: float | None  # the draft enforced (None: none, or the chart has no depth)
     ukc: float | None
-    chart_cost: xr.DataArray  # the class's cost, before the draft
+    chart_cost: xr.DataArray  # the class's cost, before the draft and the concentration limit
     cost: xr.DataArray  # with pixels too shallow for the draft closed
     shallow: Any  # with_draft's reasons for a too-shallow end, or None
     timing: Any  # seaway.voyage.timing.IceTime on an ice chart, else None
     routed: xr.DataArray  # what the search prices, per true km
+    reasons: Any  # (row, col) -> why an end is closed beyond the class's ice (timing.end_reasons)
     notes: list[str] = field(default_factory=list)  # the vessel, the draft, the times in the ice
 
 
@@ -63,7 +64,8 @@ def price_chart(
     if chart.is_ice and (ship is None or ship.ice_class is None):
         ship = as_vessel(cls, ship.speed_kn if ship is not None else speed_kn, ukc_m=ukc_m)
     notes = vessel_notes(ship) if chart.is_ice or ship is not None and ship.path else []
-    chart_cost = chart.cost_for(cls, concentration_limit=concentration_limit)
+    chart_cost = chart.cost_for(cls)
+    over = over_limit(chart, cls) if concentration_limit and cls is not None else None
     if concentration_limit and cls is not None:
         limit = get_class(cls).max_concentration
         notes.append(
@@ -77,7 +79,8 @@ def price_chart(
         )
         draft = None
     ukc = ukc_m if ukc_m is not None else (ship.ukc_m if ship is not None and draft is not None else None)
-    cost, shallow = with_draft(chart_cost, chart.depth, draft, ukc, say)
+    limited = chart.cost_for(cls, concentration_limit=concentration_limit)
+    cost, shallow = with_draft(limited, chart.depth, draft, ukc, say)
     timing = priced = None
     if chart.is_ice and chart.layers is not None:
         timing = ice_time(
@@ -97,4 +100,5 @@ def price_chart(
             "objective time needs an ice chart (a speed in its ice); this chart is a cost raster"
         )
     routed = true_cost(chart.projection, cost if priced is None else priced)  # per true km
-    return Pricing(ship, cls, draft, ukc, chart_cost, cost, shallow, timing, routed, notes)
+    reasons = end_reasons(shallow, timing, over)
+    return Pricing(ship, cls, draft, ukc, chart_cost, cost, shallow, timing, routed, reasons, notes)

@@ -23,7 +23,7 @@ from .ends import check_ends
 from .noroute import ClassProbe, why_no_route
 from .pricing import price_chart
 from .projected import end_pixel, pixel_latlon, true_cost, true_latlon
-from .timing import blocked_words, chart_age, end_reasons, ice_time, search_cost
+from .timing import blocked_words, chart_age, ice_time, search_cost
 
 if TYPE_CHECKING:
     from ..constraints import KeepAway, Zone
@@ -133,7 +133,7 @@ def route_chart(
             concentration_limit=concentration_limit,
         ).routed
 
-    reasons = end_reasons(shallow, timing)
+    reasons = pr.reasons
     (start, end), moved = check_ends(
         routed,
         chart.land,

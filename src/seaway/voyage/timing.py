@@ -151,15 +151,18 @@ def time_notes(timing, objective, edge_cost) -> list[str]:
     return out
 
 
-def end_reasons(shallow, timing):
-    """(row, col) -> extra reasons an end is impassable: too shallow, no speed of its own."""
-    if shallow is None and (timing is None or not timing.closed.any()):
+def end_reasons(shallow, timing, over=None):
+    """(row, col) -> extra reasons an end is impassable: too shallow, no speed of its own, over
+    the class's concentration limit (`over`: over_limit)."""
+    if shallow is None and over is None and (timing is None or not timing.closed.any()):
         return None
 
     def why(rc):
         out = list(shallow(rc)) if shallow is not None else []
         if timing is not None and timing.closed[rc]:
             out.append(timing.why(rc))
+        if over is not None and over(rc):
+            out.append(over(rc))
         return out
 
     return why
@@ -171,6 +174,27 @@ def blocked_words(shallow, timing) -> str | None:
     if timing is not None and timing.closed.any():
         return "ice the ship has no speed of its own in (--escort takes it under icebreaker escort)"
     return None
+
+
+def over_limit(chart, ice_class):
+    """(row, col) -> why the concentration limit closes the pixel (concentration_closed), or ""
+    where it does not."""
+    layers = chart.layers
+    name = next((n for n in ("CT", "sea_ice_concentration") if layers is not None and n in layers), None)
+    if name is None:
+        return lambda rc: ""
+    ct = np.asarray(layers[name].values, float)
+    limit = get_class(ice_class).max_concentration
+
+    def why(rc):
+        if not ct[rc] > limit:
+            return ""
+        return (
+            f"total concentration {ct[rc]:g}/10, over {ice_class}'s limit for independent "
+            f"navigation ({limit:g}/10; concentration_limit)"
+        )
+
+    return why
 
 
 def concentration_closed(chart, ice_class, cost):
