@@ -117,55 +117,52 @@ def _run_batch(chart, vessel, voyages, opts):
     return [_route_one(shared.get, v, opts["keep"]) for v in voyages]
 
 
+class _OwnCluster:
+    """A dask.distributed Client on a LocalCluster of its own (worker processes; no dashboard),
+    closed in order: the workers are retired and closed first, then the client and the
+    scheduler, so that no worker is left sending heartbeats to a scheduler that has gone
+    (distributed then logs a CommClosedError traceback)."""
+
+    def __init__(self, n_workers: int = 2, threads_per_worker: int = 1):
+        from dask.distributed import Client, LocalCluster
+
+        self.cluster = LocalCluster(
+            n_workers=n_workers, threads_per_worker=threads_per_worker, dashboard_address=":0"
+        )
+        self.client = Client(self.cluster)
+
+    def close(self) -> None:
+        try:
+            self.client.retire_workers(close_workers=True)
+        finally:
+            self.client.close()
+            self.cluster.close()
+
+
 @contextlib.contextmanager
 def local_cluster(n_workers: int = 2, threads_per_worker: int = 1):
-    """A dask.distributed Client on a LocalCluster of its own (worker processes; no dashboard),
-    shut down in order when the block ends: the workers are retired and closed first, then the
-    client and the scheduler, so that no worker is left sending heartbeats to a scheduler that
-    has gone (distributed then logs a CommClosedError traceback)."""
-    from dask.distributed import Client, LocalCluster
-
-    cluster = LocalCluster(n_workers=n_workers, threads_per_worker=threads_per_worker, dashboard_address=":0")
-    client = Client(cluster)
+    """A dask.distributed Client on a LocalCluster of its own, shut down in order when the block
+    ends (the workers first, then the client and the scheduler: no traceback at shutdown)."""
+    own = _OwnCluster(n_workers, threads_per_worker)
     try:
-        yield client
+        yield own.client
     finally:
-        close_in_order(client, cluster)
-
-
-def close_in_order(client, cluster) -> None:
-    """Retire and close the workers, then the client, then the cluster."""
-    try:
-        client.retire_workers(close_workers=True)
-    finally:
-        client.close()
-        cluster.close()
+        own.close()
 
 
 def open_client(cluster):
     """(client, what to close afterwards) for cluster=: True or "local" starts
-    LocalCluster(n_workers=2, threads_per_worker=1), a string is a scheduler address, anything
-    else is a dask.distributed.Client used as it is (and left open)."""
-    from dask.distributed import Client, LocalCluster
+    LocalCluster(n_workers=2, threads_per_worker=1), closed in order afterwards; a string is a
+    scheduler address; anything else is a dask.distributed.Client used as it is (and left open)."""
+    from dask.distributed import Client
 
     if cluster is True or cluster == "local":
-        local = LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=":0")
-        client = Client(local)
-        return client, [_Closer(client, local)]
+        own = _OwnCluster()
+        return own.client, [own]
     if isinstance(cluster, str):
         client = Client(cluster)
         return client, [client]
     return cluster, []
-
-
-class _Closer:
-    """Closes a client and its own cluster in order (close_in_order) as one object."""
-
-    def __init__(self, client, cluster):
-        self.client, self.cluster = client, cluster
-
-    def close(self):
-        close_in_order(self.client, self.cluster)
 
 
 def _run_dask(chart_items, vessel_items, voyage_items, opts, cluster, bar):

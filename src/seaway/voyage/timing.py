@@ -176,14 +176,19 @@ def blocked_words(shallow, timing) -> str | None:
     return None
 
 
+def total_concentration(chart):
+    """The chart's total concentration in tenths (its CT or sea_ice_concentration layer), or None."""
+    layers = chart.layers
+    name = next((n for n in ("CT", "sea_ice_concentration") if layers is not None and n in layers), None)
+    return None if name is None else np.asarray(layers[name].values, float)
+
+
 def over_limit(chart, ice_class):
     """(row, col) -> why the concentration limit closes the pixel (concentration_closed), or ""
     where it does not."""
-    layers = chart.layers
-    name = next((n for n in ("CT", "sea_ice_concentration") if layers is not None and n in layers), None)
-    if name is None:
+    ct = total_concentration(chart)
+    if ct is None:
         return lambda rc: ""
-    ct = np.asarray(layers[name].values, float)
     limit = get_class(ice_class).max_concentration
 
     def why(rc):
@@ -201,14 +206,12 @@ def concentration_closed(chart, ice_class, cost):
     """`cost` with ice over the class's concentration limit for independent navigation closed
     (inf where the total concentration exceeds its max_concentration, Grinyak et al. 2022 Table
     1; seaway.ice.classes), as a season closes it by default (concentration_limit)."""
-    layers = chart.layers
-    name = next((n for n in ("CT", "sea_ice_concentration") if layers is not None and n in layers), None)
-    if name is None:
+    ct = total_concentration(chart)
+    if ct is None:
         raise ChartError(
             f"{chart.source} gives no total concentration (CT or sea_ice_concentration): the "
             "concentration limit cannot be read; give concentration_limit=False"
         )
-    ct = np.asarray(layers[name].values, float)
     with np.errstate(invalid="ignore"):
         over = ct > get_class(ice_class).max_concentration
     return cost.copy(data=np.where(over, np.inf, np.asarray(cost.values, float)))
