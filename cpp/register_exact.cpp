@@ -84,6 +84,17 @@ void register_exact(py::module_& m) {
     const Passability& p = chart.passability();
     return py::make_tuple(p.passable ? p.min_cost : 0.0, p.max_cost, p.passable);
   }, "(smallest, largest passable cost, passable pixels), from the preparation");
+  router.def_property_readonly("clearance", [](const PreparedChart& chart) {
+    const Geometry& g = chart.geometry();
+    py::array_t<std::uint8_t> out({py::ssize_t(g.rows), py::ssize_t(g.cols)});
+    std::copy(chart.clearance(), chart.clearance() + g.size(), out.mutable_data());
+    return out;
+  }, "A copy of the land clearance: Chebyshev pixels to the nearest impassable pixel, capped at "
+     "the stencil's half-width + 1; 0 on impassable pixels");
+  router.def_property_readonly("least_cost_share", [](const PreparedChart& chart) {
+    return chart.passability().least_share;
+  }, "Share of a fixed sample of 4096 passable pixels whose cost is within 1 % of the least "
+     "(auto's one-way A* rule), from the preparation");
   for_each_model(Models{}, [&](auto* tag) {
     using M = std::remove_pointer_t<decltype(tag)>;
     if constexpr (M::caps.is_static) def_bidirectional<M>(router);  // the backward side prices steps

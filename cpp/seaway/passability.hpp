@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <thread>
+#include <vector>
 
 #include "geometry.hpp"
 #include "compat.hpp"
@@ -18,7 +19,30 @@ struct Passability {
   double min_cost = std::numeric_limits<double>::infinity();  // over passable pixels
   double max_cost = 0;
   std::int64_t passable = 0;                                  // how many there are
+  // Share of the passable pixels of a fixed sample (least_share_sample) whose cost is within
+  // 1 % of min_cost (0 when no pixel of the sample is passable or min_cost is 0): what auto
+  // reads to choose one-way A* (seaway.engine.methods.mostly_least_cost).
+  double least_share = 0;
 };
+
+// The sample behind Passability::least_share: pixel (i * 2654435761) mod n for i < this (a fixed
+// multiplicative-hash stride over the flat raster: the same pixels, and share, on every run).
+constexpr std::int64_t least_share_sample = 4096;
+
+// Passability::least_share of a chart whose clearance (0: impassable) is computed.
+template <class T>
+double least_cost_share(const T* cost, const std::uint8_t* clearance, std::int64_t n, double min_cost) {
+  if (!(min_cost > 0) || n <= 0) return 0.0;
+  const double limit = min_cost * 1.01;
+  std::int64_t ok = 0, least = 0;
+  for (std::int64_t i = 0; i < std::min(least_share_sample, n); ++i) {
+    const std::int64_t v = std::int64_t(std::uint64_t(i) * 2654435761ull % std::uint64_t(n));
+    if (clearance[v] == 0) continue;
+    ++ok;
+    least += double(cost[v]) <= limit;
+  }
+  return ok ? double(least) / double(ok) : 0.0;
+}
 
 // clearance[v] = min(distance to the nearest impassable pixel, cap); 0 marks impassable.
 // A pixel is impassable when its cost is NaN, infinite or negative, or land[v] is set.
@@ -29,47 +53,59 @@ template <class T>
 Passability compute_clearance(const Geometry& g, const T* cost, const std::uint8_t* land, int cap,
                               std::uint8_t* clearance, std::uint8_t* scratch) {
   const std::int64_t R = g.rows, C = g.cols;
-  // Pass 1: distance along the row to the nearest impassable pixel of that row.
+  // Pass 1: distance along the row to the nearest impassable pixel of that row (capped), and the
+  // range and count of the row's passable costs. The distance is a min over the cap's window of
+  // byte rows, as pass 2 does across rows: loops without a carried chain, which vectorise.
+  // (Locals throughout: a byte store could alias what the lambda captured by reference. The
+  // range is kept in four lanes: one min/max chain costs several cycles a pixel.)
   auto rows_pass1 = [&](std::int64_t r_begin, std::int64_t r_end, Passability& out) {
-    double lo = out.min_cost, hi = out.max_cost;  // locals: kept in registers (a byte store
-    std::int64_t passable = 0;                    // could alias what the lambda captured)
-    const std::int64_t cols = g.cols;  // a local: see above
+    const std::int64_t cols = g.cols;
+    const std::uint8_t far = std::uint8_t(cap);
+    const bool wrap = g.wrap;
+    double lo[4] = {out.min_cost, inf, inf, inf}, hi[4] = {out.max_cost, 0, 0, 0};
+    std::int64_t passable = 0;
+    std::vector<std::uint8_t> open_row(std::size_t(cols), 0);  // far: passable, 0: blocked
+    std::uint8_t* SEAWAY_RESTRICT b = open_row.data();
     for (std::int64_t r = r_begin; r < r_end; ++r) {
       const T* u = cost + r * cols;
       const std::uint8_t* l = land ? land + r * cols : nullptr;
-      std::uint8_t* h = scratch + r * cols;
-      auto blocked = [&](std::int64_t c) {
-        const double x = double(u[c]);
-        return !(x >= 0 && x < std::numeric_limits<double>::infinity()) || (l && l[c]);
-      };
-      // With periodic columns the distance may run across the seam: start from the last
-      // blocked pixel of the row, one period back.
-      std::int64_t last = -4 * std::int64_t(cap);
-      if (g.wrap)
-        for (std::int64_t c = cols - 1; c >= 0; --c)
-          if (blocked(c)) { last = c - cols; break; }
+      std::uint8_t* SEAWAY_RESTRICT h = scratch + r * cols;
       for (std::int64_t c = 0; c < cols; ++c) {
-        if (blocked(c)) {
-          last = c;
-        } else {
-          const double x = double(u[c]);
-          lo = std::min(lo, x);
-          hi = std::max(hi, x);
-          ++passable;
-        }
-        h[c] = std::uint8_t(std::min<std::int64_t>(c - last, cap));
+        const double x = double(u[c]);
+        b[c] = (x >= 0 && x < inf) ? far : 0;
       }
-      last = 4 * std::int64_t(cap) + cols;
-      if (g.wrap)
-        for (std::int64_t c = 0; c < cols; ++c)
-          if (h[c] == 0) { last = c + cols; break; }
-      for (std::int64_t c = cols - 1; c >= 0; --c) {
-        if (h[c] == 0) last = c;
-        h[c] = std::uint8_t(std::min<std::int64_t>(h[c], last - c));
+      if (l)
+        for (std::int64_t c = 0; c < cols; ++c) b[c] = l[c] ? 0 : b[c];
+      std::int64_t c = 0;
+      for (; c + 4 <= cols; c += 4)
+        for (int k = 0; k < 4; ++k) {
+          const bool ok = b[c + k] != 0;
+          const double x = double(u[c + k]);
+          lo[k] = std::min(lo[k], ok ? x : inf);
+          hi[k] = std::max(hi[k], ok ? x : 0.0);
+          passable += ok;
+        }
+      for (; c < cols; ++c) {
+        const bool ok = b[c] != 0;
+        lo[0] = std::min(lo[0], ok ? double(u[c]) : inf);
+        hi[0] = std::max(hi[0], ok ? double(u[c]) : 0.0);
+        passable += ok;
+      }
+      // h[c] = min over |d| < cap of (blocked(c + d) ? |d| : cap); across the seam if periodic.
+      std::copy(b, b + cols, h);
+      for (std::int64_t d = 1; d < cap; ++d) {
+        const std::uint8_t gap = std::uint8_t(d);
+        for (std::int64_t c2 = d; c2 < cols; ++c2) h[c2] = std::min(h[c2], std::max(gap, b[c2 - d]));
+        for (std::int64_t c2 = 0; c2 + d < cols; ++c2) h[c2] = std::min(h[c2], std::max(gap, b[c2 + d]));
+        if (wrap)
+          for (std::int64_t c2 = 0; c2 < std::min(d, cols); ++c2) {
+            h[c2] = std::min(h[c2], std::max(gap, b[c2 - d + cols]));
+            h[cols - 1 - c2] = std::min(h[cols - 1 - c2], std::max(gap, b[d - 1 - c2]));
+          }
       }
     }
-    out.min_cost = lo;
-    out.max_cost = hi;
+    out.min_cost = std::min(std::min(lo[0], lo[1]), std::min(lo[2], lo[3]));
+    out.max_cost = std::max(std::max(hi[0], hi[1]), std::max(hi[2], hi[3]));
     out.passable += passable;
   };
   // Pass 2: Chebyshev distance = min over nearby rows of max(row gap, distance in that row).

@@ -35,6 +35,7 @@ class PreparedChart {
     clearance_.resize(std::size_t(g.size()));
     std::vector<std::uint8_t> scratch(std::size_t(g.size()));
     pass_ = compute_clearance(g, cost, land, (k - 1) / 2 + 1, clearance_.data(), scratch.data());
+    pass_.least_share = least_cost_share(cost, clearance_.data(), g.size(), pass_.min_cost);
     const auto [rmin, rmax] = std::minmax_element(lengths_.table.begin(), lengths_.table.end());
     rmin_ = *rmin;
     rmax_ = *rmax;

@@ -38,16 +38,45 @@ def test_auto_takes_astar_where_most_water_costs_the_least(costly, method):
     assert seaway.route(u, s, e).method == method  # a fresh chart decides alike
 
 
-def test_the_share_is_read_once_per_chart_from_a_fixed_sample():
+def _sample_share(values, land=None, n=4096):
+    """The share of the sampled passable pixels within 1 % of the least passable cost, by numpy:
+    pixel (i * 2654435761) mod size for i < n (the preparation's sample, cpp/seaway/passability.hpp)."""
+    flat = np.asarray(values, float).reshape(-1)
+    ok_all = np.isfinite(flat) & (flat >= 0)
+    if land is not None:
+        ok_all &= np.asarray(land).reshape(-1) == 0
+    lo = flat[ok_all].min() if ok_all.any() else 0.0
+    picked = np.arange(min(n, flat.size), dtype=np.uint64) * np.uint64(2654435761) % np.uint64(flat.size)
+    ok = ok_all[picked]
+    return float(np.mean(flat[picked][ok] <= lo * 1.01)) if ok.any() and lo > 0 else 0.0
+
+
+def test_the_share_is_read_while_the_chart_is_prepared_from_a_fixed_sample():
     u = _sea(0.2)
     chart = seaway.prepare(u)
-    assert mostly_least_cost(chart, EdgeCost("max")) and chart._least_cost_share > 0.7
-    again = seaway.prepare(u)
-    assert mostly_least_cost(again, EdgeCost("max")) and again._least_cost_share == chart._least_cost_share
+    assert chart.router.least_cost_share == _sample_share(u) > 0.7
+    assert mostly_least_cost(chart, EdgeCost("max"))
+    assert seaway.prepare(u).router.least_cost_share == chart.router.least_cost_share  # every run
     # land given apart from the costs is not water; "length" prices steps by length alone
     land = np.zeros(u.shape, bool)
     land[:, :200] = True  # the land covers most of the cost-1 sea: two thirds of the rest are floes
     v = u.copy()
     v[:, 200:] = np.where(np.arange(100) % 3 != 0, 6.0, 1.0)
+    assert seaway.prepare(v, land=land).router.least_cost_share == pytest.approx(_sample_share(v, land))
     assert not mostly_least_cost(seaway.prepare(v, land=land), EdgeCost("max"))
     assert mostly_least_cost(seaway.prepare(v, land=land), EdgeCost("length"))
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_share_equals_numpys_on_random_charts(seed):
+    """NaN and infinite pixels, land, costs near the least, charts smaller than the
+    sample, float32: the C++ share equals numpy's on the same sample."""
+    rng = np.random.default_rng(seed)
+    shape = [(7, 9), (64, 64), (100, 333), (301, 17), (1, 5000), (200, 200)][seed]
+    u = rng.choice(
+        [0.5, 0.5 * 1.009, 0.5 * 1.02, 3.0, np.nan, np.inf], size=shape, p=[0.3, 0.1, 0.1, 0.3, 0.1, 0.1]
+    )
+    land = rng.random(shape) < 0.1
+    dtype = np.float32 if seed % 2 else np.float64
+    chart = seaway.prepare(u.astype(dtype), land=land, neighbourhood=3)
+    assert chart.router.least_cost_share == pytest.approx(_sample_share(u.astype(dtype), land), abs=1e-12)

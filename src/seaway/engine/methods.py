@@ -58,9 +58,9 @@ BIDIRECTIONAL_LANDMARKS = True
 #: AARI-shaped SIGRID-3 charts: 77 % and 100 %; the synthetic and game charts 0-27 %, the real
 #: Kara chart 9 %: benchmarks/README.md).
 LEAST_COST_SHARE = 0.5
-#: Pixels sampled for that share (a fixed multiplicative-hash stride over the flat raster: the
-#: same pixels, and answer, on every run).
-SHARE_SAMPLE = 4096
+#: The share is read from 4096 pixels at a fixed multiplicative-hash stride over the flat raster
+#: (the same pixels, and answer, on every run) while the chart is prepared, in C++
+#: (cpp/seaway/passability.hpp, least_cost_share): nothing is left for auto's decision to read.
 
 
 def check_options(neighbourhood: int, directions: str) -> None:
@@ -159,28 +159,11 @@ def search(
 
 def mostly_least_cost(prepared: PreparedChart, model: CostModel) -> bool:
     """At least LEAST_COST_SHARE of the chart's passable pixels cost its least cost (to 1 %),
-    from SHARE_SAMPLE pixels read once per chart; an edge-cost model only ("length" prices
-    every step by its length: always). Kept on the prepared chart."""
+    from the sample the preparation read; an edge-cost model only ("length" prices every step
+    by its length: always)."""
     if not isinstance(model, EdgeCost):
         return False
-    if model.name == "length":
-        return True
-    found = prepared._least_cost_share
-    if found is None:
-        values = np.asarray(prepared.chart.values).reshape(-1)
-        picked = (
-            np.arange(min(SHARE_SAMPLE, values.size), dtype=np.uint64)
-            * np.uint64(2654435761)
-            % np.uint64(values.size)
-        )
-        cost = values[picked].astype(float)
-        ok = np.isfinite(cost) & (cost >= 0)
-        if prepared.chart.land is not None:
-            ok &= np.asarray(prepared.chart.land).reshape(-1)[picked] == 0
-        lo = prepared.router.cost_range[0]
-        found = float(np.mean(cost[ok] <= lo * 1.01)) if ok.any() and lo > 0 else 0.0
-        prepared._least_cost_share = found
-    return found >= LEAST_COST_SHARE
+    return model.name == "length" or prepared.router.least_cost_share >= LEAST_COST_SHARE
 
 
 def low_contrast(prepared: PreparedChart) -> bool:

@@ -118,8 +118,6 @@ class PreparedChart:
             chart.values, chart.land, chart.grid, neighbourhood, directions, land_rule
         )
         self._landmarks, self.landmark_stats = {}, {}
-        #: The share of passable pixels at the least cost, once auto has read it (engine.methods).
-        self._least_cost_share: float | None = None
 
     def prepare_landmarks(self, count: int = 8, *, model: CostModel | str | None = None) -> LandmarkStats:
         """Tabulate the least costs from `count` landmark pixels (float32, 4 bytes per pixel
