@@ -168,3 +168,33 @@ def test_settled_progress_is_throttled_to_once_a_second_of_its_clock():
         "searching: 20,480 pixels settled (2 % of the chart)",
         "searching: 500,000 pixels settled (50 % of the chart)",
     ]
+
+
+@pytest.mark.skipif(
+    threading.current_thread() is not threading.main_thread(), reason="the main thread's own rule"
+)
+def test_a_short_search_runs_in_the_main_thread_and_a_long_one_in_a_helper(monkeypatch):
+    """A static model's search on a chart of at most DIRECT_STEPS pixel-steps runs where it is
+    called (no helper thread to start: a query's fixed cost); a larger chart's, or any search
+    while a listener wants progress, runs in the helper thread that lets Ctrl-C stop it."""
+    from seaway.engine import methods, prepared
+
+    ran_in = []
+    search = methods.search
+
+    def spy(*args):
+        ran_in.append(threading.current_thread().name)
+        return search(*args)
+
+    monkeypatch.setattr(methods, "search", spy)
+    small = seaway.prepare(np.ones((300, 300)))  # 90,000 x 24 steps <= 2**23
+    assert small.route((0, 0), (299, 299)).cost == pytest.approx(299 * np.sqrt(2))
+    large = seaway.prepare(np.ones((600, 600)))  # 360,000 x 24 > 2**23
+    assert large.route((0, 0), (0, 599)).cost == pytest.approx(599.0)
+    with reporting(lambda settled: None):
+        small.route((0, 0), (5, 5))
+    assert ran_in == ["MainThread", "seaway-search", "seaway-search"]
+    assert 300 * 300 * 24 <= prepared.DIRECT_STEPS < 600 * 600 * 24
+    # a Ctrl-C that arrives during a direct search is not lost
+    with pytest.raises(KeyboardInterrupt):
+        interruptible(lambda token: os.kill(os.getpid(), signal.SIGINT) or time.sleep(1.0), direct=True)

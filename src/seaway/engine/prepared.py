@@ -32,6 +32,11 @@ if TYPE_CHECKING:
     from ..constraints import KeepAway, Zone
     from .constrained import Point, TurnPenalty, Via
 
+#: A static model's search on a chart of at most this many pixels x stencil steps runs in the
+#: calling (main) thread, without the helper thread that lets Ctrl-C stop it (base.interrupt):
+#: 2**23 steps, e.g. 350,000 pixels at 5 x 5, take tens of milliseconds at most.
+DIRECT_STEPS = 2**23
+
 
 class LandmarkStats(TypedDict):
     """What prepare_landmarks() reports (PreparedChart.landmark_stats[model name])."""
@@ -118,6 +123,8 @@ class PreparedChart:
             chart.values, chart.land, chart.grid, neighbourhood, directions, land_rule
         )
         self._landmarks, self.landmark_stats = {}, {}
+        #: A static model's search here is short (at most DIRECT_STEPS steps): no helper thread.
+        self._short = chart.values.size * (neighbourhood**2 - 1) <= DIRECT_STEPS
 
     def prepare_landmarks(self, count: int = 8, *, model: CostModel | str | None = None) -> LandmarkStats:
         """Tabulate the least costs from `count` landmark pixels (float32, 4 bytes per pixel
@@ -169,7 +176,8 @@ class PreparedChart:
         return interruptible(
             lambda cancel: methods.search(
                 self, engine, self.flat(s), self.flat(e), method, weight, model, cancel
-            )
+            ),
+            direct=model.static and self._short,
         )
 
     def route(
