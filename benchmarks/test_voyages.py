@@ -4,10 +4,12 @@ landmarks), under the default model (edge_cost="max"), each voyage against the p
 (benchmarks/peers.py: scikit-image, python-tcod's Dijkstra and A* on the 5 x 5 stencil,
 pyastar2d) on the same voyage in the same run.
 
-Each round runs every case of a voyage once, in a rotated order (a busy machine slows them
-alike); the medians of the rounds give wall and CPU seconds (time.process_time: all threads of
-the process), pixels settled and CPU nanoseconds per settled pixel; ratio = the wall median over
-scikit-image's. Every case asserts its cost equals Dijkstra's to 1e-9. Also timed: auto's own
+Each round runs every case of a voyage once, in a new shuffled order (a busy machine slows them
+alike, and no case always follows the same one), 3 rounds or, for a short voyage, as many as
+fill about ROUND_SECONDS (up to 25); the medians of the rounds give wall and CPU seconds
+(time.process_time: all threads of the process), pixels settled and CPU nanoseconds per settled
+pixel; ratio = the wall median over scikit-image's. Every case asserts its cost equals
+Dijkstra's to 1e-9. Also timed: auto's own
 work on a prepared chart (its decision: seaway.engine.methods.resolve) and on a fresh chart
 (preparing it: seaway.prepare). The tables are printed at the end of the run (conftest.py).
 Command (benchmarks/README.md):
@@ -16,6 +18,7 @@ Command (benchmarks/README.md):
 """
 
 import os
+import random
 import statistics
 import time
 
@@ -33,6 +36,11 @@ pytest.importorskip("skimage.graph")
 pytest.importorskip("tcod.path")
 pytest.importorskip("pyastar2d")
 ROUNDS = int(os.environ.get("SEAWAY_BENCH_ROUNDS", "3"))
+#: A voyage whose round (every case once) takes less than this gets more rounds, up to
+#: MAX_ROUNDS, until its rounds take about this long: medians of 3 rounds of millisecond voyages
+#: differ by 10-30 % between two runs of the same search, the size of auto's 10 % margin.
+ROUND_SECONDS = float(os.environ.get("SEAWAY_BENCH_SECONDS", "3"))
+MAX_ROUNDS = 25
 LANDMARKS = int(os.environ.get("SEAWAY_BENCH_LANDMARKS", "8"))
 FRESH = ("auto", "dijkstra", "astar", "bidirectional")
 PREPARED = ("auto", "dijkstra", "astar", "bidirectional", "landmarks")
@@ -82,21 +90,30 @@ def _cases(chart, prepared, s, e, ps, pe):
 
 
 def time_voyage(label, chart, prepared, voyage):
-    """Every case of one voyage, ROUNDS rounds in rotated order after a warm-up; rows into VOYAGES."""
+    """Every case of one voyage, ROUNDS rounds (more for a short voyage: ROUND_SECONDS) in a
+    shuffled order after a warm-up; rows into VOYAGES."""
     (s, e), (ps, pe) = chart.voyages[voyage], chart.pixels[voyage]
     cases = _cases(chart, prepared, s, e, ps, pe)
     names = list(cases)
     wall = {n: [] for n in names}
     cpu = {n: [] for n in names}
     last = {}
-    for rnd in range(ROUNDS + 1):  # round 0 warms up
-        k = rnd % len(names)
-        for n in names[k:] + names[:k]:
+    rounds, rnd = ROUNDS, 0
+    while rnd <= rounds:  # round 0 warms up
+        t0 = time.perf_counter()
+        # A new order each round (seeded): in a fixed cyclic order each case always ran after the
+        # same one, and a case after a peer found the caches cold (auto after pyastar2d took 1.12-
+        # 1.15 x the same A* after Dijkstra, on every CIS voyage)
+        for n in random.Random(rnd).sample(names, len(names)):
             w0, c0 = time.perf_counter(), time.process_time()
             last[n] = cases[n]()
             if rnd:
                 wall[n].append(time.perf_counter() - w0)
                 cpu[n].append(time.process_time() - c0)
+        if rnd == 0:  # short voyages: more rounds (see ROUND_SECONDS)
+            took = time.perf_counter() - t0
+            rounds = max(ROUNDS, min(MAX_ROUNDS, int(ROUND_SECONDS / max(took, 1e-9))))
+        rnd += 1
     exact = prepared.route(s, e, method="dijkstra").cost
     assert last[("peer", "skimage")] > 0
     peer = statistics.median(wall[("peer", "skimage")])
@@ -113,6 +130,7 @@ def time_voyage(label, chart, prepared, voyage):
             cpu=c,
             ratio=w / peer,
             skimage=peer,
+            rounds=rounds,
         )
         r = last[n]
         if isinstance(r, seaway.Route):
