@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <mutex>
 #include <type_traits>
 #include <utility>
 
@@ -79,6 +80,14 @@ void register_exact(py::module_& m) {
           },
           "The tables as a read-only (pixels, landmarks) float32 view: the least cost from each "
           "landmark to each pixel (inf where unreachable)");
+  m.def("label_spares", [] {
+    detail::LabelSpares& s = detail::label_spares();
+    std::lock_guard<std::mutex> lock(s.mutex);
+    std::vector<std::int64_t> sizes;
+    for (const auto& l : s.kept) sizes.push_back(l->size());
+    return py::make_tuple(sizes, s.bytes);
+  }, "(pixels of each kept set of labels, their resident bytes): the bidirectional labels gone "
+     "charts left for the next chart of their size");
   ChartClass router = py::reinterpret_borrow<ChartClass>(m.attr("PreparedChart"));
   router.def_property_readonly("cost_range", [](const PreparedChart& chart) {
     const Passability& p = chart.passability();

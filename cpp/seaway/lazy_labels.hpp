@@ -58,6 +58,7 @@ class LazyLabels {
   LazyLabels(const LazyLabels&) = delete;
   LazyLabels& operator=(const LazyLabels&) = delete;
 
+  std::int64_t size() const { return std::int64_t(n_); }
   double get(std::int64_t v) const {
     // An unwritten page is not read: reading it would map the kernel's zero page, and the
     // owner's first write would then replace that mapping, a fault that flushes the TLB of

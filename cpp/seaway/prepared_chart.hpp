@@ -1,9 +1,8 @@
-// A chart prepared for many queries (bound to Python as _core.PreparedChart, which
-// seaway.PreparedChart holds): the stencil, step lengths, land clearance and step enumerator are built once and shared
-// (read-only) by every query; each query borrows a Workspace from a pool, so threads route on
-// one chart at once and a repeated query allocates nothing large.
-// Queries take an edge-cost model (cost_models.hpp, weather.hpp): one prepared chart serves
-// every model.
+// A chart prepared for many queries (_core.PreparedChart, held by seaway.PreparedChart): the
+// stencil, step lengths, land clearance and step enumerator are built once and shared (read-only)
+// by every query; each query borrows a Workspace from a pool, so threads route on one chart at
+// once and a repeated query allocates nothing large. Queries take an edge-cost model
+// (cost_models.hpp, weather.hpp): one prepared chart serves every model.
 #pragma once
 
 #include <algorithm>
@@ -15,7 +14,7 @@
 #include <vector>
 
 #include "cost_models.hpp"
-#include "lazy_labels.hpp"
+#include "label_spares.hpp"
 #include "passability.hpp"
 #include "queue_choice.hpp"
 #include "search.hpp"
@@ -41,12 +40,14 @@ class PreparedChart {
     rmax_ = *rmax;
     steps_.emplace(g_, stencil_, lengths_, clearance_.data(), rule_);
   }
+  ~PreparedChart() {  // its labels then serve the next chart of its size (label_spares.hpp)
+    for (auto& labels : label_pool_) keep_spare_labels(std::move(labels));
+  }
   PreparedChart(const PreparedChart&) = delete;  // the enumerator points into it
   PreparedChart& operator=(const PreparedChart&) = delete;
 
   const Geometry& geometry() const { return g_; }
-  // How many search workspaces this chart has allocated (one per concurrent query at most).
-  std::size_t workspaces_made() const {
+  std::size_t workspaces_made() const {  // search workspaces allocated (one per concurrent query)
     std::lock_guard<std::mutex> lock(pool_mutex_);
     return workspaces_made_;
   }
@@ -108,19 +109,18 @@ class PreparedChart {
     if (p < 0 || p >= g_.size()) throw std::out_of_range("pixel index outside the grid");
   }
 
-  // Labels for one side of a bidirectional search, borrowed for one query. They come back as
-  // the search left them (the side clears them on its own thread before it starts) and are kept
-  // for the next query, two at most, while they hold at most 6 bytes per pixel of the chart;
-  // beyond that their pages go back to the kernel (the next search faults them in again).
+  // Labels for one side of a bidirectional search, borrowed for one query, as the last search
+  // left them (the side clears them on its own thread); kept for the next one, two at most, while
+  // they hold at most 6 bytes per pixel (else their pages go back to the kernel).
   class LabelLease {
    public:
     explicit LabelLease(PreparedChart& p) : p_(p) {
       std::lock_guard<std::mutex> lock(p_.pool_mutex_);
-      if (p_.label_pool_.empty()) {
-        labels_ = std::make_unique<LazyLabels>(p_.g_.size());
-      } else {
+      if (!p_.label_pool_.empty()) {
         labels_ = std::move(p_.label_pool_.back());
         p_.label_pool_.pop_back();
+      } else if (!(labels_ = spare_labels(p_.g_.size()))) {  // none left by a chart of this size
+        labels_ = std::make_unique<LazyLabels>(p_.g_.size());
       }
     }
     ~LabelLease() {

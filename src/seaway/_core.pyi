@@ -206,6 +206,8 @@ TimeModel = TravelTimeModel | ZonedTravelTimeModel | IceSeasonModel | IceWeather
 #: penalties, leg pricing and smoothing.
 RasterRule = MaxCost | MeanCost | IntegralCost | LengthCost
 
+def label_spares() -> tuple[list[int], int]: ...
+
 class PreparedChart:
     @property
     def workspaces(self) -> int: ...
