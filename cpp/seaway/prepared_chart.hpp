@@ -161,8 +161,7 @@ class PreparedChart {
   };
 
  private:
-  // Weight 0: Dijkstra, 1: A* (exact: in buckets with the bound scaled by 1 - astar_bucket_eps,
-  // so that every step's reduced cost keeps that share of the cheapest step), > 1: weighted A*.
+  // Weight 0: Dijkstra, 1: A* (exact: buckets, the bound scaled by 1 - astar_bucket_eps), > 1: weighted A*.
   template <class Model>
   SearchStats run(const Model& model, std::int64_t start, std::int64_t target, double weight,
                   Workspace& ws, const SearchControl* control) const {
@@ -174,7 +173,8 @@ class PreparedChart {
     if (weight > 1) q.kind = QueueKind::quaternary;
     double hw = target >= 0 && b.per_length ? weight : 0.0;
     if ((q.kind == QueueKind::buckets || q.kind == QueueKind::overflow_buckets) && astar) hw = 1 - eps;
-    SearchStats stats = with_queue<true, false, Model::caps.time_dependent>(q, [&](auto heap) {
+    if (q.kind == QueueKind::buckets && astar && g_.size() <= chunked_astar_pixels) q.kind = QueueKind::chunked_buckets;
+    SearchStats stats = with_queue<true, true, Model::caps.time_dependent>(q, [&](auto heap) {
       return search(*steps_, model, start, target, ws, std::move(heap), hw * b.min_rate, control);
     });
     stats.min_cost = b.min_rate;
