@@ -41,6 +41,8 @@ PAIRS = int(os.environ.get("SEAWAY_BENCH_PAIRS", "8"))
 SHARED = os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data")
 CIS = os.path.join(SHARED, "ice_charts_sigrid3", "cis_eastern_arctic", "cis_SGRDREA_20201102T.gpkg")
 DMI = os.path.join(SHARED, "ice_charts_sigrid3", "dmi_greenland", "201404250420_CapeFarewell2_RIC.shp")
+DMI_2013 = os.path.join(SHARED, "ice_charts_sigrid3", "dmi_greenland", "201304100920_CapeFarewell_RIC.shp")
+DMI_SW = os.path.join(SHARED, "ice_charts_sigrid3", "dmi_greenland", "201405011000_SouthWest_RIC.shp")
 
 
 @dataclass
@@ -149,6 +151,15 @@ def _dmi(tmp):
     return _sigrid(DMI, (58.0, 65.4, -56.65, -42.0, 0.01), "sigrid DMI (real)", "SIGRID-3 real, lat/lon")
 
 
+def _dmi_held_out(path, box, name):
+    """Held out from the auto rule for short voyages on a prepared chart (one-way A* instead of
+    landmarks, 2026-12-06 afternoon), which was read off the AARI-shaped, CIS and DMI 2014-04-25
+    charts: two more of DMI's charts, on 0.02 deg lat/lon pixels, Arc7."""
+    if not os.path.exists(path):
+        return None
+    return _sigrid(path, box, name, "SIGRID-3 real, lat/lon")
+
+
 BUILDERS = {
     "A winter": lambda tmp: _planar("A winter", "synthetic recipe A", True, synthetic_sea()),
     "A summer": lambda tmp: _planar("A summer", "synthetic recipe A, summer", True, summer(synthetic_sea())),
@@ -160,6 +171,12 @@ BUILDERS = {
     "sigrid (AARI-shaped)": _aari,
     "sigrid CIS (real)": _cis,
     "sigrid DMI (real)": _dmi,
+    "sigrid DMI 2013 (real)": lambda tmp: _dmi_held_out(
+        DMI_2013, (56.2, 63.5, -55.2, -37.3, 0.02), "sigrid DMI 2013 (real)"
+    ),
+    "sigrid DMI SW (real)": lambda tmp: _dmi_held_out(
+        DMI_SW, (65.3, 70.76, -63.36, -50.0, 0.02), "sigrid DMI SW (real)"
+    ),
     "game map": lambda tmp: _planar("game map", "game-map coastline", False, game_map()),
     "maze": lambda tmp: _planar("maze", "maze of narrow channels", False, maze()),
 }

@@ -15,7 +15,7 @@ Methods (all exact except weighted A*):
   mean and integral only: the bound |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
   mean of the two ends x the step's length; the integral over the same segment).
 * "auto" (the default): "astar" if a weight is given; on a chart with landmarks for the query's
-  model, "landmarks"; else, for a static raster model, "astar" on a chart where at least half
+  model, "landmarks" (one-way "astar" for a short voyage in open water: for_voyage); else, for a static raster model, "astar" on a chart where at least half
   the water costs the least (mostly_least_cost: the straight-line bound is then the true cost
   over most of the water, and one thread settles little more than the two sides of a
   bidirectional search do together) and "bidirectional" elsewhere (with the A* potential on a
@@ -28,11 +28,13 @@ Methods (all exact except weighted A*):
 
 from __future__ import annotations
 
+import math
 import time
 from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
+from ..base.units import EARTH_RADIUS_KM
 from ..base.validate import number
 from ..errors import SeawayError, SeawayTypeError
 from ..models.base import EDGE_COSTS, EdgeCost
@@ -58,6 +60,16 @@ BIDIRECTIONAL_LANDMARKS = True
 #: AARI-shaped SIGRID-3 charts: 77 % and 100 %; the synthetic and game charts 0-27 %, the real
 #: Kara chart 9 %: benchmarks/README.md).
 LEAST_COST_SHARE = 0.5
+#: On a chart with landmarks where most water costs the least, auto takes one-way A* instead of
+#: the landmark search for a voyage whose ends lie at most SHORT_VOYAGE_PIXELS pixels apart
+#: (straight line, in pixel steps) and where the landmarks' bound at the start is at most
+#: LANDMARK_GAIN x the straight-line bound (they see no detour the straight line misses): such a
+#: voyage ends while the landmark search still searches alone from the start
+#: (cpp/seaway/bidirectional_side.hpp, 4096 pixels), where its average potential is weaker than
+#: A*'s bound and each pixel costs about 1.6 x (8 table reads). Drawn on the AARI-shaped, CIS and
+#: DMI 2014-04-25 charts; held out: DMI's charts of 2013-04-10 and 2014-05-01 (benchmarks/README.md).
+SHORT_VOYAGE_PIXELS = 200.0
+LANDMARK_GAIN = 1.1
 #: The share is read from 4096 pixels at a fixed multiplicative-hash stride over the flat raster
 #: (the same pixels, and answer, on every run) while the chart is prepared, in C++
 #: (cpp/seaway/passability.hpp, least_cost_share): nothing is left for auto's decision to read.
@@ -164,6 +176,45 @@ def mostly_least_cost(prepared: PreparedChart, model: CostModel) -> bool:
     if not isinstance(model, EdgeCost):
         return False
     return model.name == "length" or prepared.router.least_cost_share >= LEAST_COST_SHARE
+
+
+def for_voyage(
+    prepared: PreparedChart,
+    model: CostModel,
+    requested: str,
+    method: str,
+    s: tuple[int, int],
+    e: tuple[int, int],
+) -> str:
+    """auto's method for the located ends s, e: "astar" for a short voyage in open water of a
+    chart with landmarks (SHORT_VOYAGE_PIXELS, LANDMARK_GAIN), else `method` as resolved."""
+    if requested != "auto" or method != "landmarks" or not mostly_least_cost(prepared, model):
+        return method
+    if math.hypot(s[0] - e[0], s[1] - e[1]) > SHORT_VOYAGE_PIXELS:
+        return method
+    landmarks = prepared.landmarks_for(model)
+    assert landmarks is not None  # resolve() picked "landmarks" because the chart has them
+    table = landmarks.table
+    gaps = [abs(a - b) for a, b in zip(table[prepared.flat(s)].tolist(), table[prepared.flat(e)].tolist())]
+    bound = max((g for g in gaps if math.isfinite(g)), default=0.0)  # inf - inf: nan, not finite
+    return "astar" if bound <= LANDMARK_GAIN * straight_bound(prepared, model, s, e) else method
+
+
+def straight_bound(
+    prepared: PreparedChart, model: CostModel, s: tuple[int, int], e: tuple[int, int]
+) -> float:
+    """The straight-line lower bound on the cost from s to e: their distance (the chord of the
+    great circle on a lat/lon chart, as the engine's bound; else in the chart's units) x the
+    chart's least cost (x 1 for "length")."""
+    g = prepared.chart.grid
+    if g.geographic:
+        lat0, lat1 = math.radians(g.lat0 + g.dlat * s[0]), math.radians(g.lat0 + g.dlat * e[0])
+        half = math.radians(g.dlon * (e[1] - s[1])) / 2
+        a = math.sin((lat1 - lat0) / 2) ** 2 + math.cos(lat0) * math.cos(lat1) * math.sin(half) ** 2
+        length = 2 * EARTH_RADIUS_KM * math.sqrt(a)
+    else:
+        length = math.hypot((e[0] - s[0]) * g.dy, (e[1] - s[1]) * g.dx)
+    return length * (1.0 if model.name == "length" else prepared.router.cost_range[0])
 
 
 def low_contrast(prepared: PreparedChart) -> bool:

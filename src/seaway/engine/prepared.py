@@ -196,12 +196,14 @@ class PreparedChart:
         and with an optional turn penalty (seaway.engine.constrained). See seaway.route."""
         methods.heuristic_weight(method, weight)
         model = self.model if model is None else as_model(model)
-        method = methods.resolve(self, model, method, weight)
+        requested, method = method, methods.resolve(self, model, method, weight)
         w = methods.heuristic_weight(method, weight)  # the resolved method's: auto -> astar is A*
         if (via is not None and len(via)) or turn_penalty is not None:
             return route_constrained(self, start, end, model, method, w, via, turn_penalty)
         s, e = locate(self.chart, start, "start"), locate(self.chart, end, "end")
         model.check_ends(self, s, e)
+        if (voyage := methods.for_voyage(self, model, requested, method, s, e)) != method:
+            method, w = voyage, methods.heuristic_weight(voyage, weight)
         found = self.search(s, e, w, model, method)
         if not found.found:
             raise no_route(self, model, (("start", s), ("end", e)))
