@@ -9,6 +9,7 @@ import seaway
 from seaway.engine.methods import (
     LANDMARK_GAIN,
     LEAST_COST_SHARE,
+    LONG_VOYAGE_PIXELS,
     SHORT_VOYAGE_PIXELS,
     mostly_least_cost,
     straight_bound,
@@ -135,3 +136,20 @@ def test_the_straight_line_bound_on_a_lat_lon_chart_is_the_great_circles_chord()
     assert got <= arc and got == pytest.approx(arc, rel=2e-3)
     route = chart.route((lat[10], lon[20]), (lat[80], lon[300]), method="dijkstra")
     assert arc < route.cost / 3.0 < 1.15 * arc  # a lower bound of the stencil route (0.05 deg pixels)
+
+
+def test_auto_takes_bidirectional_for_a_long_voyage_where_most_water_costs_the_least():
+    """Without landmarks, on a chart where most water costs the least: one-way A* up to
+    LONG_VOYAGE_PIXELS between the ends, bidirectional search beyond; not with a weight (weighted
+    A*) or a method asked for; Dijkstra's cost every time."""
+    u = np.ones((60, 1000))
+    u[10:50, 300:303] = np.inf
+    chart = seaway.prepare(u, edge_cost="max")
+    assert LONG_VOYAGE_PIXELS == 900
+    for e, method in [((30, 850), "astar"), ((30, 900), "astar"), ((30, 901), "bidirectional")]:
+        r, d = chart.route((30, 0), e), chart.route((30, 0), e, method="dijkstra")
+        assert r.method == method
+        assert r.cost == pytest.approx(d.cost, rel=1e-9)
+        assert seaway.route(u, (30, 0), e, edge_cost="max").method == method  # a fresh chart alike
+    assert chart.route((30, 0), (30, 999), weight=1.0).method == "astar"
+    assert chart.route((30, 0), (30, 999), method="astar").method == "astar"

@@ -15,13 +15,14 @@ Methods (all exact except weighted A*):
   mean and integral only: the bound |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
   mean of the two ends x the step's length; the integral over the same segment).
 * "auto" (the default): "astar" if a weight is given; on a chart with landmarks for the query's
-  model, "landmarks" (one-way "astar" for a short voyage in open water: for_voyage); else, for a static raster model, "astar" on a chart where at least half
-  the water costs the least (mostly_least_cost: the straight-line bound is then the true cost
-  over most of the water, and one thread settles little more than the two sides of a
-  bidirectional search do together) and "bidirectional" elsewhere (with the A* potential on a
-  low-contrast chart); else "astar" (time-dependent models). It estimates no times: every
-  two-thread search first searches alone from the start (cpp/seaway/bidirectional_side.hpp),
-  so a short voyage costs what a one-way search does, and the landmark potential takes the max
+  model, "landmarks" (one-way "astar" for a short voyage in open water: for_voyage); else, for
+  a static raster model, "astar" on a chart where at least half the water costs the least
+  (mostly_least_cost: the straight-line bound is then the true cost over most of the water, and
+  one thread settles little more than the two sides of a bidirectional search do together;
+  "bidirectional" for a voyage longer than LONG_VOYAGE_PIXELS: for_voyage) and "bidirectional"
+  elsewhere (with the A* potential on a low-contrast chart); else "astar" (time-dependent
+  models). It estimates no times: every two-thread search first searches alone from the start
+  (cpp/seaway/bidirectional_side.hpp), so a short voyage costs what a one-way search does, and the landmark potential takes the max
   with the straight-line bound, so its bounds are at least as tight as bidirectional A*'s.
   (A fitted estimate of each method's time chose slower methods on charts it was not fitted
   on: benchmarks/README.md.)"""
@@ -70,6 +71,12 @@ LEAST_COST_SHARE = 0.5
 #: DMI 2014-04-25 charts; held out: DMI's charts of 2013-04-10 and 2014-05-01 (benchmarks/README.md).
 SHORT_VOYAGE_PIXELS = 200.0
 LANDMARK_GAIN = 1.1
+#: ... and on such a chart without landmarks, bidirectional search instead of one-way A* for a
+#: voyage whose ends lie more than LONG_VOYAGE_PIXELS apart: over a long way land makes the
+#: straight-line bound weak, and the two threads pay (fresh AARI-shaped corner voyage: A* 1.43 x
+#: bidirectional, DMI 2014's two voyages round Cape Farewell 1.55 x and 1.21 x; between 550 and
+#: 820 pixels apart either wins by up to 1.26 x, below A* by up to 2 x: benchmarks/README.md).
+LONG_VOYAGE_PIXELS = 900.0
 #: The share is read from 4096 pixels at a fixed multiplicative-hash stride over the flat raster
 #: (the same pixels, and answer, on every run) while the chart is prepared, in C++
 #: (cpp/seaway/passability.hpp, least_cost_share): nothing is left for auto's decision to read.
@@ -182,15 +189,26 @@ def for_voyage(
     prepared: PreparedChart,
     model: CostModel,
     requested: str,
+    weight: float | None,
     method: str,
     s: tuple[int, int],
     e: tuple[int, int],
 ) -> str:
-    """auto's method for the located ends s, e: "astar" for a short voyage in open water of a
-    chart with landmarks (SHORT_VOYAGE_PIXELS, LANDMARK_GAIN), else `method` as resolved."""
-    if requested != "auto" or method != "landmarks" or not mostly_least_cost(prepared, model):
+    """auto's method for the located ends s, e on a chart where most water costs the least:
+    "astar" for a short voyage in open water of a chart with landmarks (SHORT_VOYAGE_PIXELS,
+    LANDMARK_GAIN), "bidirectional" for a long one on a chart without (LONG_VOYAGE_PIXELS);
+    else `method` as resolved."""
+    if (
+        requested != "auto"
+        or weight is not None
+        or not model.static
+        or not mostly_least_cost(prepared, model)
+    ):
         return method
-    if math.hypot(s[0] - e[0], s[1] - e[1]) > SHORT_VOYAGE_PIXELS:
+    apart = math.hypot(s[0] - e[0], s[1] - e[1])
+    if method == "astar":  # no landmarks: resolve() took A* for this chart
+        return "bidirectional" if apart > LONG_VOYAGE_PIXELS else method
+    if method != "landmarks" or apart > SHORT_VOYAGE_PIXELS:
         return method
     landmarks = prepared.landmarks_for(model)
     assert landmarks is not None  # resolve() picked "landmarks" because the chart has them

@@ -202,7 +202,7 @@ class PreparedChart:
             return route_constrained(self, start, end, model, method, w, via, turn_penalty)
         s, e = locate(self.chart, start, "start"), locate(self.chart, end, "end")
         model.check_ends(self, s, e)
-        if (voyage := methods.for_voyage(self, model, requested, method, s, e)) != method:
+        if (voyage := methods.for_voyage(self, model, requested, weight, method, s, e)) != method:
             method, w = voyage, methods.heuristic_weight(voyage, weight)
         found = self.search(s, e, w, model, method)
         if not found.found:
