@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <vector>
 
@@ -69,11 +70,27 @@ struct Geometry {
       for (const Offset& o : st) out.table.push_back(std::hypot(o.di * dy, o.dj * dx));
       return out;
     }
+    // The haversine of each step with its trigonometry read from tables (a chart's preparation
+    // made rows x n_offsets calls of sin, cos and asin): cos(lat) of every row a step reaches,
+    // sin^2 of half of each offset's latitude and longitude angles (the grid is regular).
+    std::int64_t reach = 0;
+    std::vector<double> half_lat(static_cast<std::size_t>(n)), half_lon(static_cast<std::size_t>(n));
+    for (std::int64_t k = 0; k < n; ++k) {
+      const Offset& o = st[std::size_t(k)];
+      reach = std::max<std::int64_t>(reach, std::abs(o.di));
+      half_lat[std::size_t(k)] = std::pow(std::sin(o.di * dlat * deg / 2), 2);
+      half_lon[std::size_t(k)] = std::pow(std::sin(o.dj * dlon * deg / 2), 2);
+    }
+    std::vector<double> cos_lat(std::size_t(rows + 2 * reach));
+    for (std::int64_t r = -reach; r < rows + reach; ++r) cos_lat[std::size_t(r + reach)] = std::cos(lat(r) * deg);
     out.table.resize(std::size_t(rows * n));
     for (std::int64_t r = 0; r < rows; ++r)
-      for (std::int64_t k = 0; k < n; ++k)
-        out.table[std::size_t(r * n + k)] =
-            haversine_km(lat(r), 0.0, lat(r + st[std::size_t(k)].di), st[std::size_t(k)].dj * dlon);
+      for (std::int64_t k = 0; k < n; ++k) {
+        const std::int64_t to = r + st[std::size_t(k)].di + reach;
+        const double a = half_lat[std::size_t(k)] +
+                         cos_lat[std::size_t(r + reach)] * cos_lat[std::size_t(to)] * half_lon[std::size_t(k)];
+        out.table[std::size_t(r * n + k)] = 2 * earth_radius_km * std::asin(std::min(1.0, std::sqrt(a)));
+      }
     return out;
   }
 

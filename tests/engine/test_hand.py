@@ -235,6 +235,25 @@ def test_geographic_route_length_coords_geojson():
     assert gj["properties"]["length_units"] == "km"
 
 
+def test_every_steps_length_is_the_haversine_of_its_ends():
+    """The engine's table of step lengths (each row's trigonometry read from tables while the
+    chart is prepared) against the haversine of the two pixel centres, for every step of a 7 x 7
+    stencil from every row of a chart from 60 S to the pole, across the antimeridian (wrap)."""
+    lat, lon = np.arange(-60.0, 90.01, 7.5), np.arange(0.0, 360.0, 10.0)
+    chart = seaway.prepare(np.ones((lat.size, lon.size)), lat=lat, lon=lon, neighbourhood=7)
+    for r in range(lat.size):
+        for di in range(-3, 4):
+            for dj in range(-3, 4):
+                if (di, dj) == (0, 0) or not 0 <= r + di < lat.size:
+                    continue
+                c1 = (35 + dj) % lon.size  # over the seam: column 35 is 350 E
+                route = chart.route((lat[r], lon[35]), (lat[r + di], lon[c1]), method="dijkstra")
+                want = hav(lat[r], lon[35], lat[r + di], lon[c1])
+                if len(route.pixels) == 2:  # the single step (a cheaper pair of steps may exist)
+                    assert route.length == pytest.approx(want, rel=1e-12, abs=1e-9), (r, di, dj)
+                assert route.length <= want * (1 + 1e-12) + 1e-9
+
+
 def test_geographic_equator_km():
     # along the equator one degree is R*pi/180 = 111.195 km; k=3: two steps, cost 1 each km
     r = seaway.route(np.ones((1, 3)), (0, 0), (0, 2), lat=[0.0], lon=[0.0, 1.0, 2.0], neighbourhood=3)
