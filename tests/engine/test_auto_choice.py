@@ -153,3 +153,16 @@ def test_auto_takes_bidirectional_for_a_long_voyage_where_most_water_costs_the_l
         assert seaway.route(u, (30, 0), e, edge_cost="max").method == method  # a fresh chart alike
     assert chart.route((30, 0), (30, 999), weight=1.0).method == "astar"
     assert chart.route((30, 0), (30, 999), method="astar").method == "astar"
+
+
+def test_a_voyage_across_the_antimeridian_is_as_long_as_its_way_over_the_seam():
+    """On a pan-Arctic chart of 360 degrees (wrap) the ends' distance in pixels is taken over
+    the seam: 20 pixels apart across it is a short voyage (one-way A*), not 1,180 the other way."""
+    lat, lon = np.arange(70.0, 80.0, 0.25), np.arange(-179.85, 180.0, 0.3)
+    assert lon.size == 1200
+    chart = seaway.prepare(np.ones((lat.size, lon.size)), lat=lat, lon=lon, edge_cost="max")
+    r = chart.route((75.0, lon[10]), (75.0, lon[-10]))
+    assert r.method == "astar"
+    assert r.cost == pytest.approx(chart.route((75.0, lon[10]), (75.0, lon[-10]), method="dijkstra").cost)
+    assert chart.route((75.0, lon[0]), (75.0, lon[599])).method == "astar"  # 599 the short way
+    assert chart.route((72.0, lon[0]), (72.0, lon[-1])).length < 100  # the way over the seam

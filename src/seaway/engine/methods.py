@@ -22,8 +22,9 @@ Methods (all exact except weighted A*):
   "bidirectional" for a voyage longer than LONG_VOYAGE_PIXELS: for_voyage) and "bidirectional"
   elsewhere (with the A* potential on a low-contrast chart); else "astar" (time-dependent
   models). It estimates no times: every two-thread search first searches alone from the start
-  (cpp/seaway/bidirectional_side.hpp), so a short voyage costs what a one-way search does, and the landmark potential takes the max
-  with the straight-line bound, so its bounds are at least as tight as bidirectional A*'s.
+  (cpp/seaway/bidirectional_side.hpp), so a short voyage costs what a one-way search does, and
+  the landmark potential takes the max with the straight-line bound, so its bounds are at least
+  as tight as bidirectional A*'s.
   (A fitted estimate of each method's time chose slower methods on charts it was not fitted
   on: benchmarks/README.md.)"""
 
@@ -205,7 +206,8 @@ def for_voyage(
         or not mostly_least_cost(prepared, model)
     ):
         return method
-    apart = math.hypot(s[0] - e[0], s[1] - e[1])
+    g, across = prepared.chart.grid, abs(s[1] - e[1])
+    apart = math.hypot(s[0] - e[0], min(across, g.cols - across) if g.wrap else across)  # the seam
     if method == "astar":  # no landmarks: resolve() took A* for this chart
         return "bidirectional" if apart > LONG_VOYAGE_PIXELS else method
     if method != "landmarks" or apart > SHORT_VOYAGE_PIXELS:
