@@ -136,25 +136,12 @@ def _aari(tmp):
     )
 
 
-def _cis(tmp):
-    if not os.path.exists(CIS):
-        return None
-    return _sigrid(CIS, (60.0, 75.0, -75.0, -45.0, 0.05), "sigrid CIS (real)", "SIGRID-3 real, lat/lon")
-
-
-def _dmi(tmp):
-    """Held out from the auto rule of 2026-12-06 (one-way A* where most water costs the least),
-    which was read off the CIS and AARI-shaped charts: DMI's chart of Cape Farewell (south
-    Greenland, 2014-04-25) on 0.01 deg lat/lon pixels, Arc7."""
-    if not os.path.exists(DMI):
-        return None
-    return _sigrid(DMI, (58.0, 65.4, -56.65, -42.0, 0.01), "sigrid DMI (real)", "SIGRID-3 real, lat/lon")
-
-
-def _dmi_held_out(path, box, name):
-    """Held out from the auto rule for short voyages on a prepared chart (one-way A* instead of
-    landmarks, 2026-12-06 afternoon), which was read off the AARI-shaped, CIS and DMI 2014-04-25
-    charts: two more of DMI's charts, on 0.02 deg lat/lon pixels, Arc7."""
+def _real(path, box, name):
+    """A real SIGRID-3 chart rasterised on lat/lon pixels (box: south, north, west, east, step
+    in degrees), Arc7; None when ../shared/data is absent. Held out: CIS; DMI 2014-04-25 from
+    auto's least-cost rule (read off CIS and the AARI-shaped chart); DMI 2013-04-10 and
+    2014-05-01 SW from auto's short-voyage rule on prepared charts (read off the AARI-shaped,
+    CIS and DMI 2014-04-25 charts)."""
     if not os.path.exists(path):
         return None
     return _sigrid(path, box, name, "SIGRID-3 real, lat/lon")
@@ -169,12 +156,12 @@ BUILDERS = {
     "B summer": lambda tmp: _planar("B summer", "synthetic recipe B, summer", False, summer(floe_sea())),
     "B small": lambda tmp: _planar("B small", "small (10^5 px), recipe B", False, floe_sea((333, 300))),
     "sigrid (AARI-shaped)": _aari,
-    "sigrid CIS (real)": _cis,
-    "sigrid DMI (real)": _dmi,
-    "sigrid DMI 2013 (real)": lambda tmp: _dmi_held_out(
+    "sigrid CIS (real)": lambda tmp: _real(CIS, (60.0, 75.0, -75.0, -45.0, 0.05), "sigrid CIS (real)"),
+    "sigrid DMI (real)": lambda tmp: _real(DMI, (58.0, 65.4, -56.65, -42.0, 0.01), "sigrid DMI (real)"),
+    "sigrid DMI 2013 (real)": lambda tmp: _real(
         DMI_2013, (56.2, 63.5, -55.2, -37.3, 0.02), "sigrid DMI 2013 (real)"
     ),
-    "sigrid DMI SW (real)": lambda tmp: _dmi_held_out(
+    "sigrid DMI SW (real)": lambda tmp: _real(
         DMI_SW, (65.3, 70.76, -63.36, -50.0, 0.02), "sigrid DMI SW (real)"
     ),
     "game map": lambda tmp: _planar("game map", "game-map coastline", False, game_map()),

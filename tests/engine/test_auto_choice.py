@@ -123,9 +123,9 @@ def test_auto_takes_astar_for_a_short_open_voyage_on_a_chart_with_landmarks():
     assert ice.route((220, 100), (290, 150)).method == "landmarks"
 
 
-def test_the_straight_line_bound_on_a_lat_lon_chart_is_the_great_circles_chord():
-    """The short-voyage rule's straight-line bound on a geographic chart: the chord of the great
-    circle (the engine's A* bound) x the least cost, at most the arc and within 0.2 % of it."""
+def test_the_straight_line_bound_on_a_lat_lon_chart_is_the_great_circle():
+    """The short-voyage rule's straight-line bound on a geographic chart: the great-circle
+    distance (seaway.base.sphere) x the least cost, a lower bound of the stencil route."""
     from seaway.base.sphere import distance_km
 
     lat, lon = np.arange(70.0, 75.0, 0.05), np.arange(170.0, 190.0, 0.05)
@@ -133,7 +133,7 @@ def test_the_straight_line_bound_on_a_lat_lon_chart_is_the_great_circles_chord()
     s, e = (10, 20), (80, 300)
     arc = distance_km(lat[10], lon[20], lat[80], lon[300])
     got = straight_bound(chart, EdgeCost("max"), s, e) / 3.0
-    assert got <= arc and got == pytest.approx(arc, rel=2e-3)
+    assert got <= arc * (1 + 1e-12) and got == pytest.approx(arc, rel=2e-3)
     route = chart.route((lat[10], lon[20]), (lat[80], lon[300]), method="dijkstra")
     assert arc < route.cost / 3.0 < 1.15 * arc  # a lower bound of the stencil route (0.05 deg pixels)
 

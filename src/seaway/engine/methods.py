@@ -36,14 +36,13 @@ from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
-from ..base.units import EARTH_RADIUS_KM
+from .. import _core
 from ..base.validate import number
 from ..errors import SeawayError, SeawayTypeError
 from ..models.base import EDGE_COSTS, EdgeCost
 from .result import Search
 
 if TYPE_CHECKING:
-    from .. import _core
     from ..models.base import CostModel
     from .prepared import PreparedChart
 
@@ -206,8 +205,8 @@ def for_voyage(
         or not mostly_least_cost(prepared, model)
     ):
         return method
-    g, across = prepared.chart.grid, abs(s[1] - e[1])
-    apart = math.hypot(s[0] - e[0], min(across, g.cols - across) if g.wrap else across)  # the seam
+    grid, across = prepared.chart.grid, abs(s[1] - e[1])
+    apart = math.hypot(s[0] - e[0], min(across, grid.cols - across) if grid.wrap else across)  # the seam
     if method == "astar":  # no landmarks: resolve() took A* for this chart
         return "bidirectional" if apart > LONG_VOYAGE_PIXELS else method
     if method != "landmarks" or apart > SHORT_VOYAGE_PIXELS:
@@ -223,15 +222,12 @@ def for_voyage(
 def straight_bound(
     prepared: PreparedChart, model: CostModel, s: tuple[int, int], e: tuple[int, int]
 ) -> float:
-    """The straight-line lower bound on the cost from s to e: their distance (the chord of the
-    great circle on a lat/lon chart, as the engine's bound; else in the chart's units) x the
-    chart's least cost (x 1 for "length")."""
+    """The straight-line lower bound on the cost from s to e: their distance (great circle on a
+    lat/lon chart, else in the chart's units) x the chart's least cost (x 1 for "length")."""
     g = prepared.chart.grid
     if g.geographic:
-        lat0, lat1 = math.radians(g.lat0 + g.dlat * s[0]), math.radians(g.lat0 + g.dlat * e[0])
-        half = math.radians(g.dlon * (e[1] - s[1])) / 2
-        a = math.sin((lat1 - lat0) / 2) ** 2 + math.cos(lat0) * math.cos(lat1) * math.sin(half) ** 2
-        length = 2 * EARTH_RADIUS_KM * math.sqrt(a)
+        ends = [(g.lat0 + g.dlat * r, g.lon0 + g.dlon * c) for r, c in (s, e)]
+        length = _core.haversine_km(*ends[0], *ends[1])  # the engine's own
     else:
         length = math.hypot((e[0] - s[0]) * g.dy, (e[1] - s[1]) * g.dx)
     return length * (1.0 if model.name == "length" else prepared.router.cost_range[0])
