@@ -63,6 +63,9 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
   // Landmark potentials need buckets a small share of a step wide: many, sparsely filled.
   if (Potential::sparse_keys && q.kind == QueueKind::buckets && q.buckets() > chunked_above)
     q.kind = QueueKind::chunked_buckets;
+  // The forward side re-keys its queue after searching alone: twice the span leaves room for
+  // the re-keyed frontier (bidirectional_side.hpp, takes_now).
+  if (pot.active()) q.span = 2 * q.span + 4 * q.width;
   const double shift_f = pot.active() ? pot(start) : 0.0, shift_b = pot.active() ? pot(target) : 0.0;
 
   PreparedChart::LabelLease fw_lease(pg), bw_lease(pg);  // pooled: no page faults when reused
@@ -88,19 +91,21 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
       mine.clear();
       mine.set(origin, 0.0);
       const double shift = B ? shift_b : shift_f;
-      auto run = [&](const auto& p) {
+      const OneWay<Potential> one_way{pot};  // the forward side's solo phase
+      auto run = [&](const auto& p, const auto& solo) {
         return with_queue<false, Potential::sparse_keys>(q, [&](auto heap) {
           return bidirectional_side<B>(pg.steps(), model, origin, target, mine, theirs, std::move(heap), p,
-                                       shift, rounds, meet, cancel, start_backward);
+                                       solo, shift, rounds, meet, cancel, start_backward);
         });
       };
       // A potential is asked for at every push: each side keeps the values it computed.
       if constexpr (!Potential::worth_caching) {
-        sides[B] = run(pot);
+        sides[B] = run(pot, one_way);
       } else {
         const CachedBound<Potential> cached(pot, g.size());
-        sides[B] = run(cached);
-        sides[B].state_bytes += cached.resident_bytes();
+        const CachedBound<OneWay<Potential>> solo(one_way, B ? 0 : g.size());
+        sides[B] = run(cached, solo);
+        sides[B].state_bytes += cached.resident_bytes() + solo.resident_bytes();
       }
     } catch (...) {
       errors[B] = std::current_exception();

@@ -11,6 +11,7 @@
 
 #include "heap.hpp"
 #include "lazy_labels.hpp"
+#include "rekeyed.hpp"
 #include "route_result.hpp"
 #include "search_control.hpp"
 #include "steps.hpp"
@@ -49,8 +50,8 @@ struct Meeting {
   double cost = inf;
 };
 
-// The forward side searches alone first, as a one-way search (Dijkstra, or A* with the
-// consistent potential), until it settles the target (then its label is the answer) or this
+// The forward side searches alone first, as a one-way search (Dijkstra, or with a potential A*
+// with the bound to the target), until it settles the target (then its label is the answer) or this
 // many pixels; only then does the backward side start: a short voyage costs no thread and no
 // rounds, a long one loses about this many pixels' time on one core.
 constexpr std::int64_t solo_pixels = 4096;
@@ -61,23 +62,29 @@ constexpr std::int64_t round_pixels = 1024;
 // One side of the search. Backward == true walks the steps into each pixel; each step is priced
 // as the forward step it is (from -> to), with no time (the model is static). The forward side
 // first searches alone (solo_pixels above) towards `target`, then calls start_other() to start
-// the backward side.
-template <bool Backward, class Queue, class Model, class Potential, class StartOther>
+// the backward side. With a potential it searches alone as one-way A* with `solo` (the bound to
+// the target at the potential's scale, which pulls twice as hard as the average potential),
+// then re-keys its queue to the potential (rekeyed.hpp).
+template <bool Backward, class Queue, class Model, class Potential, class Solo, class StartOther>
 SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, std::int64_t origin,
                                std::int64_t target, LazyLabels& mine, const LazyLabels& other, Queue heap,
-                               const Potential& pot, double shift, detail::Rounds& rounds,
-                               Meeting& meet, const SearchControl* cancel, StartOther&& start_other) {
+                               const Potential& pot, const Solo& solo, double shift,
+                               detail::Rounds& rounds, Meeting& meet, const SearchControl* cancel,
+                               StartOther&& start_other) {
   constexpr int self = Backward ? 1 : 0;
   SearchStats stats;
   std::vector<std::uint32_t> settled_now;  // settled in this round
   std::size_t round_peak = 0;
+  bool alone = !Backward && pot.active();
   // The key: the label, or with a potential p the reduced label d + p(v) - p(s) forward and
-  // d - p(v) + p(t) backward (>= 0; clamped against rounding).
+  // d - p(v) + p(t) backward (>= 0; clamped against rounding); alone, d + solo(v).
   auto key = [&](std::int64_t v, double d) {
     if (!pot.active()) return d;
+    if (alone) return d + solo(v);
     return std::max(0.0, Backward ? d - pot(v) + shift : d + pot(v) - shift);
   };
-  heap.push({0.0, std::uint32_t(origin)});
+  Rekeyed later;  // the forward side's queue after searching alone, re-keyed
+  heap.push({key(origin, 0.0), std::uint32_t(origin)});
   // Rounds of a count of settled pixels, the same on both sides (round_pixels, later 1/16 of
   // what the side has settled): the two threads get equal work whatever the ends' surroundings, and the
   // last round overshoots the stop by at most 1/16. The count depends on nothing but this
@@ -119,13 +126,17 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
       return stats;
     }
     start_other();
+    if (alone) {
+      alone = false;  // key() now gives the reduced keys
+      later.take(heap, mine, key);
+    }
   }
   for (;;) {
     // Search: settle this round's count of pixels (the forward side's first round adds to the
     // pixels it settled alone).
     if (Backward || passed > 0) settled_now.clear();
     const std::int64_t quota = std::max<std::int64_t>(round_pixels, stats.settled / 16);
-    while (std::int64_t(settled_now.size()) < quota && !heap.empty()) {
+    while (std::int64_t(settled_now.size()) < quota && (later.feed(heap), !heap.empty())) {
       const HeapEntry top = heap.pop();
       const double dv = mine.get(top.id);
       if (std::signbit(dv)) continue;  // an older entry of a settled pixel
@@ -144,11 +155,12 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
     };
     for (std::uint32_t v : settled_now) check(v);
     heap.for_each([&](const HeapEntry& e) { check(e.id); });
+    later.for_each([&](const HeapEntry& e) { check(e.id); });
     const int k = passed / 2 % 2;  // this round's slot
     rounds.mu_part[k][self] = best;
     rounds.meet_part[k][self] = at;
-    rounds.top[k][self] = heap.empty() ? inf : heap.lower_bound();
-    rounds.empty[k][self] = heap.empty();
+    rounds.top[k][self] = std::min(heap.empty() ? inf : heap.lower_bound(), later.least());
+    rounds.empty[k][self] = heap.empty() && later.empty();
     if (!rounds.barrier(self, passed)) break;
     // Decide, on the same values on both sides.
     for (int s = 0; s < 2; ++s)
@@ -165,7 +177,7 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
       break;
   }
   stats.heap_peak = heap.peak();
-  stats.state_bytes = heap.capacity_bytes() + round_peak * sizeof(std::uint32_t);
+  stats.state_bytes = heap.capacity_bytes() + round_peak * sizeof(std::uint32_t) + later.capacity_bytes();
   return stats;
 }
 

@@ -40,6 +40,12 @@ class BucketRing {
   // An empty ring starts again at the bucket of the next key added.
   void restart() { started_ = false; }
   bool started() const { return started_; }
+  // A key from outside the search (bidirectional_side.hpp: re-keyed entries, least first) may
+  // join now: it lies in the lower half of the window above the current bucket, so no entry a
+  // step pushes (at most half a ring above, the caller gives twice the span) passes it.
+  bool takes_now(double key) const {
+    return !started_ || std::uint64_t(key * inv_width_) + 1 < current_ + (mask_ + 1) / 2;
+  }
 
   // The bucket of a pushed key, counted in. Keys are never below the current bucket (a step
   // costs >= 0), and never a ring or more above it (a step costs < span); rounding is clamped
@@ -105,6 +111,8 @@ class BasicBucketQueue {
     for (const auto& v : ring_) b += v.capacity() * sizeof(std::uint32_t);
     return b;
   }
+  bool takes_now(double key) const { return keys_.takes_now(key); }
+  void restart() { keys_.restart(); }  // empty: the ring starts again at the next key
   double lower_bound() const {
     if constexpr (Overflow)
       if (keys_.empty() && !over_.empty()) return over_.front().key;

@@ -27,6 +27,8 @@ class ChunkedBucketQueue {
     return chunks_.capacity() * sizeof(Chunk) + head_.capacity() * sizeof(std::uint32_t) + fill_.capacity();
   }
   double lower_bound() const { return keys_.lower_bound(); }
+  bool takes_now(double key) const { return keys_.takes_now(key); }
+  void restart() { keys_.restart(); }  // empty: the ring starts again at the next key
   template <class F>
   void for_each(F&& f) const {  // every entry, in no order
     if (keys_.empty()) return;

@@ -113,6 +113,16 @@ class LandmarkPotential {
     }
     return scale_ * (bt - bs);
   }
+  // scale x h_t(v): the one-way A* bound (the forward side's solo phase).
+  double one_way(std::int64_t v) const {
+    const float* d = table_ + std::size_t(v) * n_;
+    double bt = to_t_.active() ? to_t_(v) : 0.0;
+    for (std::size_t i = 0; i < use_.size(); ++i) {
+      const double gt = std::fabs(double(at_t_[i]) - double(d[use_[i]]));
+      bt = gt > bt ? gt : bt;
+    }
+    return 2 * scale_ * bt;
+  }
 
  private:
   const float* table_;

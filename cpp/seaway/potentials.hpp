@@ -14,6 +14,7 @@ struct NoPotential {
   static constexpr bool worth_caching = false, sparse_keys = false;
   bool active() const { return false; }
   double operator()(std::int64_t) const { return 0; }
+  double one_way(std::int64_t) const { return 0; }
 };
 
 // The consistent average potential of two lower bounds (to the target, from the start):
@@ -29,6 +30,16 @@ struct AveragePotential {
   double scale;
   bool active() const { return true; }
   double operator()(std::int64_t v) const { return scale * 0.5 * (to_target(v) - from_start(v)); }
+  // The one-way A* bound to the target at the same scale (the forward side's solo phase).
+  double one_way(std::int64_t v) const { return scale * to_target(v); }
+};
+
+// A potential's one-way bound to the target as a bound of its own (for CachedBound).
+template <class Potential>
+struct OneWay {
+  const Potential& pot;
+  bool active() const { return pot.active(); }
+  double operator()(std::int64_t v) const { return pot.one_way(v); }
 };
 
 }  // namespace seaway

@@ -26,6 +26,8 @@ class RadixHeap {
   }
   // No key left in the heap is below this (bidirectional search's stopping rule).
   double lower_bound() const { return last_key_; }
+  bool takes_now(double) const { return true; }
+  void restart() { last_ = 0, last_key_ = 0; }  // empty: keys start again from 0
   template <class F>
   void for_each(F&& f) const {  // every entry, in no order
     for (const auto& b : buckets_)

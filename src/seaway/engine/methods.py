@@ -66,8 +66,8 @@ LEAST_COST_SHARE = 0.5
 #: (straight line, in pixel steps) and where the landmarks' bound at the start is at most
 #: LANDMARK_GAIN x the straight-line bound (they see no detour the straight line misses): such a
 #: voyage ends while the landmark search still searches alone from the start
-#: (cpp/seaway/bidirectional_side.hpp, 4096 pixels), where its average potential is weaker than
-#: A*'s bound and each pixel costs about 1.6 x (8 table reads). Drawn on the AARI-shaped, CIS and
+#: (cpp/seaway/bidirectional_side.hpp, 4096 pixels) as one-way A* with a bound no tighter than
+#: A*'s there, each pixel dearer (8 table reads). Drawn on the AARI-shaped, CIS and
 #: DMI 2014-04-25 charts; held out: DMI's charts of 2013-04-10 and 2014-05-01 (benchmarks/README.md).
 SHORT_VOYAGE_PIXELS = 200.0
 LANDMARK_GAIN = 1.1
