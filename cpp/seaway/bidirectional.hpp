@@ -63,9 +63,6 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
   // Landmark potentials need buckets a small share of a step wide: many, sparsely filled.
   if (Potential::sparse_keys && q.kind == QueueKind::buckets && q.buckets() > chunked_above)
     q.kind = QueueKind::chunked_buckets;
-  // The forward side re-keys its queue after searching alone: twice the span leaves room for
-  // the re-keyed frontier (bidirectional_side.hpp, takes_now).
-  if (pot.active()) q.span = 2 * q.span + 4 * q.width;
   const double shift_f = pot.active() ? pot(start) : 0.0, shift_b = pot.active() ? pot(target) : 0.0;
 
   PreparedChart::LabelLease fw_lease(pg), bw_lease(pg);  // pooled: no page faults when reused

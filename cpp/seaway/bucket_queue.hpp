@@ -40,12 +40,10 @@ class BucketRing {
   // An empty ring starts again at the bucket of the next key added.
   void restart() { started_ = false; }
   bool started() const { return started_; }
-  // A key from outside the search (bidirectional_side.hpp: re-keyed entries, least first) may
-  // join now: it lies in the lower half of the window above the current bucket, so no entry a
-  // step pushes (at most half a ring above, the caller gives twice the span) passes it.
-  bool takes_now(double key) const {
-    return !started_ || std::uint64_t(key * inv_width_) + 1 < current_ + (mask_ + 1) / 2;
-  }
+  // A key from outside the search (rekeyed.hpp: re-keyed entries, least first) may join now:
+  // it fits in the ring above the current bucket. One that does not lies above every entry a
+  // step can push (the ring is sized for a step's largest rise), so none passes it while it waits.
+  bool takes_now(double key) const { return !started_ || std::uint64_t(key * inv_width_) <= current_ + mask_; }
 
   // The bucket of a pushed key, counted in. Keys are never below the current bucket (a step
   // costs >= 0), and never a ring or more above it (a step costs < span); rounding is clamped

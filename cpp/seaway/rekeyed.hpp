@@ -4,8 +4,8 @@
 // remaining pixels as a search by it from the start would: every unsettled pixel on an optimal
 // route lies behind a queued pixel, labelled exactly, whose key is no greater.
 // The re-keyed frontier's keys spread wider than a bucket queue's window (a ring a few steps'
-// cost wide), so they wait here, least last, and each joins the queue once it lies in the lower
-// half of the queue's window (takes_now): before the queue pops any key above it.
+// cost wide), so they wait here, least last, and each joins the queue once it fits in the
+// window (takes_now): before the queue pops any key above it.
 #pragma once
 
 #include <algorithm>
