@@ -87,4 +87,14 @@ def test_function_level_imports_are_the_few_the_contract_names():
         if not any(a == na and (b == nb or b.startswith(nb + ".")) for na, nb in named)
     }
     assert unnamed == set()
-    assert 0 < len(found) <= 12
+    assert found == set()  # none: the contract names no exception
+
+
+def test_route_conveniences_come_from_the_layers_above():
+    """Route.smoothed(), .explore() and .to_html() run the functions of seaway.smoothing and
+    seaway.output.webmap, put in place by those modules (the result layer imports nothing above)."""
+    import seaway
+    from seaway.output.webmap import explore, to_html
+    from seaway.result.route import ABOVE
+
+    assert ABOVE == {"smoothed": seaway.smooth, "explore": explore, "to_html": to_html}

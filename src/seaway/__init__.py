@@ -18,6 +18,7 @@ from .engine import (
 )
 from .errors import ChartError, ForecastError, NoRouteError, SeawayError, SeawayTypeError, VesselFileError
 from .fleet import route_many
+from .output import webmap as _webmap  # noqa: F401 - puts Route.explore() and .to_html() in place
 from .result import Leg, Route
 from .smoothing import smooth
 from .voyage import ChartOptions, OpenChart, OpenForecast, OpenSeason, open_chart, open_forecast, open_season

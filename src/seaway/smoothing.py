@@ -22,6 +22,7 @@ import dataclasses
 
 import numpy as np
 
+from .result.route import ABOVE
 from .result.stats import Smoothing
 from .smoothtime import smooth_on_clock
 
@@ -78,3 +79,6 @@ def smooth(route, *, refine: bool = True, max_sweeps: int = 10):
     )
     out = dataclasses.replace(out, stats=dataclasses.replace(route.stats, smoothing=done))
     return out
+
+
+ABOVE["smoothed"] = smooth  # Route.smoothed()

@@ -20,6 +20,7 @@ from ..base.files import write_atomically
 from ..errors import SeawayError
 from ..ice.colours import classes, guess_code
 from ..result.environment import least_depth
+from ..result.route import ABOVE
 from ..result.waypoints import waypoint_list
 from .leaflet import inline_leaflet, legend_control, popup_element
 from .popup import waypoint_popup
@@ -253,3 +254,6 @@ def html_text(route, **options) -> str:
 def to_html(route, path, **options) -> None:
     """Write explore(route, **options) to `path` as one self-contained HTML file (atomically)."""
     write_atomically(path, html_text(route, **options))
+
+
+ABOVE.update(explore=explore, to_html=to_html)  # Route.explore(), Route.to_html()

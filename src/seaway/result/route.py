@@ -4,7 +4,9 @@ navigator uses: waypoints at the course changes, legs with course, distance, tim
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -19,6 +21,11 @@ from .summary import route_summary
 from .table import route_table
 from .timing import SpeedField
 from .waypoints import waypoint_list
+
+#: What the layers above add to a route, each put here by its own module, which `import seaway`
+#: imports before any route exists (seaway.smoothing: "smoothed"; seaway.output.webmap:
+#: "explore", "to_html"): this layer imports nothing above it (pyproject.toml's import contract).
+ABOVE: dict[str, Callable[..., Any]] = {}
 
 
 @dataclass(frozen=True)
@@ -222,22 +229,16 @@ class Route:
 
     def smoothed(self, **options) -> Route:
         """Any-angle smoothing (see seaway.smooth)."""
-        from ..smoothing import smooth
-
-        return smooth(self, **options)
+        return ABOVE["smoothed"](self, **options)
 
     def explore(self, **options):
         """An interactive folium.Map of the route over its chart, working offline (see
         seaway.output.webmap.explore for the options)."""
-        from ..output.webmap import explore
-
-        return explore(self, **options)
+        return ABOVE["explore"](self, **options)
 
     def to_html(self, path, **options) -> None:
         """Write the interactive map (explore()) to one self-contained HTML file, atomically."""
-        from ..output.webmap import to_html
-
-        to_html(self, path, **options)
+        ABOVE["to_html"](self, path, **options)
 
     def to_geojson(self) -> dict:
         """A GeoJSON Feature (LineString) through the route's waypoints (the ends and course
