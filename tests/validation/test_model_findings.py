@@ -1,14 +1,19 @@
 """What a navigator would find wrong in seaway's answers on the winter NSR (docs/user/validation.md,
-"What a navigator would find wrong"): each test states the right behaviour and fails today, so
-it is marked xfail(strict=True) until seaway.voyage or the outputs change (then the mark goes)."""
+"What a navigator would find wrong"): each test states the right behaviour. A finding that
+fails is marked xfail(strict=True) until seaway.voyage or the outputs change (then the mark goes);
+none is marked now."""
 
 from __future__ import annotations
+
+import xml.etree.ElementTree as ET
 
 import numpy as np
 import pyproj
 import pytest
 
 import seaway
+from seaway import export
+from seaway.chart.legs import leg_path
 from seaway.vessel import load
 from support import aari_winter
 from support.data import SHARED_DATA
@@ -56,23 +61,36 @@ def test_thicker_ice_never_makes_an_escorted_voyage_quicker(chart):
     assert hours["upper"] >= hours["mid"]
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="legs are checked and timed straight in lat/lon but exported as orthodromes (RTZ "
-    "geometryType 'Orthodrome'): on a 786 nm leg at 70 N the great circle runs 136 km away",
-)
 def test_each_legs_great_circle_is_the_line_that_was_checked(chart):
-    """The great circle the RTZ tells an ECDIS to sail stays within a pixel (6 km) of the line
-    the route was checked and timed along."""
+    """The geodesic an ECDIS sails between consecutive RTZ waypoints (legs of geometryType
+    'Orthodrome') stays within a tenth of a pixel of the path the route was checked for land and
+    closed ice and timed along (seaway.chart.legs.leg_path: the great circle on lat/lon charts).
+    The Sabetta -> Bering Strait route has legs up to 1,461 km; the finding first filed here
+    compared the great circle with a straight lat/lon line, a line no part of seaway uses."""
     opened = seaway.open_chart(chart, land="chart", vessel=load("arc7-lng-carrier"), ends=(SABETTA, BERING))
-    w = np.asarray(opened.route(SABETTA, BERING).coords, float)
+    route = opened.route(SABETTA, BERING)
+    ns = {"r": "http://www.cirm.org/RTZ/1/0"}
+    root = ET.fromstring(export.rtz(route))
+    rtz = np.array(
+        [[float(p.get("lat")), float(p.get("lon"))] for p in root.iterfind(".//r:waypoint/r:position", ns)]
+    )
+    g, v, wp = route.chart.grid, route.vertices, route.waypoint_index
+    ours = route.coords[wp]
+    np.testing.assert_allclose(rtz[:, 0], ours[:, 0], atol=1e-6)
+    np.testing.assert_allclose((rtz[:, 1] - ours[:, 1] + 180) % 360 - 180, 0, atol=1e-6)  # RTZ: [-180, 180)
+    legs_km = [GEOD.inv(a[1], a[0], b[1], b[0])[2] / 1e3 for a, b in zip(rtz[:-1], rtz[1:])]
+    assert max(legs_km) > 1400  # the long leg across the East Siberian Sea
     worst = 0.0
-    for (la0, lo0), (la1, lo1) in zip(w[:-1], w[1:]):
-        pts = np.asarray(GEOD.npts(lo0, la0, lo1, la1, 50))
-        t = np.linspace(0, 1, 52)[1:-1]
-        straight_lon, straight_lat = lo0 + (lo1 - lo0) * t, la0 + (la1 - la0) * t
-        worst = max(worst, GEOD.inv(pts[:, 0], pts[:, 1], straight_lon, straight_lat)[2].max() / 1e3)
-    assert worst <= 6.0, f"{worst:.0f} km"
+    for k, ((la0, lo0), (la1, lo1)) in enumerate(zip(rtz[:-1], rtz[1:])):
+        sailed = np.asarray(GEOD.npts(lo0, la0, lo1, la1, 100))  # (lon, lat)
+        rows = (sailed[:, 1] - g.lat0) / g.dlat
+        cols = v[wp[k], 1] + ((sailed[:, 0] - lo0 + 180) % 360 - 180) / g.dlon
+        path = leg_path(route.chart, v[wp[k]], v[wp[k + 1]], False)
+        t = np.linspace(0, 1, 40)[:, None]
+        checked = np.concatenate([a + t * (b - a) for a, b in zip(path[:-1], path[1:])])
+        off = np.hypot(rows[:, None] - checked[None, :, 0], cols[:, None] - checked[None, :, 1]).min(axis=1)
+        worst = max(worst, float(off.max()))
+    assert worst <= 0.1, f"{worst:.3f} pixel"
 
 
 @pytest.mark.needs_data(*NSIDC)
