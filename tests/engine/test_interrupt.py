@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import seaway
-from seaway import _core
+from seaway import native as _core  # the module the searches read the core through
 from seaway.base.interrupt import interruptible, reporting
 
 

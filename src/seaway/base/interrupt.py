@@ -22,7 +22,7 @@ import time
 from collections.abc import Callable, Iterator
 from typing import Any, TypeVar
 
-from .. import _core
+from .. import native as _core
 
 T = TypeVar("T")
 

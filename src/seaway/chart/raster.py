@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any, cast
 import numpy as np
 import numpy.typing as npt
 
-from .. import _core
+from .. import native as _core
 from ..base.memory import SEARCH, check_pixels
 from ..base.validate import number
 from ..errors import ChartError, SeawayError, SeawayTypeError

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
-from .. import _core
+from .. import native as _core
 from ..chart.raster import as_chart
 from ..errors import ForecastError, SeawayError, SeawayTypeError
 from .zones import KeepAway, Zone, constraint_factor, rasterise_zone

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, cast
 import numpy as np
 import numpy.typing as npt
 
-from .. import _core
+from .. import native as _core
 from ..base.interrupt import interruptible
 from ..chart.locate import locate
 from ..errors import SeawayError, SeawayTypeError

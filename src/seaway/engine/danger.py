@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from .. import _core
+from .. import native as _core
 from ..base.interrupt import interruptible
 from ..chart.locate import locate
 from ..constraints import timed_zone_engine

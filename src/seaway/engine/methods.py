@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
-from .. import _core
+from .. import native as _core
 from ..base.validate import number
 from ..errors import SeawayError, SeawayTypeError
 from ..models.base import EDGE_COSTS, EdgeCost

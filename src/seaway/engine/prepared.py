@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, TypedDict
 import numpy as np
 import numpy.typing as npt
 
-from .. import _core
+from .. import native as _core
 from ..base.interrupt import interruptible
 from ..base.memory import SEARCH, check_pixels
 from ..chart.locate import check_overflow, check_tiny, locate, nearest_passable

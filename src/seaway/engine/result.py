@@ -16,7 +16,7 @@ from ..result.route import Route
 from ..result.stats import RouteStats, SearchStats
 
 if TYPE_CHECKING:
-    from .. import _core
+    from .. import native as _core
     from ..models.base import CostModel
     from .prepared import PreparedChart
 

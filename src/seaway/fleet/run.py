@@ -9,7 +9,7 @@ import sys
 import threading
 from concurrent.futures import ThreadPoolExecutor, as_completed, wait
 
-from .. import _core
+from .. import native as _core
 from ..base.interrupt import cancelling
 from .one import _loaded, _route_one, _target
 

@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from .. import _core
+from .. import native as _core
 from ..base.interrupt import cancelling
 from ..errors import SeawayError, SeawayTypeError
 from .journal import Journal, row_key

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 import numpy as np
 import numpy.typing as npt
 
-from .. import _core
+from .. import native as _core
 from ..chart.legs import Segments, TimedLegs
 from ..errors import SeawayError, SeawayTypeError
 from .results import StepValues

@@ -10,7 +10,7 @@ from typing import Protocol, cast
 import numpy as np
 import numpy.typing as npt
 
-from .. import _core
+from .. import native as _core
 from ..base.validate import number
 from ..chart.roles import STANDARD_NAMES
 from ..constraints import Zone, timed_zone_engine

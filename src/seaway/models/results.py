@@ -12,7 +12,7 @@ import numpy as np
 import numpy.typing as npt
 
 if TYPE_CHECKING:
-    from .. import _core
+    from .. import native as _core
 
 #: Waits shorter than this (hours) are rounding, not waits.
 WAIT_EPS_H = 1e-9

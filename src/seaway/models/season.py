@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import numpy.typing as npt
 
-from .. import _core
+from .. import native as _core
 from ..base.units import KM_PER_NM
 from ..base.validate import number
 from ..chart.locate import describe

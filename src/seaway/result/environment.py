@@ -15,10 +15,10 @@ from collections import Counter
 
 import numpy as np
 
-from .._core import haversine_km
 from ..chart.legs import index_coords, leg_path
 from ..ice.codes import form_name, stage_name, stage_rank
 from ..ice.forms import FREE_WATER
+from ..native import haversine_km
 
 __all__ = ["Numeric", "Category", "LEAST", "STAGES", "FORMS", "CATEGORICAL"]
 

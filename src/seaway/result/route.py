@@ -10,10 +10,10 @@ from typing import Any
 
 import numpy as np
 
-from .._core import haversine_km
 from ..chart.legs import index_coords, leg_path, turning_points
 from ..chart.raster import Chart
 from ..models.base import CostModel, EdgeCost
+from ..native import haversine_km
 from .environment import extreme_name  # noqa: F401 - part of this API
 from .leg import Leg, route_legs
 from .stats import RouteStats

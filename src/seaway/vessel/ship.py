@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from .. import _core
+from .. import native as _core
 from ..base.validate import number
 from ..errors import SeawayError
 

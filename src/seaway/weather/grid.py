@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import _core
+from .. import native as _core
 from ..base.units import KNOTS_PER_MS
 from ..chart.raster import as_chart
 from ..chart.roles import ICE_ROLES
