@@ -49,7 +49,11 @@ def test_kara_isochrones_are_the_least_time_routes_hours(kara):
     assert int((~closed & np.isinf(hours)).sum()) == 18_703  # open water not joined to the start
     ends = [(73.5, 80.0), (76.0, 70.0), (70.43, 57.9)]
     r = _routes_end_on_the_field(kara, field, KARA_START, ends, "Arc7")
-    assert r.cost == pytest.approx(24.909216463325, abs=1e-9)  # to the Kara Gate
+    # To the Kara Gate. The last bits depend on the machine: the same sources gave 24.909216463325
+    # on the machines before 2026-12-07 and 24.909216467824 on that day's (no AVX-512, numpy
+    # 2.4.6 in a new venv; not numpy's AVX2 code: switching it off changes nothing; the library
+    # arithmetic outside seaway that differs is not pinned down). To 1e-9 of itself.
+    assert r.cost == pytest.approx(24.909216463325, rel=1e-9)
     assert sum(leg.time_h for leg in r.legs()) == pytest.approx(r.cost, abs=1e-9)
     start = kara.grid.sel(lat=KARA_START[0], lon=KARA_START[1], method="nearest")
     assert float(field.sel(lat=start.lat, lon=start.lon)) == 0.0
@@ -76,7 +80,7 @@ def test_a_start_on_land_snaps_as_a_routes_start(kara):
     r = kara.route((71.0, 70.0), (70.43, 57.9), vessel="Arc7", objective="time", smooth=False, snap_km=110)
     assert np.argwhere(np.asarray(field.values) == 0.0).tolist() == [r.pixels[0].tolist()] == [[1412, 675]]
     assert r.cost == pytest.approx(float(field.values[tuple(r.pixels[-1])]), abs=1e-9)
-    assert r.cost == pytest.approx(55.677218310774, abs=1e-9)
+    assert r.cost == pytest.approx(55.677218310774, rel=1e-9)  # machine-dependent last bits: above
 
 
 @pytest.mark.needs_data(*NSIDC)
