@@ -25,7 +25,7 @@
 // first written (lazy_labels.hpp); the two sides together touch about the pixels one Dijkstra
 // reaches, so the search needs about one workspace's 9 B per reached pixel plus the frontier;
 // stats.state_bytes counts the resident pages. The chart keeps the labels of the last query
-// for the next one (PreparedChart::LabelLease), which then writes them without page faults.
+// for the next one (PreparedChart::labels()), which then writes them without page faults.
 #pragma once
 
 #include <algorithm>
@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <optional>
 #include <thread>
 #include <type_traits>
 #include <vector>
@@ -65,7 +66,7 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
     q.kind = QueueKind::chunked_buckets;
   const double shift_f = pot.active() ? pot(start) : 0.0, shift_b = pot.active() ? pot(target) : 0.0;
 
-  PreparedChart::LabelLease fw_lease(pg), bw_lease(pg);  // pooled: no page faults when reused
+  LabelLease fw_lease(pg.labels()), bw_lease(pg.labels());  // pooled: no page faults when reused
   LazyLabels &fw = *fw_lease, &bw = *bw_lease;
   detail::Rounds rounds;
   if (pot.active()) {
@@ -99,8 +100,11 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
       if constexpr (!Potential::worth_caching) {
         sides[B] = run(pot, one_way);
       } else {
-        const CachedBound<Potential> cached(pot, g.size());
-        const CachedBound<OneWay<Potential>> solo(one_way, B ? 0 : g.size());
+        LabelLease cache(pg.labels(), true);
+        std::optional<LabelLease> solo_cache;  // the backward side has no solo phase
+        if (!B) solo_cache.emplace(pg.labels(), true);
+        const CachedBound<Potential> cached(pot, &*cache);
+        const CachedBound<OneWay<Potential>> solo(one_way, B ? nullptr : &**solo_cache);
         sides[B] = run(cached, solo);
         sides[B].state_bytes += cached.resident_bytes() + solo.resident_bytes();
       }

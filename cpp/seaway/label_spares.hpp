@@ -57,4 +57,58 @@ inline void keep_spare_labels(std::unique_ptr<LazyLabels> labels) {
   }
 }
 
+// A chart's labels between its queries: two for the sides of a bidirectional search, three for
+// the searches' bound caches (CachedBound), each kept while it holds at most 6 bytes per pixel
+// (a cache: 2, or 16 MiB in all) -- else its pages go back to the kernel first; when the chart
+// goes, they serve the next chart of its size (above).
+class LabelPool {
+ public:
+  explicit LabelPool(std::int64_t n) : n_(n) {}
+  ~LabelPool() {
+    for (auto* pool : {&sides_, &caches_})
+      for (auto& labels : *pool) keep_spare_labels(std::move(labels));
+  }
+  LabelPool(const LabelPool&) = delete;
+  LabelPool& operator=(const LabelPool&) = delete;
+  std::unique_ptr<LazyLabels> take(bool cache) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto& pool = cache ? caches_ : sides_;
+    if (pool.empty()) {
+      std::unique_ptr<LazyLabels> spare = spare_labels(n_);  // left by a chart of this size
+      return spare ? std::move(spare) : std::make_unique<LazyLabels>(n_);
+    }
+    std::unique_ptr<LazyLabels> out = std::move(pool.back());
+    pool.pop_back();
+    return out;
+  }
+  void give(std::unique_ptr<LazyLabels> labels, bool cache) {
+    const std::size_t bytes = labels->resident_bytes(), n = std::size_t(n_);
+    if (cache ? bytes > 2 * n && bytes > (std::size_t(16) << 20) : bytes > 6 * n) labels->release();
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto& pool = cache ? caches_ : sides_;
+    if (pool.size() < (cache ? 3u : 2u)) pool.push_back(std::move(labels));
+  }
+
+ private:
+  std::int64_t n_;
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<LazyLabels>> sides_, caches_;
+};
+
+// Labels borrowed from a chart's pool for one query, as the last search left them (the borrower
+// clears them on its own thread), given back when the query ends.
+class LabelLease {
+ public:
+  explicit LabelLease(LabelPool& pool, bool cache = false) : pool_(pool), cache_(cache), labels_(pool.take(cache)) {}
+  ~LabelLease() { pool_.give(std::move(labels_), cache_); }
+  LabelLease(const LabelLease&) = delete;
+  LabelLease& operator=(const LabelLease&) = delete;
+  LazyLabels& operator*() { return *labels_; }
+
+ private:
+  LabelPool& pool_;
+  bool cache_;
+  std::unique_ptr<LazyLabels> labels_;
+};
+
 }  // namespace seaway

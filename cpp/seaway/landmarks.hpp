@@ -115,7 +115,8 @@ RouteResult route_landmarks(PreparedChart& pg, const Landmarks& lm, const Model&
                                b.max_rate + sl.ulp / sl.rmax);
   if (q.kind == QueueKind::buckets) q.kind = QueueKind::chunked_buckets;  // many sparse buckets
   const LandmarkBound exact_bound(lm, start, target, 1 - eps, lm.count());
-  const CachedBound<LandmarkBound> bound(exact_bound, pg.geometry().size());
+  LabelLease cache(pg.labels(), true);
+  const CachedBound<LandmarkBound> bound(exact_bound, &*cache);
   PreparedChart::Lease ws(pg);
   SearchStats stats = with_queue<false, true>(q, [&](auto heap) {
     return search_with_bound(pg.steps(), model, start, target, *ws, std::move(heap), bound, cancel);

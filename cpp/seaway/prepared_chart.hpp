@@ -40,9 +40,6 @@ class PreparedChart {
     rmax_ = *rmax;
     steps_.emplace(g_, stencil_, lengths_, clearance_.data(), rule_);
   }
-  ~PreparedChart() {  // its labels then serve the next chart of its size (label_spares.hpp)
-    for (auto& labels : label_pool_) keep_spare_labels(std::move(labels));
-  }
   PreparedChart(const PreparedChart&) = delete;  // the enumerator points into it
   PreparedChart& operator=(const PreparedChart&) = delete;
 
@@ -109,31 +106,8 @@ class PreparedChart {
     if (p < 0 || p >= g_.size()) throw std::out_of_range("pixel index outside the grid");
   }
 
-  // Labels for one side of a bidirectional search, borrowed for one query, as the last search
-  // left them (the side clears them on its own thread); kept for the next one, two at most, while
-  // they hold at most 6 bytes per pixel (else their pages go back to the kernel).
-  class LabelLease {
-   public:
-    explicit LabelLease(PreparedChart& p) : p_(p) {
-      std::lock_guard<std::mutex> lock(p_.pool_mutex_);
-      if (!p_.label_pool_.empty()) {
-        labels_ = std::move(p_.label_pool_.back());
-        p_.label_pool_.pop_back();
-      } else if (!(labels_ = spare_labels(p_.g_.size()))) {  // none left by a chart of this size
-        labels_ = std::make_unique<LazyLabels>(p_.g_.size());
-      }
-    }
-    ~LabelLease() {
-      if (labels_->resident_bytes() > 6 * std::size_t(p_.g_.size())) labels_->release();
-      std::lock_guard<std::mutex> lock(p_.pool_mutex_);
-      if (p_.label_pool_.size() < 2) p_.label_pool_.push_back(std::move(labels_));
-    }
-    LazyLabels& operator*() { return *labels_; }
-
-   private:
-    PreparedChart& p_;
-    std::unique_ptr<LazyLabels> labels_;
-  };
+  // The labels the two-sided searches and the bound caches borrow (label_spares.hpp).
+  LabelPool& labels() { return labels_; }
 
   // A workspace borrowed from the pool for one query, returned when the query ends.
   class Lease {
@@ -193,7 +167,7 @@ class PreparedChart {
   std::optional<StepEnumerator> steps_;  // built once the clearance is
   mutable std::mutex pool_mutex_;
   std::vector<std::unique_ptr<Workspace>> pool_;
-  std::vector<std::unique_ptr<LazyLabels>> label_pool_;
+  LabelPool labels_{g_.size()};  // after g_
   std::size_t workspaces_made_ = 0;
 };
 

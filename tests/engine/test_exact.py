@@ -12,6 +12,7 @@ import pytest
 
 import seaway
 from seaway import _core
+from seaway.engine import methods as engine_methods
 from support.grids import CASES, RTOL, check_path, make_chart, point
 from support.reference import RefGraph
 
@@ -224,34 +225,47 @@ def test_bidirectional_is_the_same_bit_for_bit_on_one_core_and_on_two():
     assert free.cost == pytest.approx(chart.route((5, 5), (290, 390), method="dijkstra").cost, rel=RTOL)
 
 
-def test_labels_kept_between_queries_give_the_same_routes():
-    """The chart keeps a query's bidirectional labels for the next one (zeroed by each side
-    before it starts): queries in any order, after a long one or a cancelled one, give the
-    routes a fresh chart gives, bit for bit."""
+@pytest.mark.parametrize(
+    "method,two_sided", [("bidirectional", True), ("landmarks", True), ("landmarks", False)]
+)
+def test_labels_kept_between_queries_give_the_same_routes(method, two_sided, monkeypatch):
+    """The chart keeps a query's bidirectional labels and its searches' caches of landmark bounds
+    for the next one (each zeroed before a search starts): queries in any order, after a long
+    one or a cancelled one, give the routes a fresh chart gives, bit for bit, by the same
+    search. A bound left from a query to another end would change the search (and often break
+    its bound: a wrong cost); with the caches not cleared, both landmark cases fail here."""
+    monkeypatch.setattr(engine_methods, "BIDIRECTIONAL_LANDMARKS", two_sided)
     rng = np.random.default_rng(12)
     u = rng.uniform(1.0, 20.0, (250, 300))
     u[rng.random(u.shape) < 0.2] = np.inf
     water = [tuple(int(v) for v in p) for p in np.argwhere(np.isfinite(u))]
     pairs = [(water[i], water[j]) for i, j in rng.integers(len(water), size=(6, 2))]
-    kept = seaway.prepare(u, edge_cost="max")
+    kept = seaway.prepare(u, edge_cost="max", landmarks=4)
     token = _core.CancelToken()
     token.set()  # stops after 4096 pixels, leaving its labels half written
     # the middle to the farthest pixel it reaches: past the forward side's solo phase
     mid = water[len(water) // 2]
     field = kept.cost_field(mid)
     far = [mid[0] * u.shape[1] + mid[1], int(np.argmax(np.where(np.isfinite(field), field, -1)))]
+    engine = kept.model.engine(kept)
     with pytest.raises(KeyboardInterrupt, match="search cancelled"):
-        kept.router.route_bidirectional(kept.model.engine(kept), *far, False, token)
+        if method == "bidirectional":
+            kept.router.route_bidirectional(engine, *far, False, token)
+        else:
+            kept.router.route_landmarks(engine, kept.landmarks_for(kept.model), *far, two_sided, token)
+    charts = []  # each fresh chart kept alive: none takes another's labels (label_spares.hpp)
     for s, e in pairs + pairs[::-1]:
-        fresh = seaway.prepare(u, edge_cost="max")
+        fresh = seaway.prepare(u, edge_cost="max", landmarks=4)
+        charts.append(fresh)
         try:
-            want = fresh.route(s, e, method="bidirectional")
+            want = fresh.route(s, e, method=method)
         except seaway.NoRouteError:
             with pytest.raises(seaway.NoRouteError):
-                kept.route(s, e, method="bidirectional")
+                kept.route(s, e, method=method)
             continue
-        got = kept.route(s, e, method="bidirectional")
+        got = kept.route(s, e, method=method)
         assert got.cost == want.cost
+        assert got.stats.search.settled == want.stats.search.settled  # the same search
         np.testing.assert_array_equal(got.pixels, want.pixels)
         assert got.cost == pytest.approx(fresh.route(s, e, method="dijkstra").cost, rel=RTOL)
 
