@@ -4,6 +4,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Sequence
 
 import numpy as np
@@ -57,7 +58,7 @@ def pixel_of(chart: Chart, point: Iterable[float], name: str) -> tuple[int, int]
         a, b = (float(v) for v in point)
     except (TypeError, ValueError):
         raise SeawayTypeError(f"{name} must be a pair of numbers, got {point!r}") from None
-    if not (np.isfinite(a) and np.isfinite(b)):
+    if not (math.isfinite(a) and math.isfinite(b)):  # (Python floats: no ufunc per query)
         raise SeawayError(f"{name} must be finite, got {point!r}")
     rows, cols = chart.shape
     g = chart.grid

@@ -5,6 +5,7 @@ All validation happens here, so the C++ core only sees consistent input."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, cast
 
@@ -54,8 +55,8 @@ class Chart:
 
     def passable(self, rc: tuple[int, int]) -> bool:
         r, c = rc
-        u = self.values[r, c]
-        return bool(np.isfinite(u) and u >= 0 and (self.land is None or not self.land[r, c]))
+        u = float(self.values[r, c])
+        return bool(math.isfinite(u) and u >= 0 and (self.land is None or not self.land[r, c]))
 
     @property
     def axes(self) -> tuple[npt.NDArray[np.floating], npt.NDArray[np.floating]]:
