@@ -58,9 +58,10 @@ inline void keep_spare_labels(std::unique_ptr<LazyLabels> labels) {
 }
 
 // A chart's labels between its queries: two for the sides of a bidirectional search, three for
-// the searches' bound caches (CachedBound), each kept while it holds at most 6 bytes per pixel
-// (a cache: 2, or 16 MiB in all) -- else its pages go back to the kernel first; when the chart
-// goes, they serve the next chart of its size (above).
+// the searches' bound caches (CachedBound). Each is kept with its pages while it holds at most
+// 6 bytes per pixel (a cache: 2 bytes per pixel, or 16 MiB whatever the chart's size), else
+// with its pages given back to the kernel; when the chart goes, they serve the next chart of
+// its size (above).
 class LabelPool {
  public:
   explicit LabelPool(std::int64_t n) : n_(n) {}

@@ -139,12 +139,12 @@ class LazyLabels {
 
 // A bound (or potential) computed once per pixel: a search asks for it at every push (about
 // three per pixel on the benchmark chart), and a landmark bound reads a table row each time.
-// Kept in labels the chart lends (LabelLease, cache = true), as the double it is,
-// so nothing changes in the search but the time: cleared here of the last query's values, their
-// pages stay mapped, so a repeated query writes them without page faults (fresh pages per query
-// cost about 50 us of kernel time even on a 2-pixel voyage of a 10^5-pixel chart, and a fault
-// per 4 KiB page touched). An inf bound reads as "not stored" and is computed again. Without a
-// store (null: a side that never asks) nothing is kept.
+// Kept in labels the chart lends (LabelLease, cache = true), as the double it is, so nothing
+// changes in the search but the time: cleared here of the last query's values, their pages stay
+// mapped, so a repeated query writes them without page faults (fresh pages per query cost about
+// 30 us of kernel time even on a 2-pixel voyage of a 10^5-pixel chart, and a fault per 4 KiB
+// page touched). An inf bound reads as "not stored" and is computed again. Without a store
+// (null: a side that never asks) nothing is kept.
 template <class Bound>
 class CachedBound {
  public:
