@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "constants.hpp"
@@ -111,6 +112,28 @@ struct Geometry {
   }
 };
 
+// The trigonometry of a lat/lon chart's chord bounds, made once per chart and thread (the
+// last chart's tables are kept): sin^2 of half of k rows' and k columns' angles, cos(lat) of
+// every row. Each DistanceBound made its own (rows + cols sines, rows cosines: 50 us of a
+// bidirectional landmark query on a 270 x 600 chart).
+struct ChordTables {
+  Geometry g;
+  std::vector<double> half_lat, half_lon, cos_lat;
+  explicit ChordTables(const Geometry& geo) : g(geo) {
+    for (std::int64_t k = 0; k < g.rows; ++k) half_lat.push_back(std::pow(std::sin(double(k) * g.dlat * deg / 2), 2));
+    for (std::int64_t k = 0; k < g.cols; ++k) half_lon.push_back(std::pow(std::sin(double(k) * g.dlon * deg / 2), 2));
+    for (std::int64_t r = 0; r < g.rows; ++r) cos_lat.push_back(std::cos(g.lat(r) * deg));
+  }
+  bool fits(const Geometry& o) const {
+    return g.rows == o.rows && g.cols == o.cols && g.lat0 == o.lat0 && g.dlat == o.dlat && g.dlon == o.dlon;
+  }
+  static std::shared_ptr<const ChordTables> of(const Geometry& g) {
+    thread_local std::shared_ptr<const ChordTables> last;
+    if (!last || !last->fits(g)) last = std::make_shared<const ChordTables>(g);
+    return last;
+  }
+};
+
 // Admissible distance-to-target bound: straight-line or chord (great-circle) distance from a
 // pixel to the target times a factor (the smallest cost per unit length, times the A* inflation).
 class DistanceBound {
@@ -120,19 +143,8 @@ class DistanceBound {
     tr_ = target / g.cols;
     tc_ = target % g.cols;
     if (!g.geographic || factor == 0) return;
-    const double lt = g.lat(tr_) * deg;
-    row_a_.resize(std::size_t(g.rows));
-    row_c_.resize(std::size_t(g.rows));
-    for (std::int64_t r = 0; r < g.rows; ++r) {
-      const double s = std::sin((g.lat(r) * deg - lt) / 2);
-      row_a_[std::size_t(r)] = s * s;
-      row_c_[std::size_t(r)] = std::cos(g.lat(r) * deg) * std::cos(lt);
-    }
-    col_b_.resize(std::size_t(g.cols));
-    for (std::int64_t c = 0; c < g.cols; ++c) {
-      const double s = std::sin(double(c - tc_) * g.dlon * deg / 2);
-      col_b_[std::size_t(c)] = s * s;
-    }
+    trig_ = ChordTables::of(g);
+    cos_t_ = trig_->cos_lat[std::size_t(tr_)];
   }
 
   bool active() const { return factor_ != 0; }
@@ -146,7 +158,9 @@ class DistanceBound {
     // The chord 2R sqrt(a), not the arc 2R asin(sqrt(a)): a metric of its own (straight lines in
     // space), never longer than a step's great-circle length, so the bound stays consistent;
     // within 0.2 % of the arc up to 1000 km, and without asin at every push.
-    const double a = row_a_[std::size_t(r)] + row_c_[std::size_t(r)] * col_b_[std::size_t(c)];
+    const ChordTables& t = *trig_;
+    const double a = t.half_lat[std::size_t(std::abs(r - tr_))] +
+                     t.cos_lat[std::size_t(r)] * cos_t_ * t.half_lon[std::size_t(std::abs(c - tc_))];
     return factor_ * 2 * earth_radius_km * std::sqrt(a);
   }
 
@@ -155,7 +169,8 @@ class DistanceBound {
   double factor_;
   FastDiv row_of_;
   std::int64_t tr_ = 0, tc_ = 0;
-  std::vector<double> row_a_, row_c_, col_b_;
+  std::shared_ptr<const ChordTables> trig_;
+  double cos_t_ = 0;
 };
 
 }  // namespace seaway
