@@ -6,14 +6,7 @@ import numpy as np
 import pytest
 
 import seaway
-from seaway.engine.methods import (
-    LANDMARK_GAIN,
-    LEAST_COST_SHARE,
-    LONG_VOYAGE_PIXELS,
-    SHORT_VOYAGE_PIXELS,
-    mostly_least_cost,
-    straight_bound,
-)
+from seaway.engine.methods import LEAST_COST_SHARE, LONG_VOYAGE_PIXELS, mostly_least_cost
 from seaway.models import EdgeCost
 
 
@@ -89,53 +82,31 @@ def test_the_share_equals_numpys_on_random_charts(seed):
     assert chart.router.least_cost_share == pytest.approx(_sample_share(u.astype(dtype), land), abs=1e-12)
 
 
-def test_auto_takes_astar_for_a_short_open_voyage_on_a_chart_with_landmarks():
-    """A prepared chart with landmarks where most water costs the least: one-way A* for a voyage
-    whose ends lie at most SHORT_VOYAGE_PIXELS apart and where the landmarks' bound at the start
-    is at most LANDMARK_GAIN x the straight-line bound; landmarks for a long voyage and for a
-    short one round a wall the straight line does not see; Dijkstra's cost every time."""
+def test_auto_keeps_the_landmarks_for_every_voyage_where_most_water_costs_the_least():
+    """A prepared chart with landmarks where most water costs the least: the landmark search for
+    short voyages in open water too (one-way A* there lost to it once its fixed costs fell), for a
+    long one and round a wall; Dijkstra's cost every time. Without the landmarks the same chart
+    takes one-way A* for all of them (none lies LONG_VOYAGE_PIXELS apart)."""
     u = _sea(0.2)
     u[20:200, 60:62] = np.inf  # a wall from the top: (100, 40) -> (100, 80) goes round its foot
+    voyages = [
+        ((220, 100), (290, 150), "astar"),  # 86 pixels apart in open water
+        ((250, 30), (280, 150), "astar"),  # 124 apart
+        ((10, 100), (60, 180), "astar"),  # 94 apart, floes in the way
+        ((10, 10), (290, 290), "astar"),  # 396 pixels apart: < LONG_VOYAGE_PIXELS
+        ((100, 40), (100, 80), "astar"),  # 40 pixels apart across the wall
+    ]
+    plain = seaway.prepare(u, edge_cost="max")
+    assert mostly_least_cost(plain, plain.model)
     chart = seaway.prepare(u, edge_cost="max")
     chart.prepare_landmarks(8)
-    landmarks = chart.landmarks_for(EdgeCost("max"))
-    for s, e, method in [
-        ((220, 100), (290, 150), "astar"),  # 86 pixels apart, landmarks' bound 1.02 x
-        ((250, 30), (280, 150), "astar"),  # 124 apart, 1.04 x
-        ((10, 100), (60, 180), "landmarks"),  # 94 apart, floes in the way: 1.14 x
-        ((10, 10), (290, 290), "landmarks"),  # 396 pixels apart
-        ((100, 40), (100, 80), "landmarks"),  # 40 pixels apart across the wall
-    ]:
-        r, d = chart.route(s, e), chart.route(s, e, method="dijkstra")
-        assert r.method == method, (s, e)
-        assert r.cost == pytest.approx(d.cost, rel=1e-9)
-        S, E = (chart.flat(s), chart.flat(e))
-        bound = np.max(np.abs(landmarks.table[S].astype(float) - landmarks.table[E]))
-        straight = straight_bound(chart, EdgeCost("max"), s, e)
-        assert straight == pytest.approx(np.hypot(e[0] - s[0], e[1] - s[1]))  # least cost 1
-        short = np.hypot(e[0] - s[0], e[1] - s[1]) <= SHORT_VOYAGE_PIXELS
-        assert (method == "astar") == (short and bound <= LANDMARK_GAIN * straight)
-    assert bound > 2 * straight  # the wall: the landmarks see the detour
-    assert chart.route((10, 100), (60, 180), method="landmarks").method == "landmarks"  # as asked
-    # a chart where most water is ice keeps the landmarks, however short the voyage
-    ice = seaway.prepare(_sea(0.7), edge_cost="max")
-    ice.prepare_landmarks(8)
-    assert ice.route((220, 100), (290, 150)).method == "landmarks"
-
-
-def test_the_straight_line_bound_on_a_lat_lon_chart_is_the_great_circle():
-    """The short-voyage rule's straight-line bound on a geographic chart: the great-circle
-    distance (seaway.base.sphere) x the least cost, a lower bound of the stencil route."""
-    from seaway.base.sphere import distance_km
-
-    lat, lon = np.arange(70.0, 75.0, 0.05), np.arange(170.0, 190.0, 0.05)
-    chart = seaway.prepare(np.full((lat.size, lon.size), 3.0), lat=lat, lon=lon, edge_cost="max")
-    s, e = (10, 20), (80, 300)
-    arc = distance_km(lat[10], lon[20], lat[80], lon[300])
-    got = straight_bound(chart, EdgeCost("max"), s, e) / 3.0
-    assert got <= arc * (1 + 1e-12) and got == pytest.approx(arc, rel=2e-3)
-    route = chart.route((lat[10], lon[20]), (lat[80], lon[300]), method="dijkstra")
-    assert arc < route.cost / 3.0 < 1.15 * arc  # a lower bound of the stencil route (0.05 deg pixels)
+    for s, e, without in voyages:
+        d = chart.route(s, e, method="dijkstra")
+        for prepared, method in ((chart, "landmarks"), (plain, without)):
+            r = prepared.route(s, e)
+            assert r.method == method, (s, e)
+            assert r.cost == pytest.approx(d.cost, rel=1e-9)
+    assert np.hypot(290 - 10, 290 - 10) < LONG_VOYAGE_PIXELS
 
 
 def test_auto_takes_bidirectional_for_a_long_voyage_where_most_water_costs_the_least():

@@ -15,7 +15,7 @@ Methods (all exact except weighted A*):
   mean and integral only: the bound |D_L(t) - D_L(v)| needs a step to cost the same both ways, which these rules do (max and
   mean of the two ends x the step's length; the integral over the same segment).
 * "auto" (the default): "astar" if a weight is given; on a chart with landmarks for the query's
-  model, "landmarks" (one-way "astar" for a short voyage in open water: for_voyage); else, for
+  model, "landmarks" (for every voyage: see for_voyage); else, for
   a static raster model, "astar" on a chart where at least half the water costs the least
   (mostly_least_cost: the straight-line bound is then the true cost over most of the water, and
   one thread settles little more than the two sides of a bidirectional search do together;
@@ -61,17 +61,8 @@ BIDIRECTIONAL_LANDMARKS = True
 #: AARI-shaped SIGRID-3 charts: 77 % and 100 %; the synthetic and game charts 0-27 %, the real
 #: Kara chart 9 %: benchmarks/README.md).
 LEAST_COST_SHARE = 0.5
-#: On a chart with landmarks where most water costs the least, auto takes one-way A* instead of
-#: the landmark search for a voyage whose ends lie at most SHORT_VOYAGE_PIXELS pixels apart
-#: (straight line, in pixel steps) and where the landmarks' bound at the start is at most
-#: LANDMARK_GAIN x the straight-line bound (they see no detour the straight line misses): such a
-#: voyage ends while the landmark search still searches alone from the start
-#: (cpp/seaway/bidirectional_side.hpp, 4096 pixels) as one-way A* with a bound no tighter than
-#: A*'s there, each pixel dearer (8 table reads). Drawn on the AARI-shaped, CIS and
-#: DMI 2014-04-25 charts; held out: DMI's charts of 2013-04-10 and 2014-05-01 (benchmarks/README.md).
-SHORT_VOYAGE_PIXELS = 200.0
-LANDMARK_GAIN = 1.1
-#: ... and on such a chart without landmarks, bidirectional search instead of one-way A* for a
+#: On a chart where most water costs the least and without landmarks, auto takes bidirectional
+#: search instead of one-way A* for a
 #: voyage whose ends lie more than LONG_VOYAGE_PIXELS apart: over a long way land makes the
 #: straight-line bound weak, and the two threads pay (fresh AARI-shaped corner voyage: A* 1.43 x
 #: bidirectional, DMI 2014's two voyages round Cape Farewell 1.55 x and 1.21 x; between 550 and
@@ -194,43 +185,23 @@ def for_voyage(
     s: tuple[int, int],
     e: tuple[int, int],
 ) -> str:
-    """auto's method for the located ends s, e on a chart where most water costs the least:
-    "astar" for a short voyage in open water of a chart with landmarks (SHORT_VOYAGE_PIXELS,
-    LANDMARK_GAIN), "bidirectional" for a long one on a chart without (LONG_VOYAGE_PIXELS);
-    else `method` as resolved."""
+    """auto's method for the located ends s, e: "bidirectional" instead of one-way A* for a long
+    voyage on a chart without landmarks where most water costs the least (LONG_VOYAGE_PIXELS);
+    else `method` as resolved. A chart with landmarks keeps them for every voyage: one-way A*
+    for short voyages in open water (a rule of 2026-12-06) lost to them on 12 of 15 such voyages
+    of the SIGRID-3 charts once their fixed costs fell (benchmarks/README.md, "Pooled buckets
+    and shared chord tables")."""
     if (
         requested != "auto"
         or weight is not None
         or not model.static
+        or method != "astar"  # no landmarks: resolve() took A* for this chart
         or not mostly_least_cost(prepared, model)
     ):
         return method
     grid, across = prepared.chart.grid, abs(s[1] - e[1])
     apart = math.hypot(s[0] - e[0], min(across, grid.cols - across) if grid.wrap else across)  # the seam
-    if method == "astar":  # no landmarks: resolve() took A* for this chart
-        return "bidirectional" if apart > LONG_VOYAGE_PIXELS else method
-    if method != "landmarks" or apart > SHORT_VOYAGE_PIXELS:
-        return method
-    landmarks = prepared.landmarks_for(model)
-    assert landmarks is not None  # resolve() picked "landmarks" because the chart has them
-    table = landmarks.table
-    gaps = [abs(a - b) for a, b in zip(table[prepared.flat(s)].tolist(), table[prepared.flat(e)].tolist())]
-    bound = max((g for g in gaps if math.isfinite(g)), default=0.0)  # inf - inf: nan, not finite
-    return "astar" if bound <= LANDMARK_GAIN * straight_bound(prepared, model, s, e) else method
-
-
-def straight_bound(
-    prepared: PreparedChart, model: CostModel, s: tuple[int, int], e: tuple[int, int]
-) -> float:
-    """The straight-line lower bound on the cost from s to e: their distance (great circle on a
-    lat/lon chart, else in the chart's units) x the chart's least cost (x 1 for "length")."""
-    g = prepared.chart.grid
-    if g.geographic:
-        ends = [(g.lat0 + g.dlat * r, g.lon0 + g.dlon * c) for r, c in (s, e)]
-        length = _core.haversine_km(*ends[0], *ends[1])  # the engine's own
-    else:
-        length = math.hypot((e[0] - s[0]) * g.dy, (e[1] - s[1]) * g.dx)
-    return length * (1.0 if model.name == "length" else prepared.router.cost_range[0])
+    return "bidirectional" if apart > LONG_VOYAGE_PIXELS else method
 
 
 def low_contrast(prepared: PreparedChart) -> bool:
