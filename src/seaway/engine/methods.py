@@ -62,9 +62,9 @@ BIDIRECTIONAL_LANDMARKS = True
 #: Kara chart 9 %: benchmarks/README.md).
 LEAST_COST_SHARE = 0.5
 #: On a chart where most water costs the least and without landmarks, auto takes bidirectional
-#: search instead of one-way A* for a
-#: voyage whose ends lie more than LONG_VOYAGE_PIXELS apart: over a long way land makes the
-#: straight-line bound weak, and the two threads pay (fresh AARI-shaped corner voyage: A* 1.43 x
+#: search instead of one-way A* for a voyage whose ends lie more than LONG_VOYAGE_PIXELS apart
+#: (straight line, in pixel steps): over a long way land makes the straight-line bound weak,
+#: and the two threads pay (fresh AARI-shaped corner voyage: A* 1.43 x
 #: bidirectional, DMI 2014's two voyages round Cape Farewell 1.55 x and 1.21 x; between 550 and
 #: 820 pixels apart either wins by up to 1.26 x, below A* by up to 2 x: benchmarks/README.md).
 LONG_VOYAGE_PIXELS = 900.0
