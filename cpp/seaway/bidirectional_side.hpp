@@ -1,54 +1,20 @@
-// One side of the exact bidirectional search (bidirectional.hpp) and what the two sides
-// exchange at their barriers.
+// One side of the exact bidirectional search (bidirectional.hpp); what the two sides exchange
+// at their barriers is in rounds.hpp.
 #pragma once
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <thread>
-#include <vector>
 
 #include "heap.hpp"
 #include "lazy_labels.hpp"
 #include "rekeyed.hpp"
+#include "rounds.hpp"
 #include "route_result.hpp"
 #include "search_control.hpp"
 #include "steps.hpp"
 
 namespace seaway {
-
-namespace detail {
-
-// What the two sides exchange at the barriers (written before one, read after it).
-struct Rounds {
-  std::atomic<int> arrived[2] = {0, 0};
-  std::atomic<bool> abort{false};  // a side failed (cancel, error): the other leaves too
-  // [round parity][side]: a side writes round k + 1's while the other may still read round k's.
-  double top[2][2] = {};
-  double mu_part[2][2] = {};
-  std::int64_t meet_part[2][2] = {};
-  bool empty[2][2] = {};
-  // With a potential the keys are reduced: stop once top_f + top_b >= mu + p(t) - p(s) (plus a
-  // relative 1e-12 against the potentials' rounding).
-  double mu_offset = 0, mu_slack = 0;
-
-  // Wait until the other side has passed as many barriers as this one; false on abort.
-  bool barrier(int self, int& passed) {
-    arrived[self].store(++passed, std::memory_order_release);
-    while (arrived[1 - self].load(std::memory_order_acquire) < passed)
-      if (abort.load(std::memory_order_relaxed)) return false;
-      else std::this_thread::yield();
-    return !abort.load(std::memory_order_relaxed);
-  }
-};
-
-}  // namespace detail
-
-struct Meeting {
-  std::int64_t pixel = -1;  // labelled by both sides on an optimal route; -1: no route
-  double cost = inf;
-};
 
 // The forward side searches alone first, as a one-way search (Dijkstra, or with a potential A*
 // with the bound to the target), until it settles the target (then its label is the answer) or this
@@ -73,8 +39,7 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
                                StartOther&& start_other) {
   constexpr int self = Backward ? 1 : 0;
   SearchStats stats;
-  std::vector<std::uint32_t> settled_now;  // settled in this round
-  std::size_t round_peak = 0;
+  RoundLog now(is_cached<Potential>);  // this round's settled and relabelled pixels
   bool alone = !Backward && pot.active();
   // The key: the label, or with a potential p the reduced label d + p(v) - p(s) forward and
   // d - p(v) + p(t) backward (>= 0; clamped against rounding); alone, d + solo(v).
@@ -85,6 +50,7 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
   };
   Rekeyed later;  // the forward side's queue after searching alone, re-keyed
   heap.push({key(origin, 0.0), std::uint32_t(origin)});
+  now.pushed(origin);
   // Rounds of a count of settled pixels, the same on both sides (round_pixels, later 1/16 of
   // what the side has settled): the two threads get equal work whatever the ends' surroundings, and the
   // last round overshoots the stop by at most 1/16. The count depends on nothing but this
@@ -95,13 +61,14 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
 
   auto settle = [&](std::int64_t v, double dv) {
     mine.set(v, -dv);  // settled
-    settled_now.push_back(std::uint32_t(v));
+    now.settled(v);
     count_settled(stats.settled, cancel, !Backward);  // the forward side reports progress
     steps.each<Backward>(v, [&](std::int64_t w, std::int64_t o, std::int64_t from,
                                  std::int64_t to, double r, auto&& cell) {
       const double nd = dv + model(from, to, int(o), r, 0.0, cell);
       if (nd < mine.get(w)) {  // false for settled pixels: their label is negative
         mine.set(w, nd, int(o));
+        now.pushed(w);
         heap.push({key(w, nd), std::uint32_t(w)});
       }
     });
@@ -111,6 +78,7 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
     // Alone: the pixels settled here join the first round's (checked at its barrier).
     while (stats.settled < solo_pixels && !heap.empty()) {
       const HeapEntry top = heap.pop();
+      now.popped();
       const double dv = mine.get(top.id);
       if (std::signbit(dv)) continue;
       settle(top.id, dv);
@@ -122,7 +90,7 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
     }
     if (meet.pixel >= 0 || heap.empty()) {  // done, or nothing left to reach (no route)
       stats.heap_peak = heap.peak();
-      stats.state_bytes = heap.capacity_bytes() + settled_now.capacity() * sizeof(std::uint32_t);
+      stats.state_bytes = heap.capacity_bytes() + now.capacity_bytes();
       return stats;
     }
     start_other();
@@ -134,15 +102,15 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
   for (;;) {
     // Search: settle this round's count of pixels (the forward side's first round adds to the
     // pixels it settled alone).
-    if (Backward || passed > 0) settled_now.clear();
+    if (Backward || passed > 0) now.start();
     const std::int64_t quota = std::max<std::int64_t>(round_pixels, stats.settled / 16);
-    while (std::int64_t(settled_now.size()) < quota && (later.feed(heap), !heap.empty())) {
+    while (std::int64_t(now.settled_count()) < quota && (later.feed(heap), !heap.empty())) {
       const HeapEntry top = heap.pop();
+      now.popped();
       const double dv = mine.get(top.id);
       if (std::signbit(dv)) continue;  // an older entry of a settled pixel
       settle(top.id, dv);
     }
-    round_peak = std::max(round_peak, settled_now.capacity());
     if (!rounds.barrier(self, passed)) break;
     // Meet: the pixels this side relabelled in the round against the other's still labels.
     double best = inf;
@@ -153,9 +121,7 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
       const double total = std::fabs(mine.get(w)) + std::fabs(dw);
       if (total < best || (total == best && w < at)) { best = total; at = w; }
     };
-    for (std::uint32_t v : settled_now) check(v);
-    heap.for_each([&](const HeapEntry& e) { check(e.id); });
-    later.for_each([&](const HeapEntry& e) { check(e.id); });
+    now.for_each_changed(check, heap, later);
     const int k = passed / 2 % 2;  // this round's slot
     rounds.mu_part[k][self] = best;
     rounds.meet_part[k][self] = at;
@@ -177,7 +143,7 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
       break;
   }
   stats.heap_peak = heap.peak();
-  stats.state_bytes = heap.capacity_bytes() + round_peak * sizeof(std::uint32_t) + later.capacity_bytes();
+  stats.state_bytes = heap.capacity_bytes() + now.capacity_bytes() + later.capacity_bytes();
   return stats;
 }
 

@@ -148,6 +148,7 @@ class LazyLabels {
 template <class Bound>
 class CachedBound {
  public:
+  static constexpr bool cached = true;  // (bidirectional_side: a table-read potential)
   CachedBound(const Bound& b, LazyLabels* store) : b_(b), store_(store) {
     if (store_) store_->clear();
   }
