@@ -7,9 +7,9 @@
 //
 // Rounds: in each round each side settles the same count of pixels (so the two threads get
 // equal work whatever the scheduler does), then the two meet at a barrier. There, labels are
-// still: each side scans the pixels it relabelled in the round (those it settled, and its
-// queue) against the other's labels, and mu = min over pixels labelled by both of d_f + d_b
-// (a real route's cost) is updated.
+// still: each side checks the pixels it relabelled in the round (a list of them, or those it
+// settled and its whole queue: rounds.hpp, RoundLog) against the other's labels, and mu = min
+// over pixels labelled by both of d_f + d_b (a real route's cost) is updated.
 // The forward side first searches alone (bidirectional_side.hpp: solo_pixels): a voyage it
 // finishes alone is a one-way search's, on one thread; its pixels then join its first round.
 // Stop when top_f + top_b >= mu (top: no key left in a queue is lower) or a queue is empty:

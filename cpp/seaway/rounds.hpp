@@ -2,7 +2,6 @@
 // barriers, and what each side keeps of a round for the meeting check.
 #pragma once
 
-#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <thread>
@@ -78,7 +77,6 @@ class RoundLog {
   std::size_t settled_count() const { return settled_.size(); }
   template <class Check, class Queue, class Later>
   void for_each_changed(Check&& check, const Queue& heap, const Later& later) {
-    peak_ = std::max(peak_, settled_.capacity() + relabelled_.capacity());
     if (!scan_queue_) {
       for (std::uint32_t v : relabelled_) check(v);
       return;
@@ -87,14 +85,14 @@ class RoundLog {
     heap.for_each([&](const auto& e) { check(e.id); });
     later.for_each([&](const auto& e) { check(e.id); });
   }
-  std::size_t capacity_bytes() const {
-    return std::max(peak_, settled_.capacity() + relabelled_.capacity()) * sizeof(std::uint32_t);
+  std::size_t capacity_bytes() const {  // the rounds' peak: clear() keeps a vector's capacity
+    return (settled_.capacity() + relabelled_.capacity()) * sizeof(std::uint32_t);
   }
 
  private:
   std::vector<std::uint32_t> settled_, relabelled_;
   bool scan_queue_, track_;
-  std::size_t queued_ = 0, peak_ = 0;  // entries in the queue (pushes less pops)
+  std::size_t queued_ = 0;  // entries in the queue (pushes less pops)
 };
 
 }  // namespace seaway
