@@ -42,6 +42,7 @@
 #include "bidirectional_side.hpp"
 #include "potentials.hpp"
 #include "prepared_chart.hpp"
+#include "threads.hpp"
 
 namespace seaway {
 
@@ -117,7 +118,7 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
       rounds.abort.store(true);
     }
   };
-  start_backward = [&] { helper = std::thread([&] { side(std::true_type{}); }); };
+  start_backward = [&] { helper = thread_on_other_core([&] { side(std::true_type{}); }); };
   side(std::false_type{});
   if (helper.joinable()) helper.join();
   for (const auto& e : errors)

@@ -12,6 +12,7 @@
 
 #include "geometry.hpp"
 #include "compat.hpp"
+#include "threads.hpp"
 
 namespace seaway {
 
@@ -133,12 +134,12 @@ Passability compute_clearance(const Geometry& g, const T* cost, const std::uint8
   }
   const std::int64_t half = R / 2;
   {
-    std::thread helper([&] { rows_pass1(half, R, second); });
+    std::thread helper = thread_on_other_core([&] { rows_pass1(half, R, second); });
     rows_pass1(0, half, out);
     helper.join();
   }
   {
-    std::thread helper([&] { rows_pass2(half, R); });
+    std::thread helper = thread_on_other_core([&] { rows_pass2(half, R); });
     rows_pass2(0, half);
     helper.join();
   }
