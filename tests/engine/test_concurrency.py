@@ -4,6 +4,7 @@ correctly."""
 
 from __future__ import annotations
 
+import os
 import signal
 import threading
 import time
@@ -164,3 +165,32 @@ def test_an_interrupt_in_a_worker_thread_does_not_disturb_the_others():
     out = _threaded(job, range(len(queries)))
     for i, got in enumerate(out):
         assert got == ("cancelled" if i % 4 == 0 else serial[i])
+
+
+@pytest.mark.skipif(not hasattr(os, "sched_setaffinity"), reason="needs Linux's CPU affinity")
+def test_two_thread_searches_on_one_core_give_the_answers_of_two():
+    """The second thread of a two-thread search starts on another core than its creator's
+    (cpp/seaway/threads.hpp); kept to one core, the process gets a plain thread there and the
+    same answers: the bidirectional and landmark searches past their solo start, and the
+    clearance pass of a chart of 2^20 pixels (two threads)."""
+    cost = _chart(5, (1024, 1024))
+    cost[:, 500:520] = np.inf
+    cost[700:720, 500:520] = 3.0  # one gap: the voyages go round through it
+    a, b = (30, 30), (1000, 1000)
+    assert np.isfinite(cost[a]) and np.isfinite(cost[b])
+
+    def answers():
+        chart = seaway.prepare(cost, landmarks=4)
+        out = [_answer(chart.route, (a, b, m)) for m in ("bidirectional", "landmarks", "dijkstra")]
+        return out, chart.router.cost_range, chart.router.clearance.tobytes()
+
+    both, *clearance = answers()
+    assert both[0][0] == pytest.approx(both[2][0], rel=1e-9)  # Dijkstra's cost
+    assert both[1][0] == pytest.approx(both[2][0], rel=1e-9)
+    assert both[0][2] > 2 * 4096  # past the solo start: two threads ran
+    allowed = os.sched_getaffinity(0)
+    os.sched_setaffinity(0, {min(allowed)})
+    try:
+        assert answers() == (both, *clearance)
+    finally:
+        os.sched_setaffinity(0, allowed)
