@@ -1,4 +1,5 @@
-// A second thread for the two-thread searches, started on another core than the caller's.
+// The second thread of the two-thread searches and of the two-thread clearance pass, started on
+// another core than the caller's.
 #pragma once
 
 #include <thread>
