@@ -41,7 +41,9 @@ ROUNDS = int(os.environ.get("SEAWAY_BENCH_ROUNDS", "3"))
 #: differ by 10-30 % between two runs of the same search, the size of auto's 10 % margin.
 ROUND_SECONDS = float(os.environ.get("SEAWAY_BENCH_SECONDS", "3"))
 MAX_ROUNDS = 25
-LANDMARKS = int(os.environ.get("SEAWAY_BENCH_LANDMARKS", "8"))
+# The prepared chart's landmarks: prepare_landmarks' default count for the chart (16 up to 2^21
+# pixels, else 8), or the count given.
+LANDMARKS = int(os.environ["SEAWAY_BENCH_LANDMARKS"]) if os.environ.get("SEAWAY_BENCH_LANDMARKS") else None
 FRESH = ("auto", "dijkstra", "astar", "bidirectional")
 PREPARED = ("auto", "dijkstra", "astar", "bidirectional", "landmarks")
 _BUILT: dict = {}
@@ -61,7 +63,7 @@ def family(tmp_path_factory):
                 VOYAGES.setdefault("notes", []).append(
                     f"{name} ({chart.kind}; {'tuned on' if chart.tuned else 'held out'}): "
                     f"{chart.raster.shape[0]} x {chart.raster.shape[1]} pixels, "
-                    f"{np.isfinite(chart.raster).mean():.0%} water; {LANDMARKS} landmarks built in "
+                    f"{np.isfinite(chart.raster).mean():.0%} water; {st['count']} landmarks built in "
                     f"{st['seconds']:.2f} s wall, {time.process_time() - t:.2f} s CPU, "
                     f"{st['bytes_per_pixel']:.0f} B/pixel"
                 )

@@ -130,8 +130,8 @@ def resolve(prepared: PreparedChart, model: CostModel, method: str, weight: floa
         if prepared.landmarks_for(model) is None:
             raise SeawayError(
                 f"the chart has no landmarks for the {model.name!r} model: call "
-                f"prepared.prepare_landmarks(8, model={model.name!r}) first (or "
-                "seaway.prepare(..., landmarks=8)), or use method='auto'"
+                f"prepared.prepare_landmarks(model={model.name!r}) first (or "
+                "seaway.prepare(..., landmarks=16)), or use method='auto'"
             )
     return method
 
@@ -209,6 +209,21 @@ def low_contrast(prepared: PreparedChart) -> bool:
     lo, hi, _ = prepared.router.cost_range  # found while the chart was prepared
     span = hi / lo if lo > 0 else np.inf
     return span <= ASTAR_CONTRAST
+
+
+#: prepare_landmarks() without a count keeps 16 landmarks on charts of at most this many pixels
+#: (64 B per pixel, 128 MiB of tables), else 8. The first 8 of 16 are the 8 (farthest-first
+#: from the same seed), so 16 never bound worse; per voyage they cost a little more per settled
+#: pixel. 16 / 8, two-sided landmark search, geometric mean per voyage over 30-40 random pairs:
+#: 0.84-0.98 on six kinds of chart of 10^5-10^6 pixels; on the benchmark's voyages 0.57-1.11 by
+#: kind (geometric mean 0.94). On 4.4 M-pixel charts no gain for twice the build (10 -> 18 s):
+#: benchmarks/README.md, section "16 landmarks on charts of up to 2^21 pixels".
+MANY_LANDMARKS_PIXELS = 1 << 21
+
+
+def default_landmark_count(pixels: int) -> int:
+    """How many landmarks prepare_landmarks() keeps on a chart of `pixels` pixels by default."""
+    return 16 if pixels <= MANY_LANDMARKS_PIXELS else 8
 
 
 def build_landmarks(

@@ -126,12 +126,17 @@ class PreparedChart:
         #: A static model's search here is short (at most DIRECT_STEPS steps): no helper thread.
         self._short = chart.values.size * (neighbourhood**2 - 1) <= DIRECT_STEPS
 
-    def prepare_landmarks(self, count: int = 8, *, model: CostModel | str | None = None) -> LandmarkStats:
+    def prepare_landmarks(
+        self, count: int | None = None, *, model: CostModel | str | None = None
+    ) -> LandmarkStats:
         """Tabulate the least costs from `count` landmark pixels (float32, 4 bytes per pixel
         each) for `model` (default the chart's edge_cost), so that method="landmarks" (and
-        "auto") answers later queries by A* with the landmark bound. Returns the stats:
-        count, seconds, bytes, bytes_per_pixel, pixels."""
+        "auto") answers later queries by A* with the landmark bound. count=None (default):
+        16 on charts of at most 2^21 pixels, else 8 (methods.MANY_LANDMARKS_PIXELS). Returns
+        the stats: count, seconds, bytes, bytes_per_pixel, pixels."""
         model = self.model if model is None else as_model(model)
+        if count is None:
+            count = methods.default_landmark_count(self.chart.values.size)
         if isinstance(count, (int, np.integer)) and 1 <= count <= 64:  # (else build_landmarks says)
             check_pixels(
                 *self.chart.shape,

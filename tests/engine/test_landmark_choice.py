@@ -1,0 +1,99 @@
+"""prepare_landmarks keeps 16 landmarks on charts of up to 2^21 pixels, else 8
+(seaway.engine.methods.MANY_LANDMARKS_PIXELS): the 16 are the 8 and 8 more, farthest-first from
+the same seed, so their bound is never weaker; exact against the brute-force reference."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy import ndimage
+
+import seaway
+from seaway.engine import methods
+from seaway.samples import synthetic_sea
+from support.grids import RTOL, check_path
+from support.reference import RefGraph
+
+
+def _sea(seed, shape=(110, 140)):
+    """Smooth random ice costs 1..30 with blobs of land."""
+    rng = np.random.default_rng(seed)
+    field = ndimage.gaussian_filter(rng.random(shape), 6)
+    u = 1.0 + 29.0 * (field - field.min()) / np.ptp(field)
+    u[ndimage.gaussian_filter(rng.random(shape), 4) > 0.56] = np.inf
+    return u
+
+
+def _largest_water(u):
+    labels, _ = ndimage.label(np.isfinite(u), np.ones((3, 3)))
+    return np.argwhere(labels == np.bincount(labels.ravel())[1:].argmax() + 1)
+
+
+@pytest.mark.parametrize("seed", range(3))
+@pytest.mark.parametrize("two_sided", [True, False])
+def test_the_default_16_landmarks_give_dijkstra_s_cost(seed, two_sided, monkeypatch):
+    """Both landmark searches on a chart prepared with the default count (16 here) give the
+    brute-force reference's cost and a path it prices the same, on planar and lat/lon charts,
+    for voyages to random pixels and to the farthest one."""
+    monkeypatch.setattr(methods, "BIDIRECTIONAL_LANDMARKS", two_sided)
+    u = _sea(seed)
+    geo: dict = dict(dx=1.5, dy=0.8)
+    if seed:
+        lat = np.linspace(70.0, 70.0 + 0.05 * (u.shape[0] - 1), u.shape[0])
+        lon = np.linspace(30.0, 30.0 + 0.15 * (u.shape[1] - 1), u.shape[1])
+        geo = dict(lat=lat[::-1] if seed == 2 else lat, lon=lon)
+    chart = seaway.prepare(u, edge_cost="mean", **geo)
+    assert chart.prepare_landmarks()["count"] == 16
+    ref = RefGraph(u, k=5, edge_cost="mean", **geo)
+    water = _largest_water(u)
+    rng = np.random.default_rng(seed)
+    for a in rng.choice(len(water), size=4, replace=False):
+        s = tuple(map(int, water[a]))
+        costs = ref.costs(s)
+        far = np.unravel_index(np.argmax(np.where(np.isfinite(costs), costs, -1)), costs.shape)
+        for e in (tuple(map(int, water[rng.integers(len(water))])), tuple(map(int, far))):
+            ps, pe = (s, e) if "dx" in geo else [(geo["lat"][p[0]], geo["lon"][p[1]]) for p in (s, e)]
+            r = chart.route(ps, pe, method="landmarks")
+            assert r.cost == pytest.approx(costs[e], rel=RTOL), (s, e)
+            check_path(ref, r, s, e, geo)
+
+
+def test_16_landmarks_settle_fewer_pixels_than_8():
+    """The 10^5-pixel benchmark chart ('A small'), one-way landmark A* (one thread: its counts do
+    not depend on timing), 40 random voyages: the 16 landmarks begin with the 8, and settle a
+    sixth fewer pixels in all (103,517 against 123,527; the same costs); no voyage settles more
+    than a few pixels more (none did; ties could break otherwise)."""
+    u = synthetic_sea((300, 333))
+    eight, sixteen = seaway.prepare(u), seaway.prepare(u)
+    few = eight.prepare_landmarks(8)
+    many = sixteen.prepare_landmarks()
+    assert many["bytes_per_pixel"] == 64.0 and many["pixels"][:8] == few["pixels"]
+    water = _largest_water(u)
+    rng = np.random.default_rng(4)
+    counts = []
+    for _ in range(40):
+        s, e = (tuple(map(int, water[i])) for i in rng.choice(len(water), size=2))
+        found = [
+            chart.router.route_landmarks(
+                chart.model.engine(chart),
+                chart.landmarks_for(chart.model),
+                chart.flat(s),
+                chart.flat(e),
+                False,
+            )
+            for chart in (eight, sixteen)
+        ]
+        assert found[0].cost == pytest.approx(found[1].cost, rel=RTOL)
+        counts.append([f.stats.settled for f in found])
+    c = np.array(counts)
+    assert c[:, 1].sum() < 0.85 * c[:, 0].sum(), counts
+    assert np.all(c[:, 1] <= c[:, 0] + 16), counts
+
+
+def test_prepare_landmarks_keeps_16_on_charts_of_up_to_2_to_the_21_pixels():
+    """The default count: 16 (64 B per pixel) up to 2^21 pixels, 8 above; a count given is kept."""
+    assert methods.default_landmark_count(2**21) == 16
+    assert methods.default_landmark_count(2**21 + 1) == 8
+    chart = seaway.prepare(np.ones((40, 50)))
+    assert chart.prepare_landmarks()["count"] == 16
+    assert chart.prepare_landmarks(5)["count"] == 5
