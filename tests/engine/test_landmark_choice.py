@@ -91,9 +91,13 @@ def test_16_landmarks_settle_fewer_pixels_than_8():
 
 
 def test_prepare_landmarks_keeps_16_on_charts_of_up_to_2_to_the_21_pixels():
-    """The default count: 16 (64 B per pixel) up to 2^21 pixels, 8 above; a count given is kept."""
+    """The default count: 16 (64 B per pixel) up to 2^21 pixels, 8 above; a count given is kept;
+    seaway.prepare(landmarks=True) takes the default."""
     assert methods.default_landmark_count(2**21) == 16
     assert methods.default_landmark_count(2**21 + 1) == 8
     chart = seaway.prepare(np.ones((40, 50)))
     assert chart.prepare_landmarks()["count"] == 16
     assert chart.prepare_landmarks(5)["count"] == 5
+    assert seaway.prepare(np.ones((40, 50)), landmarks=True).landmark_stats["max"]["count"] == 16
+    assert seaway.prepare(np.ones((40, 50)), landmarks=3).landmark_stats["max"]["count"] == 3
+    assert not seaway.prepare(np.ones((40, 50)), landmarks=False).landmark_stats

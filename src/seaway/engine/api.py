@@ -30,13 +30,14 @@ def prepare(
     neighbourhood: int = 5,
     directions: str = "full",
     edge_cost: str = "max",
-    landmarks: int = 0,
+    landmarks: int | bool = 0,
     keep_away: KeepAway | Collection[KeepAway] = (),
     zones: Zone | Collection[Zone] = (),
 ) -> PreparedChart:
     """Validate and prepare a chart once for many routes; arguments as in route().
     landmarks=N (optional) also tabulates N landmarks for edge_cost (4 N bytes per pixel), so
-    that later exact queries run A* with the landmark bound (PreparedChart.prepare_landmarks)."""
+    that later exact queries run A* with the landmark bound (PreparedChart.prepare_landmarks);
+    landmarks=True: the default count (16 on charts of up to 2^21 pixels, else 8)."""
     return PreparedChart(
         cost,
         lat=lat,

@@ -79,7 +79,7 @@ class PreparedChart:
         neighbourhood: int = 5,
         directions: str = "full",
         edge_cost: str = "max",
-        landmarks: int = 0,
+        landmarks: int | bool = 0,
         keep_away: KeepAway | Collection[KeepAway] = (),
         zones: Zone | Collection[Zone] = (),
     ) -> None:
@@ -92,7 +92,9 @@ class PreparedChart:
         chart = as_chart(cost, lat=lat, lon=lon, dx=dx, dy=dy, land=land)
         self._setup(chart, neighbourhood, directions, model, "segment")
         self._dims = getattr(cost, "dims", None)
-        if landmarks:
+        if landmarks is True:  # the default count for the chart
+            self.prepare_landmarks()
+        elif landmarks:
             self.prepare_landmarks(landmarks)
 
     @classmethod
