@@ -129,7 +129,7 @@ def test_entered_pixel_model_bidirectional():
 def test_methods_refuse_what_they_cannot_do():
     u = np.ones((10, 10))
     chart = seaway.prepare(u)
-    with pytest.raises(ValueError, match="no landmarks.*prepare_landmarks"):
+    with pytest.raises(ValueError, match=r"no landmarks.*prepare_landmarks\(model=.max.\).*landmarks=True"):
         chart.route((0, 0), (9, 9), method="landmarks")
     with pytest.raises(ValueError, match="method must be one of"):
         chart.route((0, 0), (9, 9), method="fast")

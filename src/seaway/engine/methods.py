@@ -131,7 +131,7 @@ def resolve(prepared: PreparedChart, model: CostModel, method: str, weight: floa
             raise SeawayError(
                 f"the chart has no landmarks for the {model.name!r} model: call "
                 f"prepared.prepare_landmarks(model={model.name!r}) first (or "
-                "seaway.prepare(..., landmarks=16)), or use method='auto'"
+                "seaway.prepare(..., landmarks=True)), or use method='auto'"
             )
     return method
 
