@@ -6,27 +6,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from scipy import ndimage
 
 import seaway
 from seaway.engine import methods
 from seaway.samples import synthetic_sea
-from support.grids import RTOL, check_path
+from support.grids import RTOL, blob_sea, check_path, largest_water
 from support.reference import RefGraph
-
-
-def _sea(seed, shape=(110, 140)):
-    """Smooth random ice costs 1..30 with blobs of land."""
-    rng = np.random.default_rng(seed)
-    field = ndimage.gaussian_filter(rng.random(shape), 6)
-    u = 1.0 + 29.0 * (field - field.min()) / np.ptp(field)
-    u[ndimage.gaussian_filter(rng.random(shape), 4) > 0.56] = np.inf
-    return u
-
-
-def _largest_water(u):
-    labels, _ = ndimage.label(np.isfinite(u), np.ones((3, 3)))
-    return np.argwhere(labels == np.bincount(labels.ravel())[1:].argmax() + 1)
 
 
 @pytest.mark.parametrize("seed", range(3))
@@ -36,7 +21,7 @@ def test_the_default_16_landmarks_give_dijkstra_s_cost(seed, two_sided, monkeypa
     brute-force reference's cost and a path it prices the same, on planar and lat/lon charts,
     for voyages to random pixels and to the farthest one."""
     monkeypatch.setattr(methods, "BIDIRECTIONAL_LANDMARKS", two_sided)
-    u = _sea(seed)
+    u = blob_sea(seed, shape=(110, 140))
     geo: dict = dict(dx=1.5, dy=0.8)
     if seed:
         lat = np.linspace(70.0, 70.0 + 0.05 * (u.shape[0] - 1), u.shape[0])
@@ -45,7 +30,7 @@ def test_the_default_16_landmarks_give_dijkstra_s_cost(seed, two_sided, monkeypa
     chart = seaway.prepare(u, edge_cost="mean", **geo)
     assert chart.prepare_landmarks()["count"] == 16
     ref = RefGraph(u, k=5, edge_cost="mean", **geo)
-    water = _largest_water(u)
+    water = largest_water(u)
     rng = np.random.default_rng(seed)
     for a in rng.choice(len(water), size=4, replace=False):
         s = tuple(map(int, water[a]))
@@ -68,7 +53,7 @@ def test_16_landmarks_settle_fewer_pixels_than_8():
     few = eight.prepare_landmarks(8)
     many = sixteen.prepare_landmarks()
     assert many["bytes_per_pixel"] == 64.0 and many["pixels"][:8] == few["pixels"]
-    water = _largest_water(u)
+    water = largest_water(u)
     rng = np.random.default_rng(4)
     counts = []
     for _ in range(40):

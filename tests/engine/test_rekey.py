@@ -7,23 +7,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from scipy import ndimage
 
 import seaway
-from support.grids import RTOL, check_path
+from support.grids import RTOL, blob_sea, check_path, largest_water
 from support.reference import RefGraph
 
 SOLO = 4096  # cpp/seaway/bidirectional_side.hpp: solo_pixels
-
-
-def _sea(seed, shape=(120, 150), lo=1.0, hi=30.0):
-    """Smooth random ice costs lo..hi with blobs of land."""
-    rng = np.random.default_rng(seed)
-    field = ndimage.gaussian_filter(rng.random(shape), 6)
-    field = (field - field.min()) / np.ptp(field)
-    u = lo + (hi - lo) * field
-    u[ndimage.gaussian_filter(rng.random(shape), 4) > 0.56] = np.inf
-    return u
 
 
 def _geo(shape, seed):
@@ -43,12 +32,11 @@ def test_two_sided_searches_past_the_solo_phase_give_dijkstra_s_cost(seed, contr
     solo phase."""
     monkeypatch.setattr(seaway.engine.methods, "ASTAR_CONTRAST", np.inf)
     monkeypatch.setattr(seaway.engine.methods, "BIDIRECTIONAL_LANDMARKS", True)
-    u = _sea(seed, hi={"high": 30.0, "low": 1.5, "extreme": 1000.0}[contrast])
+    u = blob_sea(seed, hi={"high": 30.0, "low": 1.5, "extreme": 1000.0}[contrast])
     geo = _geo(u.shape, seed)
     plain = seaway.prepare(u, edge_cost="mean", **geo)
     with_landmarks = seaway.prepare(u, edge_cost="mean", landmarks=4, **geo)
-    labels, _ = ndimage.label(np.isfinite(u), np.ones((3, 3)))
-    water = np.argwhere(labels == np.bincount(labels.ravel())[1:].argmax() + 1)
+    water = largest_water(u)
     ref = RefGraph(u, k=5, edge_cost="mean", **geo)
     rng = np.random.default_rng(seed)
     outlasted = 0

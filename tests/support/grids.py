@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 import pytest
+from scipy import ndimage
 
 from support.reference import RefGraph, haversine
 
@@ -90,3 +91,19 @@ def check_path(ref: RefGraph, r, start_rc, end_rc, geo):
             math.hypot((q[0] - p[0]) * geo["dy"], (q[1] - p[1]) * geo["dx"]) for p, q in zip(px[:-1], px[1:])
         ]
     assert r.length == pytest.approx(float(np.sum(legs)), rel=RTOL, abs=1e-12)
+
+
+def blob_sea(seed, shape=(120, 150), lo=1.0, hi=30.0):
+    """Smooth random ice costs lo..hi with blobs of land (inf)."""
+    rng = np.random.default_rng(seed)
+    field = ndimage.gaussian_filter(rng.random(shape), 6)
+    field = (field - field.min()) / np.ptp(field)
+    u = lo + (hi - lo) * field
+    u[ndimage.gaussian_filter(rng.random(shape), 4) > 0.56] = np.inf
+    return u
+
+
+def largest_water(u):
+    """The (row, col) of the pixels of u's largest body of 8-connected finite pixels."""
+    labels, _ = ndimage.label(np.isfinite(u), np.ones((3, 3)))
+    return np.argwhere(labels == np.bincount(labels.ravel())[1:].argmax() + 1)
