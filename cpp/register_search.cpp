@@ -88,6 +88,20 @@ void def_queries(ChartClass& router) {
              py::arg("model"), py::arg("start"), py::arg("targets"), py::arg("cancel") = nullptr,
              "[QueryResult per target] of one Dijkstra search from start until every target is "
              "settled: each the route a Dijkstra search to that target alone finds");
+  router.def("prune_collinear",
+             [](PreparedChart& chart, const M& m) {
+               py::gil_scoped_release release;
+               return m.visit(chart, [&](const auto& model) {
+                 using F = std::decay_t<decltype(model)>;
+                 if constexpr (PrunableModel<F>::value) chart.prune_collinear(model);
+                 return PrunableModel<F>::value;
+               });
+             },
+             py::arg("model"),
+             "Leave out, in later queries under this model, the doubled steps two unit steps replace "
+             "at no more cost (collinear.hpp): every least cost the same, fewer steps. False (and "
+             "nothing done) for a model whose costs change with time. The caller keeps the model's "
+             "raster alive and unchanged while the chart lives: its address is the key.");
   router.def("field",
              [](PreparedChart& chart, const M& m, std::int64_t start, const CancelToken* cancel) {
                const Geometry& g = chart.geometry();
@@ -142,6 +156,19 @@ void register_search(py::module_& m) {
       "workspaces", [](const PreparedChart& chart) { return chart.workspaces_made(); },
       "search workspaces allocated so far (8-13 bytes per pixel each; reused across queries)");
   def_all_queries(router, Models{});
+  router.def(
+      "skip_table",
+      [](const PreparedChart& chart) -> py::object {
+        const std::vector<std::uint16_t>* t = chart.skip_table();
+        if (!t) return py::none();
+        const Geometry& g = chart.geometry();
+        py::array_t<std::uint16_t> out({g.rows, g.cols});
+        std::copy(t->begin(), t->end(), out.mutable_data());
+        return std::move(out);
+      },
+      "The doubled steps prune_collinear() left out, per pixel (bit b: the b-th of (-2,-2), (-2,0), "
+      "(-2,2), (0,-2), (0,2), (2,-2), (2,0), (2,2) from the pixel; bit 8 + b: the one ending there), "
+      "or None");
 
   auto bind = [&](auto tag) {
     using T = decltype(tag);

@@ -83,6 +83,8 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
   std::exception_ptr errors[2];
   std::thread helper;  // the backward side, started by the forward side after its solo phase
   std::function<void()> start_backward;
+  std::shared_ptr<const void> keep;
+  const StepEnumerator& steps = pg.steps_for(model, keep);
   auto side = [&](auto backward) {
     constexpr bool B = decltype(backward)::value;
     LazyLabels& mine = B ? bw : fw;
@@ -97,7 +99,7 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
       const OneWay<Potential> one_way{pot};  // the forward side's solo phase
       auto run = [&](const auto& p, const auto& solo) {
         return with_queue<false, Potential::sparse_keys>(q, [&](auto heap) {
-          return bidirectional_side<B>(pg.steps(), model, origin, target, mine, theirs, std::move(heap), p,
+          return bidirectional_side<B>(steps, model, origin, target, mine, theirs, std::move(heap), p,
                                        solo, shift, rounds, meet, cancel, start_backward);
         });
       };

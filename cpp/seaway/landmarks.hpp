@@ -118,11 +118,13 @@ RouteResult route_landmarks(PreparedChart& pg, const Landmarks& lm, const Model&
   LabelLease cache(pg.labels(), true);
   const CachedBound<LandmarkBound> bound(exact_bound, &*cache);
   PreparedChart::Lease ws(pg);
+  std::shared_ptr<const void> keep;
+  const StepEnumerator& steps = pg.steps_for(model, keep);
   SearchStats stats = with_queue<false, true>(q, [&](auto heap) {
-    return search_with_bound(pg.steps(), model, start, target, *ws, std::move(heap), bound, cancel);
+    return search_with_bound(steps, model, start, target, *ws, std::move(heap), bound, cancel);
   });
   stats.min_cost = b.min_rate;
-  stats.state_bytes += pg.clearance_bytes() + bound.resident_bytes();
+  stats.state_bytes += pg.clearance_bytes() + pg.pruned_bytes() + bound.resident_bytes();
   return pg.result(*ws, start, target, stats);
 }
 

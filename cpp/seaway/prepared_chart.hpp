@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "collinear.hpp"
 #include "cost_models.hpp"
 #include "label_spares.hpp"
 #include "passability.hpp"
@@ -94,8 +95,17 @@ class PreparedChart {
     return run(model, from, stop, 0.0, ws, control);
   }
 
-  // What the other searches (bidirectional, landmarks, turns, least danger) need.
+  // What the other searches (bidirectional, landmarks, turns, least danger) need: every step,
+  // or for a static model those left after prune_collinear(model) (collinear.hpp).
   const StepEnumerator& steps() const { return *steps_; }
+  template <class Model>
+  const StepEnumerator& steps_for(const Model& model, std::shared_ptr<const void>& keep) const {
+    return pruned_.get(*steps_, model, keep);
+  }
+  template <class Model>
+  void prune_collinear(const Model& model) { pruned_.build(*steps_, model); }
+  std::size_t pruned_bytes() const { return pruned_.bytes(); }
+  const std::vector<std::uint16_t>* skip_table() const { return pruned_.table(); }
   const std::uint8_t* clearance() const { return clearance_.data(); }
   std::size_t clearance_bytes() const { return clearance_.capacity(); }
   const Passability& passability() const { return pass_; }
@@ -148,11 +158,13 @@ class PreparedChart {
     double hw = target >= 0 && b.per_length ? weight : 0.0;
     if ((q.kind == QueueKind::buckets || q.kind == QueueKind::overflow_buckets) && astar) hw = 1 - eps;
     if (q.kind == QueueKind::buckets && astar && g_.size() <= chunked_astar_pixels) q.kind = QueueKind::chunked_buckets;
+    std::shared_ptr<const void> keep;
+    const StepEnumerator& steps = steps_for(model, keep);
     SearchStats stats = with_queue<true, true, Model::caps.time_dependent>(q, [&](auto heap) {
-      return search(*steps_, model, start, target, ws, std::move(heap), hw * b.min_rate, control);
+      return search(steps, model, start, target, ws, std::move(heap), hw * b.min_rate, control);
     });
     stats.min_cost = b.min_rate;
-    stats.state_bytes += clearance_.capacity();
+    stats.state_bytes += clearance_.capacity() + pruned_.bytes();
     return stats;
   }
 
@@ -165,6 +177,7 @@ class PreparedChart {
   double rmin_ = 0, rmax_ = 0;
   int half_ = 0;
   std::optional<StepEnumerator> steps_;  // built once the clearance is
+  PrunedSteps pruned_;
   mutable std::mutex pool_mutex_;
   std::vector<std::unique_ptr<Workspace>> pool_;
   LabelPool labels_{g_.size()};  // after g_

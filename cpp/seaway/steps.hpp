@@ -3,9 +3,11 @@
 // `from + o`. It exists when both ends lie on the chart (columns wrap on 360-degree charts),
 // both are passable and, under LandRule::segment, no pixel its closed segment touches is
 // impassable. A pixel away from the border whose land clearance exceeds the stencil's
-// half-width has every step (the fast path: no test at all).
+// half-width has every step (the fast path: no test at all), less those a skip table
+// (collinear.hpp) leaves out there.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -30,6 +32,20 @@ class StepEnumerator {
   const std::vector<Offset>& stencil() const { return *st_; }
   const std::uint8_t* clearance() const { return clear_; }
 
+  // This enumerator leaving out, on the fast path, the doubled steps `skip` marks (bit b of
+  // skip[v]: doubled[b] from v; bit 8 + b: doubled[b] ending at v). `skip` must outlive it.
+  StepEnumerator with_skips(const std::uint16_t* skip, const std::vector<int>& doubled) const {
+    StepEnumerator e = *this;
+    e.skip_ = skip;
+    for (unsigned byte = 0; byte < 256; ++byte) {
+      std::uint64_t m = 0;
+      for (std::size_t b = 0; b < doubled.size(); ++b)
+        if (byte >> b & 1u) m |= std::uint64_t(1) << doubled[b];
+      e.expand_[byte] = m;
+    }
+    return e;
+  }
+
   // Calls f(w, o, from, to, r, cell) for every step with v at its start (Backward: at its end):
   // w its other end, o its offset, from -> to the step as the model prices it, r its length and
   // cell(m) the flat index of the m-th pixel of the offset's length shares.
@@ -44,7 +60,9 @@ class StepEnumerator {
     const std::int64_t row = row_of_(v), col = v - row * C;
     if (row >= h && row < R - h && col >= h && col < C - h && clear[v] > h) {
       const double* len = lengths_->row(row);
+      const std::uint64_t skip = skip_ ? expand_[Backward ? skip_[v] >> 8 : skip_[v] & 0xffu] : 0;
       for (std::int64_t o = 0; o < K; ++o) {
+        if (o < 64 && (skip >> o & 1u)) continue;
         const auto& shares = st[o].shares;
         const std::int64_t from = Backward ? v - flat[o] : v, w = Backward ? from : v + flat[o];
         const double r = Backward ? lengths_->row(row - st[o].di)[o] : len[o];
@@ -88,6 +106,8 @@ class StepEnumerator {
   int half_;
   FastDiv row_of_;  // v / cols
   std::vector<std::int64_t> flat_;  // each offset's step in flat pixel index
+  const std::uint16_t* skip_ = nullptr;  // with_skips()
+  std::array<std::uint64_t, 256> expand_{};  // a skip byte as a mask of offsets
 };
 
 }  // namespace seaway

@@ -245,5 +245,11 @@ def build_landmarks(
     t0 = time.perf_counter()
     seed = seed_rc[0] * prepared.chart.shape[1] + seed_rc[1]
     engine = cast("_core.RasterRule", model.engine(prepared))  # symmetric and static: checked above
+    # A chart with landmarks is for many queries: every later query under this model, and the
+    # landmarks' own searches, leave out the doubled steps two unit steps replace at no more
+    # cost (cpp/seaway/collinear.hpp). The engine model is kept with the chart: the address of
+    # its raster keys the skip table.
+    if prepared.router.prune_collinear(engine):
+        prepared.pruned_for = engine
     lm = prepared.router.build_landmarks(engine, int(count), int(seed), cancel)
     return lm, time.perf_counter() - t0

@@ -1,0 +1,166 @@
+// Doubled steps a pair of unit steps replaces at no more cost. In the 5 x 5 stencil the steps
+// (±2, 0), (0, ±2) and (±2, ±2) run straight through the middle pixel m of a unit step: where
+// the two unit steps v -> m -> w cost no more than the step v -> w, that step can never make a
+// route cheaper, and a search may leave it out (every least cost stays the same; a route that
+// took it takes the two unit steps instead, the same track). Under the papers' max rule that
+// holds wherever m costs no more than the dearer end, so on most of a chart a search makes 16
+// steps per pixel instead of 24. Only for static models whose step cost depends on the step
+// alone (Capabilities::raster_rule); the turn search keeps every step (its state is the step).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <type_traits>
+#include <typeindex>
+#include <utility>
+#include <vector>
+
+#include "capabilities.hpp"
+#include "steps.hpp"
+
+namespace seaway {
+
+// A relative slack for the rounding of the two sums (the search adds the two unit steps to a
+// cost, not to each other): a route may come out at most this share dearer than the least.
+inline constexpr double collinear_slack = 1e-12;
+
+// The index, in the stencil, of the offset (di, dj), or -1.
+inline int offset_of(const std::vector<Offset>& st, int di, int dj) {
+  for (std::size_t o = 0; o < st.size(); ++o)
+    if (st[o].di == di && st[o].dj == dj) return int(o);
+  return -1;
+}
+
+// For the stencil `st`: the indices of the 8 doubled unit offsets (bit b of a skip byte) and of
+// their halves, or empty when the stencil has none or they lie beyond bit 63 of a step mask.
+struct DoubledSteps {
+  std::vector<int> doubled, half;
+  explicit DoubledSteps(const std::vector<Offset>& st) {
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj) {
+        if (di == 0 && dj == 0) continue;
+        const int d = offset_of(st, 2 * di, 2 * dj), h = offset_of(st, di, dj);
+        if (d < 0 || h < 0 || d > 63) {
+          doubled.clear();
+          half.clear();
+          return;
+        }
+        doubled.push_back(d);
+        half.push_back(h);
+      }
+  }
+  bool any() const { return !doubled.empty(); }
+};
+
+// Per pixel v a 16-bit word: bit b (b < 8) set when the doubled step of DoubledSteps b from v
+// may be left out, bit 8 + b when the one ending at v may (the backward search's view of the
+// same step). Costs every step of every pixel once (three rows of step costs kept at a time).
+template <class Model>
+std::vector<std::uint16_t> collinear_skips(const StepEnumerator& steps, const Model& model) {
+  const Geometry& g = steps.geometry();
+  const std::vector<Offset>& st = steps.stencil();
+  const DoubledSteps ds(st);
+  const std::int64_t R = g.rows, C = g.cols, K = std::int64_t(st.size());
+  std::vector<std::uint16_t> skip(std::size_t(g.size()), 0);
+  if (!ds.any()) return skip;
+  constexpr double none = std::numeric_limits<double>::infinity();
+  // Step costs of rows r - 1, r, r + 1 (ring of three), K per pixel, inf where no step.
+  std::vector<double> ring(std::size_t(3 * C * K));
+  auto fill = [&](std::int64_t r) {
+    double* out = ring.data() + (r % 3) * C * K;
+    std::fill(out, out + C * K, none);
+    for (std::int64_t c = 0; c < C; ++c) {
+      const std::int64_t v = r * C + c;
+      if (steps.clearance()[v] == 0) continue;
+      double* cv = out + c * K;
+      steps.each(v, [&](std::int64_t, std::int64_t o, std::int64_t from, std::int64_t to, double len, auto&& cell) {
+        cv[o] = model(from, to, int(o), len, 0.0, cell);
+      });
+    }
+  };
+  auto cost = [&](std::int64_t r, std::int64_t c, int o) { return ring[std::size_t(((r % 3) * C + c) * K + o)]; };
+  fill(0);
+  if (R > 1) fill(1);
+  for (std::int64_t r = 0; r < R; ++r) {
+    if (r + 1 < R && r > 0) fill(r + 1);
+    for (std::int64_t c = 0; c < C; ++c) {
+      for (std::size_t b = 0; b < ds.doubled.size(); ++b) {
+        const int d = ds.doubled[b], h = ds.half[b];
+        const double direct = cost(r, c, d);
+        if (!(direct < none)) continue;  // no such step
+        const std::int64_t rm = r + st[std::size_t(h)].di;
+        std::int64_t cm = c + st[std::size_t(h)].dj;
+        if (g.wrap) cm = g.wrap_col(cm);
+        const double two = cost(r, c, h) + cost(rm, cm, h);
+        if (!(two <= direct * (1 + collinear_slack))) continue;
+        skip[std::size_t(r * C + c)] |= std::uint16_t(1u << b);
+        std::int64_t cw = c + st[std::size_t(d)].dj;
+        if (g.wrap) cw = g.wrap_col(cw);
+        skip[std::size_t((r + st[std::size_t(d)].di) * C + cw)] |= std::uint16_t(1u << (8 + b));
+      }
+    }
+  }
+  return skip;
+}
+
+// A static model over a raster `u` (cost_models.hpp): the models a skip table serves.
+template <class Model, class = void>
+struct PrunableModel : std::false_type {};
+template <class Model>
+struct PrunableModel<Model, std::void_t<decltype(std::declval<const Model&>().u)>>
+    : std::bool_constant<Model::caps.is_static && !Model::caps.time_dependent> {};
+
+// A chart's pruned enumerator for one model (the functor's type and its raster), published
+// atomically so that threads querying meanwhile see the old steps or the new, both exact.
+class PrunedSteps {
+ public:
+  template <class Model>
+  void build(const StepEnumerator& all, const Model& model) {
+    static_assert(PrunableModel<Model>::value, "only a static raster model's steps can be left out");
+    auto p = std::make_shared<Table>();
+    p->key = key(model);
+    p->skip = collinear_skips(all, model);
+    p->steps.emplace(all.with_skips(p->skip.data(), DoubledSteps(all.stencil()).doubled));
+    std::atomic_store(&table_, std::shared_ptr<const Table>(std::move(p)));
+  }
+  // The steps for a query under `model`: the pruned ones if built for it, else `all`. `keep`
+  // holds them for the query's length.
+  template <class Model>
+  const StepEnumerator& get(const StepEnumerator& all, const Model& model, std::shared_ptr<const void>& keep) const {
+    if constexpr (PrunableModel<Model>::value) {
+      auto p = std::atomic_load(&table_);
+      if (p && p->key == key(model)) {
+        const StepEnumerator& e = *p->steps;
+        keep = std::move(p);
+        return e;
+      }
+    }
+    return all;
+  }
+  std::size_t bytes() const {
+    const auto p = std::atomic_load(&table_);
+    return p ? p->skip.capacity() * sizeof(std::uint16_t) : 0;
+  }
+  // The skip table (collinear_skips), or null; valid until the next build().
+  const std::vector<std::uint16_t>* table() const {
+    const auto p = std::atomic_load(&table_);
+    return p ? &p->skip : nullptr;
+  }
+
+ private:
+  using Key = std::pair<std::type_index, const void*>;
+  template <class Model>
+  static Key key(const Model& m) { return {std::type_index(typeid(Model)), static_cast<const void*>(m.u)}; }
+  struct Table {
+    Key key{std::type_index(typeid(void)), nullptr};
+    std::vector<std::uint16_t> skip;
+    std::optional<StepEnumerator> steps;  // reads skip
+  };
+  std::shared_ptr<const Table> table_;
+};
+
+}  // namespace seaway
