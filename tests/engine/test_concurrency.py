@@ -194,3 +194,38 @@ def test_two_thread_searches_on_one_core_give_the_answers_of_two():
         assert answers() == (both, *clearance)
     finally:
         os.sched_setaffinity(0, allowed)
+
+
+def test_queries_while_the_doubled_steps_are_left_out_keep_their_costs():
+    """Threads route on a chart while the main thread prepares its landmarks three times, each
+    time publishing a new table of the doubled steps to leave out (cpp/seaway/collinear.hpp): a
+    query started before sees every step, one started after sees the table, and one that spans
+    the swap keeps the table it began with alive; every cost is the one of a chart that never
+    left a step out (to 1e-9; the path may take the two halves of a doubled step instead)."""
+    rng = np.random.default_rng(14)
+    cost = rng.uniform(1.0, 3.0, (160, 200))
+    cost[40:60, 50:150] = np.inf  # a wall to go round
+    plain = seaway.prepare(cost)
+    chart = seaway.prepare(cost)
+    queries = [q for q in _queries(cost, 24, seed=5) if q[2] != ("astar", 2.0)]
+    queries += [(a, b, "bidirectional") for a, b, _ in queries[:8]]
+    expect = [_answer(plain.route, q)[0] for q in queries]
+    done = threading.Event()
+    seen: list = []
+
+    def worker(i):
+        while not done.is_set():
+            for q, e in zip(queries[i::4], expect[i::4]):
+                got = _answer(chart.route, q)[0]
+                seen.append(got == pytest.approx(e, rel=1e-9))
+
+    with ThreadPoolExecutor(4) as pool:
+        futures = [pool.submit(worker, i) for i in range(4)]
+        for _ in range(3):
+            chart.prepare_landmarks(4)
+            time.sleep(0.05)
+        done.set()
+        for f in futures:
+            f.result()
+    assert chart.router.skip_table().any()
+    assert len(seen) >= len(queries) and all(seen)
