@@ -28,13 +28,6 @@ namespace seaway {
 // cost, not to each other): a route may come out at most this share dearer than the least.
 inline constexpr double collinear_slack = 1e-12;
 
-// The index, in the stencil, of the offset (di, dj), or -1.
-inline int offset_of(const std::vector<Offset>& st, int di, int dj) {
-  for (std::size_t o = 0; o < st.size(); ++o)
-    if (st[o].di == di && st[o].dj == dj) return int(o);
-  return -1;
-}
-
 // For the stencil `st`: the indices of the 8 doubled unit offsets (bit b of a skip byte) and of
 // their halves, or empty when the stencil has none or they lie beyond bit 63 of a step mask.
 struct DoubledSteps {

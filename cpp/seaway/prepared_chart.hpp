@@ -53,11 +53,7 @@ class PreparedChart {
   const Geometry::Lengths& lengths() const { return lengths_; }
   int half_width() const { return half_; }  // largest |di| or |dj| of the stencil
   // Index of the stencil offset (di, dj), or -1.
-  int offset_index(int di, int dj) const {
-    for (std::size_t o = 0; o < stencil_.size(); ++o)
-      if (stencil_[o].di == di && stencil_[o].dj == dj) return int(o);
-    return -1;
-  }
+  int offset_index(int di, int dj) const { return offset_of(stencil_, di, dj); }
 
   // Least-cost route under `model`; weight 0: Dijkstra, 1: A*, > 1: weighted A*.
   template <class Model>

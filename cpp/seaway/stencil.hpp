@@ -84,6 +84,13 @@ inline std::vector<Offset> make_stencil(int k, Directions dirs) {
   return out;
 }
 
+// The index, in the stencil, of the offset (di, dj), or -1.
+inline int offset_of(const std::vector<Offset>& st, int di, int dj) {
+  for (std::size_t o = 0; o < st.size(); ++o)
+    if (st[o].di == di && st[o].dj == dj) return int(o);
+  return -1;
+}
+
 // Largest |di| or |dj| of the stencil's offsets.
 inline int half_width(const std::vector<Offset>& st) {
   int h = 0;

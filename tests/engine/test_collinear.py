@@ -9,7 +9,16 @@ import numpy as np
 import pytest
 
 import seaway
-from support.grids import RTOL, blob_sea, check_path, largest_water, make_chart, point
+from support.grids import (
+    RTOL,
+    blob_geo,
+    blob_sea,
+    check_path,
+    largest_water,
+    make_chart,
+    point,
+    reference_voyages,
+)
 from support.reference import RefGraph
 
 #: Bit b of a skip word: the doubled step 2 x HALVES[b] (collinear.hpp, DoubledSteps).
@@ -129,24 +138,14 @@ def test_pruned_searches_on_a_sea_with_land_give_the_reference_cost(seed, edge_c
     descending): every exact method gives the reference's cost and a path it prices the same,
     to random pixels and to the farthest one."""
     u = blob_sea(seed, shape=(110, 140))
-    geo: dict = dict(dx=1.5, dy=0.8)
-    if seed:
-        lat = np.linspace(70.0, 70.0 + 0.05 * (u.shape[0] - 1), u.shape[0])
-        lon = np.linspace(30.0, 30.0 + 0.15 * (u.shape[1] - 1), u.shape[1])
-        geo = dict(lat=lat[::-1] if seed == 2 else lat, lon=lon)
+    geo = blob_geo(seed, u.shape)
     chart = seaway.prepare(u, edge_cost=edge_cost, **geo)
     chart.prepare_landmarks(8)
     words = chart.router.skip_table()
     assert np.count_nonzero(words & 0xFF) > u.size // 2  # most pixels leave a step out
     ref = RefGraph(u, k=5, edge_cost=edge_cost, **geo)
-    water = largest_water(u)
-    rng = np.random.default_rng(seed)
-    for a in rng.choice(len(water), size=3, replace=False):
-        s = tuple(map(int, water[a]))
-        costs = ref.costs(s)
-        far = np.unravel_index(np.argmax(np.where(np.isfinite(costs), costs, -1)), costs.shape)
-        for e in (tuple(map(int, water[rng.integers(len(water))])), tuple(map(int, far))):
-            for method in ("dijkstra", "astar", "bidirectional", "landmarks"):
-                r = chart.route(point(geo, s), point(geo, e), method=method)
-                assert r.cost == pytest.approx(costs[e], rel=RTOL), (method, s, e)
-                check_path(ref, r, s, e, geo)
+    for s, e, least in reference_voyages(ref, largest_water(u), np.random.default_rng(seed), starts=3):
+        for method in ("dijkstra", "astar", "bidirectional", "landmarks"):
+            r = chart.route(point(geo, s), point(geo, e), method=method)
+            assert r.cost == pytest.approx(least, rel=RTOL), (method, s, e)
+            check_path(ref, r, s, e, geo)

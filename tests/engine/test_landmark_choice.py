@@ -10,7 +10,7 @@ import pytest
 import seaway
 from seaway.engine import methods
 from seaway.samples import synthetic_sea
-from support.grids import RTOL, blob_sea, check_path, largest_water
+from support.grids import RTOL, blob_geo, blob_sea, check_path, largest_water, point, reference_voyages
 from support.reference import RefGraph
 
 
@@ -22,25 +22,14 @@ def test_the_default_16_landmarks_give_dijkstra_s_cost(seed, two_sided, monkeypa
     for voyages to random pixels and to the farthest one."""
     monkeypatch.setattr(methods, "BIDIRECTIONAL_LANDMARKS", two_sided)
     u = blob_sea(seed, shape=(110, 140))
-    geo: dict = dict(dx=1.5, dy=0.8)
-    if seed:
-        lat = np.linspace(70.0, 70.0 + 0.05 * (u.shape[0] - 1), u.shape[0])
-        lon = np.linspace(30.0, 30.0 + 0.15 * (u.shape[1] - 1), u.shape[1])
-        geo = dict(lat=lat[::-1] if seed == 2 else lat, lon=lon)
+    geo = blob_geo(seed, u.shape)
     chart = seaway.prepare(u, edge_cost="mean", **geo)
     assert chart.prepare_landmarks()["count"] == 16
     ref = RefGraph(u, k=5, edge_cost="mean", **geo)
-    water = largest_water(u)
-    rng = np.random.default_rng(seed)
-    for a in rng.choice(len(water), size=4, replace=False):
-        s = tuple(map(int, water[a]))
-        costs = ref.costs(s)
-        far = np.unravel_index(np.argmax(np.where(np.isfinite(costs), costs, -1)), costs.shape)
-        for e in (tuple(map(int, water[rng.integers(len(water))])), tuple(map(int, far))):
-            ps, pe = (s, e) if "dx" in geo else [(geo["lat"][p[0]], geo["lon"][p[1]]) for p in (s, e)]
-            r = chart.route(ps, pe, method="landmarks")
-            assert r.cost == pytest.approx(costs[e], rel=RTOL), (s, e)
-            check_path(ref, r, s, e, geo)
+    for s, e, least in reference_voyages(ref, largest_water(u), np.random.default_rng(seed), starts=4):
+        r = chart.route(point(geo, s), point(geo, e), method="landmarks")
+        assert r.cost == pytest.approx(least, rel=RTOL), (s, e)
+        check_path(ref, r, s, e, geo)
 
 
 def test_16_landmarks_settle_fewer_pixels_than_8():

@@ -107,3 +107,24 @@ def largest_water(u):
     """The (row, col) of the pixels of u's largest body of 8-connected finite pixels."""
     labels, _ = ndimage.label(np.isfinite(u), np.ones((3, 3)))
     return np.argwhere(labels == np.bincount(labels.ravel())[1:].argmax() + 1)
+
+
+def blob_geo(seed, shape):
+    """Pixels for a blob_sea chart: planar 1.5 x 0.8 (seed 0), else lat/lon from 70 N, 0.05 x
+    0.15 degrees, rows ascending (seed 1) or descending (seed 2)."""
+    if not seed:
+        return dict(dx=1.5, dy=0.8)
+    lat = np.linspace(70.0, 70.0 + 0.05 * (shape[0] - 1), shape[0])
+    lon = np.linspace(30.0, 30.0 + 0.15 * (shape[1] - 1), shape[1])
+    return dict(lat=lat[::-1] if seed == 2 else lat, lon=lon)
+
+
+def reference_voyages(ref: RefGraph, water, rng, starts):
+    """(start, end, least cost) for `starts` random starts in `water`, each to a random pixel of
+    it and to the pixel farthest from it, by the brute-force reference."""
+    for a in rng.choice(len(water), size=starts, replace=False):
+        s = tuple(map(int, water[a]))
+        costs = ref.costs(s)
+        far = np.unravel_index(np.argmax(np.where(np.isfinite(costs), costs, -1)), costs.shape)
+        for e in (tuple(map(int, water[rng.integers(len(water))])), tuple(map(int, far))):
+            yield s, e, costs[e]
