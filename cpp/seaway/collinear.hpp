@@ -4,8 +4,8 @@
 // route cheaper, and a search may leave it out (every least cost stays the same; a route that
 // took it takes the two unit steps instead, the same track). Under the papers' max rule that
 // holds wherever m costs no more than the dearer end, so on most of a chart a search makes 16
-// steps per pixel instead of 24. Only for static models whose step cost depends on the step
-// alone (Capabilities::raster_rule); the turn search keeps every step (its state is the step).
+// steps per pixel instead of 24. Only for static models over a raster (PrunableModel: a step's
+// cost depends on the step alone); the turn search keeps every step (its state is the step).
 #pragma once
 
 #include <algorithm>
@@ -53,10 +53,10 @@ struct DoubledSteps {
 // may be left out, bit 8 + b when the one ending at v may (the backward search's view of the
 // same step). Costs every step of every pixel once (three rows of step costs kept at a time).
 template <class Model>
-std::vector<std::uint16_t> collinear_skips(const StepEnumerator& steps, const Model& model) {
+std::vector<std::uint16_t> collinear_skips(const StepEnumerator& steps, const Model& model,
+                                           const DoubledSteps& ds) {
   const Geometry& g = steps.geometry();
   const std::vector<Offset>& st = steps.stencil();
-  const DoubledSteps ds(st);
   const std::int64_t R = g.rows, C = g.cols, K = std::int64_t(st.size());
   std::vector<std::uint16_t> skip(std::size_t(g.size()), 0);
   if (!ds.any()) return skip;
@@ -116,8 +116,9 @@ class PrunedSteps {
     static_assert(PrunableModel<Model>::value, "only a static raster model's steps can be left out");
     auto p = std::make_shared<Table>();
     p->key = key(model);
-    p->skip = collinear_skips(all, model);
-    p->steps.emplace(all.with_skips(p->skip.data(), DoubledSteps(all.stencil()).doubled));
+    const DoubledSteps ds(all.stencil());
+    p->skip = collinear_skips(all, model, ds);
+    p->steps.emplace(all.with_skips(p->skip.data(), ds.doubled));
     std::atomic_store(&table_, std::shared_ptr<const Table>(std::move(p)));
   }
   // The steps for a query under `model`: the pruned ones if built for it, else `all`. `keep`

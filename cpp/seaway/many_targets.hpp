@@ -48,7 +48,7 @@ void routes_to(PreparedChart& chart, const Model& model, std::int64_t start,
     return search_with_bound(steps, model, start, -1, *ws, std::move(heap), none, control, stop);
   });
   stats.min_cost = b.min_rate;
-  stats.state_bytes += chart.clearance_bytes();
+  stats.state_bytes += chart.clearance_bytes() + chart.pruned_bytes();
   for (std::size_t i = 0; i < targets.size(); ++i) each(i, chart.result(*ws, start, targets[i], stats));
 }
 

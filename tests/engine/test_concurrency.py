@@ -214,10 +214,12 @@ def test_queries_while_the_doubled_steps_are_left_out_keep_their_costs():
     seen: list = []
 
     def worker(i):
-        while not done.is_set():
+        while True:  # at least one pass, however late the thread starts
             for q, e in zip(queries[i::4], expect[i::4]):
                 got = _answer(chart.route, q)[0]
                 seen.append(got == pytest.approx(e, rel=1e-9))
+            if done.is_set():
+                return
 
     with ThreadPoolExecutor(4) as pool:
         futures = [pool.submit(worker, i) for i in range(4)]
