@@ -100,8 +100,29 @@ void def_queries(ChartClass& router) {
              py::arg("model"),
              "Leave out, in later queries under this model, the doubled steps two unit steps replace "
              "at no more cost (collinear.hpp): every least cost the same, fewer steps. False (and "
-             "nothing done) for a model whose costs change with time. The caller keeps the model's "
-             "raster alive and unchanged while the chart lives: its address is the key.");
+             "nothing done) for a model whose costs change with time. Each model keeps its own table; "
+             "the caller keeps the model's raster alive and unchanged until forget_pruned(model): "
+             "its address is the key.");
+  router.def("forget_pruned",
+             [](PreparedChart& chart, const M& m) {
+               m.visit(chart, [&](const auto& model) { chart.forget_pruned(model); });
+             },
+             py::arg("model"), "Drop the table prune_collinear(model) built, if any");
+  router.def(
+      "skip_table",
+      [](const PreparedChart& chart, const M& m) -> py::object {
+        const std::vector<std::uint16_t>* t =
+            m.visit(chart, [&](const auto& model) { return chart.skip_table(model); });
+        if (!t) return py::none();
+        const Geometry& g = chart.geometry();
+        py::array_t<std::uint16_t> out({g.rows, g.cols});
+        std::copy(t->begin(), t->end(), out.mutable_data());
+        return std::move(out);
+      },
+      py::arg("model"),
+      "The doubled steps prune_collinear(model) left out, per pixel (bit b: the b-th of (-2,-2), "
+      "(-2,0), (-2,2), (0,-2), (0,2), (2,-2), (2,0), (2,2) from the pixel; bit 8 + b: the one "
+      "ending there), or None");
   router.def("field",
              [](PreparedChart& chart, const M& m, std::int64_t start, const CancelToken* cancel) {
                const Geometry& g = chart.geometry();
@@ -156,20 +177,6 @@ void register_search(py::module_& m) {
       "workspaces", [](const PreparedChart& chart) { return chart.workspaces_made(); },
       "search workspaces allocated so far (8-13 bytes per pixel each; reused across queries)");
   def_all_queries(router, Models{});
-  router.def(
-      "skip_table",
-      [](const PreparedChart& chart) -> py::object {
-        const std::vector<std::uint16_t>* t = chart.skip_table();
-        if (!t) return py::none();
-        const Geometry& g = chart.geometry();
-        py::array_t<std::uint16_t> out({g.rows, g.cols});
-        std::copy(t->begin(), t->end(), out.mutable_data());
-        return std::move(out);
-      },
-      "The doubled steps prune_collinear() left out, per pixel (bit b: the b-th of (-2,-2), (-2,0), "
-      "(-2,2), (0,-2), (0,2), (2,-2), (2,0), (2,2) from the pixel; bit 8 + b: the one ending there), "
-      "or None");
-
   auto bind = [&](auto tag) {
     using T = decltype(tag);
     m.def("make_router", &make_router<T>, py::arg("cost").noconvert(), py::arg("land").noconvert(),

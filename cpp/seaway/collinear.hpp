@@ -107,27 +107,33 @@ template <class Model>
 struct PrunableModel<Model, std::void_t<decltype(std::declval<const Model&>().u)>>
     : std::bool_constant<Model::caps.is_static && !Model::caps.time_dependent> {};
 
-// A chart's pruned enumerator for one model (the functor's type and its raster), published
-// atomically so that threads querying meanwhile see the old steps or the new, both exact.
+// A chart's pruned enumerators, one per model (the functor's type and its raster), published
+// atomically so that threads querying meanwhile see the old list or the new, both exact. The
+// caller keeps each model's raster alive while its table is listed (forget() drops it).
 class PrunedSteps {
  public:
   template <class Model>
   void build(const StepEnumerator& all, const Model& model) {
     static_assert(PrunableModel<Model>::value, "only a static raster model's steps can be left out");
     auto p = std::make_shared<Table>();
-    p->key = key(model);
+    const Key k = key(model);
+    p->key = k;
     const DoubledSteps ds(all.stencil());
     p->skip = collinear_skips(all, model, ds);
     p->steps.emplace(all.with_skips(p->skip.data(), ds.doubled));
-    std::atomic_store(&table_, std::shared_ptr<const Table>(std::move(p)));
+    publish(k, std::move(p));
+  }
+  // Drops the table of `model` (before its raster goes: a new raster could take the address).
+  template <class Model>
+  void forget(const Model& model) {
+    if constexpr (PrunableModel<Model>::value) publish(key(model), nullptr);
   }
   // The steps for a query under `model`: the pruned ones if built for it, else `all`. `keep`
   // holds them for the query's length.
   template <class Model>
   const StepEnumerator& get(const StepEnumerator& all, const Model& model, std::shared_ptr<const void>& keep) const {
     if constexpr (PrunableModel<Model>::value) {
-      auto p = std::atomic_load(&table_);
-      if (p && p->key == key(model)) {
+      if (auto p = find(key(model))) {
         const StepEnumerator& e = *p->steps;
         keep = std::move(p);
         return e;
@@ -136,13 +142,18 @@ class PrunedSteps {
     return all;
   }
   std::size_t bytes() const {
-    const auto p = std::atomic_load(&table_);
-    return p ? p->skip.capacity() * sizeof(std::uint16_t) : 0;
+    std::size_t n = 0;
+    if (const auto list = std::atomic_load(&list_))
+      for (const auto& t : *list) n += t->skip.capacity() * sizeof(std::uint16_t);
+    return n;
   }
-  // The skip table (collinear_skips), or null; valid until the next build().
-  const std::vector<std::uint16_t>* table() const {
-    const auto p = std::atomic_load(&table_);
-    return p ? &p->skip : nullptr;
+  // The skip table (collinear_skips) of `model`, or null; valid until the next build or forget.
+  template <class Model>
+  const std::vector<std::uint16_t>* table(const Model& model) const {
+    if constexpr (PrunableModel<Model>::value) {
+      if (const auto p = find(key(model))) return &p->skip;
+    }
+    return nullptr;
   }
 
  private:
@@ -154,7 +165,28 @@ class PrunedSteps {
     std::vector<std::uint16_t> skip;
     std::optional<StepEnumerator> steps;  // reads skip
   };
-  std::shared_ptr<const Table> table_;
+  using List = std::vector<std::shared_ptr<const Table>>;
+  std::shared_ptr<const Table> find(const Key& k) const {
+    if (const auto list = std::atomic_load(&list_))
+      for (const auto& t : *list)
+        if (t->key == k) return t;
+    return nullptr;
+  }
+  // The list with `k`'s table replaced by `t` (dropped if null), swapped in unless another
+  // thread published first (then again on its list).
+  void publish(const Key& k, std::shared_ptr<const Table> t) {
+    auto old = std::atomic_load(&list_);
+    std::shared_ptr<const List> next;
+    do {
+      auto l = std::make_shared<List>();
+      if (old)
+        for (const auto& e : *old)
+          if (e->key != k) l->push_back(e);
+      if (t) l->push_back(t);
+      next = std::move(l);
+    } while (!std::atomic_compare_exchange_weak(&list_, &old, next));
+  }
+  std::shared_ptr<const List> list_;
 };
 
 }  // namespace seaway

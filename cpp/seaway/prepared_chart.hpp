@@ -100,8 +100,11 @@ class PreparedChart {
   }
   template <class Model>
   void prune_collinear(const Model& model) { pruned_.build(*steps_, model); }
+  template <class Model>
+  void forget_pruned(const Model& model) { pruned_.forget(model); }
   std::size_t pruned_bytes() const { return pruned_.bytes(); }
-  const std::vector<std::uint16_t>* skip_table() const { return pruned_.table(); }
+  template <class Model>
+  const std::vector<std::uint16_t>* skip_table(const Model& model) const { return pruned_.table(model); }
   const std::uint8_t* clearance() const { return clearance_.data(); }
   std::size_t clearance_bytes() const { return clearance_.capacity(); }
   const Passability& passability() const { return pass_; }

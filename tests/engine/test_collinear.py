@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 import seaway
+from seaway.models.base import as_model
 from support.grids import (
     RTOL,
     blob_geo,
@@ -25,9 +26,15 @@ from support.reference import RefGraph
 HALVES = [(-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1)]
 
 
+def table_of(chart, model=None):
+    """The skip table of `model` (default the chart's) on `chart`, or None."""
+    model = chart.model if model is None else as_model(model)
+    return chart.router.skip_table(model.engine(chart))
+
+
 def prune(chart):
     assert chart.router.prune_collinear(chart.model.engine(chart)) is True
-    table = chart.router.skip_table()
+    table = table_of(chart)
     assert table.shape == chart.chart.shape and table.dtype == np.uint16
     return table
 
@@ -114,7 +121,7 @@ def test_pruned_searches_give_the_reference_cost(seed, edge_cost, grid):
     u, land, geo = make_chart(seed, grid, zeros=False)
     chart = seaway.prepare(u, land=land, edge_cost=edge_cost, **geo)
     chart.prepare_landmarks(4)
-    assert chart.pruned_for is not None and chart.router.skip_table().any()
+    assert set(chart.pruned_for) == {edge_cost} and table_of(chart).any()
     ref = RefGraph(u, land=land, k=5, edge_cost=edge_cost, **geo)
     water = np.argwhere(ref.ok)
     rng = np.random.default_rng(seed)
@@ -141,7 +148,7 @@ def test_pruned_searches_on_a_sea_with_land_give_the_reference_cost(seed, edge_c
     geo = blob_geo(seed, u.shape)
     chart = seaway.prepare(u, edge_cost=edge_cost, **geo)
     chart.prepare_landmarks(8)
-    words = chart.router.skip_table()
+    words = table_of(chart)
     assert np.count_nonzero(words & 0xFF) > u.size // 2  # most pixels leave a step out
     ref = RefGraph(u, k=5, edge_cost=edge_cost, **geo)
     for s, e, least in reference_voyages(ref, largest_water(u), np.random.default_rng(seed), starts=3):
@@ -149,3 +156,25 @@ def test_pruned_searches_on_a_sea_with_land_give_the_reference_cost(seed, edge_c
             r = chart.route(point(geo, s), point(geo, e), method=method)
             assert r.cost == pytest.approx(least, rel=RTOL), (method, s, e)
             check_path(ref, r, s, e, geo)
+
+
+def test_each_model_keeps_its_own_table():
+    """Landmarks for the max rule and then the mean rule on one chart: each model keeps the table
+    a chart pruned for it alone would have (they differ), a rebuild for one leaves the other's,
+    and every exact method under each gives the reference's least cost."""
+    u = blob_sea(1, shape=(60, 70))
+    chart = seaway.prepare(u, edge_cost="max")
+    chart.prepare_landmarks(4)
+    chart.prepare_landmarks(4, model="mean")
+    alone = {rule: prune(seaway.prepare(u, edge_cost=rule)) for rule in ("max", "mean")}
+    assert (alone["max"] != alone["mean"]).any()
+    kept_mean = chart.pruned_for["mean"]
+    chart.prepare_landmarks(4)  # max again: replaces its own table only
+    assert set(chart.pruned_for) == {"max", "mean"} and chart.pruned_for["mean"] is kept_mean
+    for rule in ("max", "mean"):
+        np.testing.assert_array_equal(table_of(chart, rule), alone[rule])
+        ref = RefGraph(u, k=5, edge_cost=rule)
+        for s, e, least in reference_voyages(ref, largest_water(u), np.random.default_rng(1), starts=2):
+            for method in ("dijkstra", "bidirectional", "landmarks"):
+                r = chart.route(s, e, model=rule, method=method)
+                assert r.cost == pytest.approx(least, rel=RTOL), (rule, method, s, e)

@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import seaway
+from seaway.models.base import as_model
 
 THREADS = 6
 
@@ -229,5 +230,27 @@ def test_queries_while_the_doubled_steps_are_left_out_keep_their_costs():
         done.set()
         for f in futures:
             f.result()
-    assert chart.router.skip_table().any()
+    assert chart.router.skip_table(chart.model.engine(chart)).any()
     assert len(seen) >= len(queries) and all(seen)
+
+
+def test_two_rules_prepared_at_once_keep_both_tables():
+    """Two threads prepare landmarks for the max and the mean rule on one chart at the same
+    time: each publishes its table of doubled steps into the chart's list (compare and swap), so
+    both stay, each the table a chart prepared for that rule alone has."""
+    rng = np.random.default_rng(21)
+    cost = rng.uniform(1.0, 3.0, (300, 300))
+    cost[100:120, 50:250] = np.inf
+    for _ in range(3):
+        chart = seaway.prepare(cost)
+        with ThreadPoolExecutor(2) as pool:
+            for f in [pool.submit(chart.prepare_landmarks, 2, model=rule) for rule in ("max", "mean")]:
+                f.result()
+        assert set(chart.pruned_for) == {"max", "mean"}
+        for rule in ("max", "mean"):
+            alone = seaway.prepare(cost, edge_cost=rule)
+            alone.prepare_landmarks(1)
+            engine = as_model(rule).engine
+            np.testing.assert_array_equal(
+                chart.router.skip_table(engine(chart)), alone.router.skip_table(engine(alone))
+            )

@@ -247,9 +247,13 @@ def build_landmarks(
     engine = cast("_core.RasterRule", model.engine(prepared))  # symmetric and static: checked above
     # A chart with landmarks is for many queries: every later query under this model, and the
     # landmarks' own searches, leave out the doubled steps two unit steps replace at no more
-    # cost (cpp/seaway/collinear.hpp). The engine model is kept with the chart: the address of
-    # its raster keys the skip table.
+    # cost (cpp/seaway/collinear.hpp). Each model keeps its own table; its engine model is kept
+    # with the chart (the functor's type and its raster's address key the table) until a new
+    # one replaces it, whose table goes first (the two share a key: the same rule, the same raster).
+    old = prepared.pruned_for.pop(model.name, None)
+    if old is not None:
+        prepared.router.forget_pruned(old)
     if prepared.router.prune_collinear(engine):
-        prepared.pruned_for = engine
+        prepared.pruned_for[model.name] = engine
     lm = prepared.router.build_landmarks(engine, int(count), int(seed), cancel)
     return lm, time.perf_counter() - t0

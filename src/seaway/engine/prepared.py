@@ -65,8 +65,9 @@ class PreparedChart:
     router: _core.PreparedChart
     landmark_stats: dict[str, LandmarkStats]
     _landmarks: dict[str, _core.Landmarks]
-    #: The engine model whose steps were pruned (methods.build_landmarks), kept alive with the chart.
-    pruned_for: _core.Model | None
+    #: The engine models whose steps were pruned (methods.build_landmarks), by model name, kept
+    #: alive with the chart.
+    pruned_for: dict[str, _core.Model]
     _dims: tuple[Hashable, ...] | None
 
     def __init__(
@@ -127,7 +128,7 @@ class PreparedChart:
             chart.values, chart.land, chart.grid, neighbourhood, directions, land_rule
         )
         self._landmarks, self.landmark_stats = {}, {}
-        self.pruned_for = None
+        self.pruned_for = {}
         #: A static model's search here is short (at most DIRECT_STEPS steps): no helper thread.
         self._short = chart.values.size * (neighbourhood**2 - 1) <= DIRECT_STEPS
 
