@@ -10,7 +10,9 @@ after a warm-up query in the same process), so a busy machine slows both builds 
 table gives the median per build and the ratio new / old. With --callgrind each query runs once
 per build under valgrind's callgrind instead, and the instructions of the query alone (the run
 minus a run that only builds the chart) are compared: a count that does not depend on the load.
-Every query's cost must agree between the builds to 1e-9.
+Every query's cost must agree between the builds to 1e-9. The child drops an editable install's
+import hook (before 2026-12-08 it did not, and in a virtualenv with an editable install every
+comparison ran that one build against itself).
 """
 
 from __future__ import annotations
@@ -34,6 +36,8 @@ QUERIES = {
 
 CHILD = r"""
 import json, sys, time
+# An editable install's import hook would load its own build whatever PYTHONPATH says.
+sys.meta_path[:] = [f for f in sys.meta_path if not type(f).__module__.startswith("_editable_")]
 import numpy as np
 from seaway.samples import synthetic_sea, synthetic_endpoints
 import seaway
@@ -48,7 +52,7 @@ for i in range(runs):
     t = time.process_time()
     r = chart.route(a, b, method=method)
     times.append(time.process_time() - t)
-print(json.dumps({"cost": None if r is None else r.cost, "times": times}))
+print(json.dumps({"cost": None if r is None else r.cost, "times": times, "site": seaway.__file__}))
 """
 
 
@@ -57,7 +61,10 @@ def run(site, query, runs, callgrind=False):
     args = [sys.executable, "-c", CHILD, *map(str, QUERIES[query]), str(runs)]
     if not callgrind:
         out = subprocess.run(args, env=env, check=True, capture_output=True, text=True).stdout
-        return json.loads(out)
+        result = json.loads(out)
+        if not result["site"].startswith(os.path.abspath(site)):
+            sys.exit(f"the child imported seaway from {result['site']}, not from {site}")
+        return result
     with tempfile.TemporaryDirectory() as tmp:
         log = os.path.join(tmp, "cg.out")
         subprocess.run(
