@@ -178,3 +178,44 @@ def test_each_model_keeps_its_own_table():
             for method in ("dijkstra", "bidirectional", "landmarks"):
                 r = chart.route(s, e, model=rule, method=method)
                 assert r.cost == pytest.approx(least, rel=RTOL), (rule, method, s, e)
+
+
+@pytest.mark.parametrize("method", ["dijkstra", "astar", "bidirectional"])
+@pytest.mark.parametrize("dtype", [np.float64, np.float32])
+def test_the_max_rule_keeps_the_doubled_step_over_a_dear_wall(method, dtype):
+    """Without a table the max rule leaves out, as the search goes, the doubled steps whose
+    middle pixel costs no more than the dearer end (StepEnumerator::with_max_rule). A wall one
+    pixel wide of cost 100 across a sea of cost 1: the doubled step over it costs max(1, 1) x 2
+    (Grinyak et al. 2022 price a step by its ends), so the least cost from (20, 5) to (20, 35) is
+    30, the straight line; leaving that step out would cost 14 + sqrt 5 + sqrt 2 + 13 = 30.65 by
+    a knight's step over the wall, or over 200 through it."""
+    u = np.ones((40, 40), dtype)
+    u[:, 20] = 100
+    chart = seaway.prepare(u)
+    r = chart.route((20, 5), (20, 35), method=method)
+    assert r.cost == pytest.approx(30.0, rel=RTOL)
+    assert [[20, 19], [20, 21]] in [
+        np.asarray(r.pixels)[i : i + 2].tolist() for i in range(len(r.pixels) - 1)
+    ]
+
+
+@pytest.mark.parametrize("seed", range(3))
+@pytest.mark.parametrize("dtype", [np.float64, np.float32])
+def test_the_max_rule_as_it_goes_gives_the_reference_cost(seed, dtype):
+    """Seas of 15,400 pixels with land blobs (planar, lat/lon ascending and descending) and no
+    landmarks, so no table: the max rule leaves steps out as the search goes, and every exact
+    method, and one search to many ends, gives the reference's least cost."""
+    u = blob_sea(seed, shape=(110, 140)).astype(dtype)
+    geo = blob_geo(seed, u.shape)
+    chart = seaway.prepare(u, **geo)
+    assert chart.chart.values.dtype == dtype and not chart.pruned_for
+    ref = RefGraph(u, k=5, edge_cost="max", **geo)
+    voyages = list(reference_voyages(ref, largest_water(u), np.random.default_rng(seed), starts=3))
+    for s, e, least in voyages:
+        for method in ("dijkstra", "astar", "bidirectional"):
+            r = chart.route(point(geo, s), point(geo, e), method=method)
+            assert r.cost == pytest.approx(least, rel=RTOL), (method, s, e)
+            check_path(ref, r, s, e, geo)
+    s = voyages[0][0]
+    many = chart.routes(point(geo, s), [point(geo, e) for t, e, _ in voyages if t == s])
+    assert [r.cost for r in many] == pytest.approx([c for t, _, c in voyages if t == s], rel=RTOL)
