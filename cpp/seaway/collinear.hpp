@@ -4,8 +4,7 @@
 // route cheaper, and a search may leave it out (every least cost stays the same; a route that
 // took it takes the two unit steps instead, the same track). Under the papers' max rule that
 // holds wherever m costs no more than the dearer end, so on most of a chart a search makes 16
-// steps per pixel instead of 24 (the step enumerator tests that as it goes, with_max_rule; the
-// table here serves every rule). Only for static models over a raster (PrunableModel: a step's
+// steps per pixel instead of 24. Only for static models over a raster (PrunableModel: a step's
 // cost depends on the step alone); the turn search keeps every step (its state is the step).
 #pragma once
 
@@ -21,10 +20,34 @@
 #include <vector>
 
 #include "capabilities.hpp"
-#include "doubled_steps.hpp"
 #include "steps.hpp"
 
 namespace seaway {
+
+// A relative slack for the rounding of the two sums (the search adds the two unit steps to a
+// cost, not to each other): a route may come out at most this share dearer than the least.
+inline constexpr double collinear_slack = 1e-12;
+
+// For the stencil `st`: the indices of the 8 doubled unit offsets (bit b of a skip byte) and of
+// their halves, or empty when the stencil has none or they lie beyond bit 63 of a step mask.
+struct DoubledSteps {
+  std::vector<int> doubled, half;
+  explicit DoubledSteps(const std::vector<Offset>& st) {
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj) {
+        if (di == 0 && dj == 0) continue;
+        const int d = offset_of(st, 2 * di, 2 * dj), h = offset_of(st, di, dj);
+        if (d < 0 || h < 0 || d > 63) {
+          doubled.clear();
+          half.clear();
+          return;
+        }
+        doubled.push_back(d);
+        half.push_back(h);
+      }
+  }
+  bool any() const { return !doubled.empty(); }
+};
 
 // Per pixel v a 16-bit word: bit b (b < 8) set when the doubled step of DoubledSteps b from v
 // may be left out, bit 8 + b when the one ending at v may (the backward search's view of the

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <type_traits>
 #include <vector>
 
 #include "capabilities.hpp"
@@ -51,10 +50,6 @@ struct MaxRule {
 };
 template <class T>
 using MaxCost = PairCost<T, MaxRule>;
-template <class Model>
-struct IsMaxCost : std::false_type {};
-template <class T>
-struct IsMaxCost<MaxCost<T>> : std::true_type {};
 
 // Grinyak et al. 2018: d = (u_i + u_j) / 2 * r.
 struct MeanRule {

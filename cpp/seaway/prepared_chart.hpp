@@ -40,11 +40,6 @@ class PreparedChart {
     rmin_ = *rmin;
     rmax_ = *rmax;
     steps_.emplace(g_, stencil_, lengths_, clearance_.data(), rule_);
-    const DoubledSteps ds(stencil_);
-    if (const unsigned bits = ds.any() ? collinear_lengths(g_, stencil_, lengths_, ds) : 0u) {
-      raster_ = cost;
-      steps_max_.emplace(steps_->with_max_rule(cost, ds.doubled, ds.half, bits));
-    }
   }
   PreparedChart(const PreparedChart&) = delete;  // the enumerator points into it
   PreparedChart& operator=(const PreparedChart&) = delete;
@@ -96,16 +91,12 @@ class PreparedChart {
     return run(model, from, stop, 0.0, ws, control);
   }
 
-  // What the other searches (bidirectional, landmarks, turns, least danger) need: every step;
-  // for a static model those left after prune_collinear(model) (collinear.hpp), else under the
-  // max rule on the chart's own raster those the rule leaves out as the search goes.
+  // What the other searches (bidirectional, landmarks, turns, least danger) need: every step,
+  // or for a static model those left after prune_collinear(model) (collinear.hpp).
   const StepEnumerator& steps() const { return *steps_; }
   template <class Model>
   const StepEnumerator& steps_for(const Model& model, std::shared_ptr<const void>& keep) const {
-    const StepEnumerator* all = &*steps_;
-    if constexpr (IsMaxCost<Model>::value)
-      if (steps_max_ && static_cast<const void*>(model.u) == raster_) all = &*steps_max_;
-    return pruned_.get(*all, model, keep);
+    return pruned_.get(*steps_, model, keep);
   }
   template <class Model>
   void prune_collinear(const Model& model) { pruned_.build(*steps_, model); }
@@ -185,8 +176,6 @@ class PreparedChart {
   double rmin_ = 0, rmax_ = 0;
   int half_ = 0;
   std::optional<StepEnumerator> steps_;  // built once the clearance is
-  std::optional<StepEnumerator> steps_max_;  // with_max_rule() on the chart's raster
-  const void* raster_ = nullptr;  // its address
   PrunedSteps pruned_;
   mutable std::mutex pool_mutex_;
   std::vector<std::unique_ptr<Workspace>> pool_;

@@ -4,14 +4,11 @@
 // both are passable and, under LandRule::segment, no pixel its closed segment touches is
 // impassable. A pixel away from the border whose land clearance exceeds the stencil's
 // half-width has every step (the fast path: no test at all), less those a skip table
-// (collinear.hpp) leaves out there, or under the max rule those whose middle pixel costs no more
-// than the dearer end (with_max_rule).
+// (collinear.hpp) leaves out there.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
-#include <type_traits>
 #include <vector>
 
 #include "geometry.hpp"
@@ -49,26 +46,6 @@ class StepEnumerator {
     return e;
   }
 
-  // This enumerator leaving out, on the fast path, the doubled step b of `doubled` (bit b of
-  // `bits`) wherever its middle pixel (along `half[b]`) costs no more than the dearer end in
-  // `u`: under the max rule over `u`, with lengths that allow it (collinear_lengths), the two
-  // halves then cost no more. `u` must outlive it.
-  template <class T>
-  StepEnumerator with_max_rule(const T* u, const std::vector<int>& doubled, const std::vector<int>& half,
-                               unsigned bits) const {
-    static_assert(std::is_same_v<T, double> || std::is_same_v<T, float>, "a float or double raster");
-    StepEnumerator e = *this;
-    e.live_ = u;
-    e.live_float_ = std::is_same_v<T, float>;
-    for (std::size_t b = 0; b < doubled.size(); ++b)
-      if (bits >> b & 1u) {
-        e.live_d_[std::size_t(e.n_live_)] = flat_[std::size_t(doubled[b])];
-        e.live_h_[std::size_t(e.n_live_)] = flat_[std::size_t(half[b])];
-        e.live_bit_[std::size_t(e.n_live_++)] = std::uint64_t(1) << doubled[b];
-      }
-    return e;
-  }
-
   // Calls f(w, o, from, to, r, cell) for every step with v at its start (Backward: at its end):
   // w its other end, o its offset, from -> to the step as the model prices it, r its length and
   // cell(m) the flat index of the m-th pixel of the offset's length shares.
@@ -83,10 +60,7 @@ class StepEnumerator {
     const std::int64_t row = row_of_(v), col = v - row * C;
     if (row >= h && row < R - h && col >= h && col < C - h && clear[v] > h) {
       const double* len = lengths_->row(row);
-      std::uint64_t skip = skip_ ? expand_[Backward ? skip_[v] >> 8 : skip_[v] & 0xffu] : 0;
-      if (live_)
-        skip |= live_float_ ? live_skips<Backward>(static_cast<const float*>(live_), v)
-                            : live_skips<Backward>(static_cast<const double*>(live_), v);
+      const std::uint64_t skip = skip_ ? expand_[Backward ? skip_[v] >> 8 : skip_[v] & 0xffu] : 0;
       for (std::int64_t o = 0; o < K; ++o) {
         if (o < 64 && (skip >> o & 1u)) continue;
         const auto& shares = st[o].shares;
@@ -124,18 +98,6 @@ class StepEnumerator {
   }
 
  private:
-  template <bool Backward, class T>
-  SEAWAY_ALWAYS_INLINE std::uint64_t live_skips(const T* u, std::int64_t v) const {
-    std::uint64_t out = 0;
-    const T uv = u[v];
-    for (int b = 0; b < n_live_; ++b) {
-      const std::int64_t d = live_d_[std::size_t(b)], h = live_h_[std::size_t(b)];
-      const T uw = u[Backward ? v - d : v + d], um = u[Backward ? v - h : v + h];
-      if (um <= std::max(uv, uw)) out |= live_bit_[std::size_t(b)];
-    }
-    return out;
-  }
-
   const Geometry* g_;
   const std::vector<Offset>* st_;
   const Geometry::Lengths* lengths_;
@@ -146,11 +108,6 @@ class StepEnumerator {
   std::vector<std::int64_t> flat_;  // each offset's step in flat pixel index
   const std::uint16_t* skip_ = nullptr;  // with_skips()
   std::array<std::uint64_t, 256> expand_{};  // a skip byte as a mask of offsets
-  const void* live_ = nullptr;  // with_max_rule(): the raster
-  bool live_float_ = false;
-  int n_live_ = 0;
-  std::array<std::int64_t, 8> live_d_{}, live_h_{};  // flat steps of each doubled step, its half
-  std::array<std::uint64_t, 8> live_bit_{};  // its offset's bit
 };
 
 }  // namespace seaway
