@@ -84,7 +84,8 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
   std::thread helper;  // the backward side, started by the forward side after its solo phase
   std::function<void()> start_backward;
   std::shared_ptr<const void> keep;
-  const StepEnumerator& steps = pg.steps_for(model, keep);
+  // Only the landmark search reads a chart's skip table (a chart with landmarks has one).
+  const StepEnumerator& steps = Potential::prunes ? pg.steps_for(model, keep) : pg.steps();
   auto side = [&](auto backward) {
     constexpr bool B = decltype(backward)::value;
     LazyLabels& mine = B ? bw : fw;
@@ -99,7 +100,7 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
       const OneWay<Potential> one_way{pot};  // the forward side's solo phase
       auto run = [&](const auto& p, const auto& solo) {
         return with_queue<false, Potential::sparse_keys>(q, [&](auto heap) {
-          return bidirectional_side<B>(steps, model, origin, target, mine, theirs, std::move(heap), p,
+          return bidirectional_side<B, Potential::prunes>(steps, model, origin, target, mine, theirs, std::move(heap), p,
                                        solo, shift, rounds, meet, cancel, start_backward);
         });
       };

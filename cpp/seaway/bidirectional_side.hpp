@@ -31,7 +31,7 @@ constexpr std::int64_t round_pixels = 1024;
 // the backward side. With a potential it searches alone as one-way A* with `solo` (the bound to
 // the target at the potential's scale, which pulls twice as hard as the average potential),
 // then re-keys its queue to the potential (rekeyed.hpp).
-template <bool Backward, class Queue, class Model, class Potential, class Solo, class StartOther>
+template <bool Backward, bool Prune, class Queue, class Model, class Potential, class Solo, class StartOther>
 SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, std::int64_t origin,
                                std::int64_t target, LazyLabels& mine, const LazyLabels& other, Queue heap,
                                const Potential& pot, const Solo& solo, double shift,
@@ -63,7 +63,7 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
     mine.set(v, -dv);  // settled
     now.settled(v);
     count_settled(stats.settled, cancel, !Backward);  // the forward side reports progress
-    steps.each<Backward>(v, [&](std::int64_t w, std::int64_t o, std::int64_t from,
+    steps.template each<Backward, Prune>(v, [&](std::int64_t w, std::int64_t o, std::int64_t from,
                                  std::int64_t to, double r, auto&& cell) {
       const double nd = dv + model(from, to, int(o), r, 0.0, cell);
       if (nd < mine.get(w)) {  // false for settled pixels: their label is negative

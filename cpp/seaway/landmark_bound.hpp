@@ -72,6 +72,7 @@ class LandmarkPotential {
  public:
   static constexpr bool worth_caching = true;
   static constexpr bool sparse_keys = true;  // buckets a small share of a step wide
+  static constexpr bool prunes = true;  // leaves out the steps of the chart's skip table
   // rate: the least cost per unit length (0: no straight-line bound).
   LandmarkPotential(const Landmarks& lm, const Geometry& g, std::int64_t start, std::int64_t target,
                     double rate, double scale)

@@ -121,7 +121,7 @@ RouteResult route_landmarks(PreparedChart& pg, const Landmarks& lm, const Model&
   std::shared_ptr<const void> keep;
   const StepEnumerator& steps = pg.steps_for(model, keep);
   SearchStats stats = with_queue<false, true>(q, [&](auto heap) {
-    return search_with_bound(steps, model, start, target, *ws, std::move(heap), bound, cancel);
+    return search_with_bound<true>(steps, model, start, target, *ws, std::move(heap), bound, cancel);
   });
   stats.min_cost = b.min_rate;
   stats.state_bytes += pg.clearance_bytes() + pg.pruned_bytes() + bound.resident_bytes();

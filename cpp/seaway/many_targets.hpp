@@ -42,13 +42,11 @@ void routes_to(PreparedChart& chart, const Model& model, std::int64_t start,
   const QueueChoice q = choose_queue(b, chart.shortest_step(), chart.longest_step(), 1.0, 0.0);
   const DistanceBound none(chart.geometry(), 0, 0.0);
   const TargetSet stop(targets);
-  std::shared_ptr<const void> keep;
-  const StepEnumerator& steps = chart.steps_for(model, keep);
   SearchStats stats = with_queue<true, false, Model::caps.time_dependent>(q, [&](auto heap) {
-    return search_with_bound(steps, model, start, -1, *ws, std::move(heap), none, control, stop);
+    return search_with_bound(chart.steps(), model, start, -1, *ws, std::move(heap), none, control, stop);
   });
   stats.min_cost = b.min_rate;
-  stats.state_bytes += chart.clearance_bytes() + chart.pruned_bytes();
+  stats.state_bytes += chart.clearance_bytes();
   for (std::size_t i = 0; i < targets.size(); ++i) each(i, chart.result(*ws, start, targets[i], stats));
 }
 

@@ -11,7 +11,7 @@ namespace seaway {
 
 // No potential: plain bidirectional Dijkstra.
 struct NoPotential {
-  static constexpr bool worth_caching = false, sparse_keys = false;
+  static constexpr bool worth_caching = false, sparse_keys = false, prunes = false;
   bool active() const { return false; }
   double operator()(std::int64_t) const { return 0; }
   double one_way(std::int64_t) const { return 0; }
@@ -25,7 +25,7 @@ struct AveragePotential {
   // Kept per pixel when the bounds read tables, recomputed when they are arithmetic; buckets a
   // small share of a step wide (sparse keys) when the bounds are scaled close to 1.
   static constexpr bool worth_caching = !std::is_same_v<Bound, DistanceBound>;
-  static constexpr bool sparse_keys = worth_caching;
+  static constexpr bool sparse_keys = worth_caching, prunes = false;
   Bound to_target, from_start;
   double scale;
   bool active() const { return true; }

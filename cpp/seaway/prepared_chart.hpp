@@ -92,7 +92,8 @@ class PreparedChart {
   }
 
   // What the other searches (bidirectional, landmarks, turns, least danger) need: every step,
-  // or for a static model those left after prune_collinear(model) (collinear.hpp).
+  // or for the landmark searches under a static model those left after prune_collinear(model)
+  // (collinear.hpp); the other searches gain nothing from the table (benchmarks/README.md).
   const StepEnumerator& steps() const { return *steps_; }
   template <class Model>
   const StepEnumerator& steps_for(const Model& model, std::shared_ptr<const void>& keep) const {
@@ -157,13 +158,11 @@ class PreparedChart {
     double hw = target >= 0 && b.per_length ? weight : 0.0;
     if ((q.kind == QueueKind::buckets || q.kind == QueueKind::overflow_buckets) && astar) hw = 1 - eps;
     if (q.kind == QueueKind::buckets && astar && g_.size() <= chunked_astar_pixels) q.kind = QueueKind::chunked_buckets;
-    std::shared_ptr<const void> keep;
-    const StepEnumerator& steps = steps_for(model, keep);
     SearchStats stats = with_queue<true, true, Model::caps.time_dependent>(q, [&](auto heap) {
-      return search(steps, model, start, target, ws, std::move(heap), hw * b.min_rate, control);
+      return search(*steps_, model, start, target, ws, std::move(heap), hw * b.min_rate, control);
     });
     stats.min_cost = b.min_rate;
-    stats.state_bytes += clearance_.capacity() + pruned_.bytes();
+    stats.state_bytes += clearance_.capacity();
     return stats;
   }
 

@@ -25,7 +25,8 @@ struct NeverStop {
 // or `stop(v)` says so for a settled pixel v (many targets: many_targets.hpp).
 // ws.cost(v) ends as the accumulated cost of v (exact for settled pixels), inf if not reached.
 // `bound(v)` is A*'s lower bound on the cost from v to target (used when bound.active()).
-template <class Queue, class Model, class Bound, class Stop = NeverStop>
+// Prune: leave out the steps `steps` skips (StepEnumerator::each).
+template <bool Prune = false, class Queue, class Model, class Bound, class Stop = NeverStop>
 SearchStats search_with_bound(const StepEnumerator& steps, const Model& model, std::int64_t start,
                               std::int64_t target, Workspace& ws, Queue heap, const Bound& bound,
                               const SearchControl* control, const Stop& stop = Stop{}) {
@@ -47,7 +48,7 @@ SearchStats search_with_bound(const StepEnumerator& steps, const Model& model, s
     dist[v] = -dv;                   // expanded: never reopened (weighted A* keeps its bound)
     count_settled(stats.settled, control);
     if (v == target || stop(v)) break;
-    steps.each(v, [&](std::int64_t w, std::int64_t o, std::int64_t from, std::int64_t to, double r, auto&& cell) {
+    steps.template each<false, Prune>(v, [&](std::int64_t w, std::int64_t o, std::int64_t from, std::int64_t to, double r, auto&& cell) {
       const double nd = dv + model(from, to, int(o), r, dv, cell);
       const double old = dist[w];
       if (nd < old) {  // false for expanded pixels: their cost is negative
