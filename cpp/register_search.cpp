@@ -98,8 +98,9 @@ void def_queries(ChartClass& router) {
                });
              },
              py::arg("model"),
-             "Leave out, in later queries under this model, the doubled steps two unit steps replace "
-             "at no more cost (collinear.hpp): every least cost the same, fewer steps. False (and "
+             "Leave out, in later landmark queries under this model, the doubled steps two unit "
+             "steps replace at no more cost (collinear.hpp): every least cost the same, fewer steps "
+             "(the other searches read no table). False (and "
              "nothing done) for a model whose costs change with time. Each model keeps its own table; "
              "the caller keeps the model's raster alive and unchanged until forget_pruned(model): "
              "its address is the key.");

@@ -100,8 +100,9 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
       const OneWay<Potential> one_way{pot};  // the forward side's solo phase
       auto run = [&](const auto& p, const auto& solo) {
         return with_queue<false, Potential::sparse_keys>(q, [&](auto heap) {
-          return bidirectional_side<B, Potential::prunes>(steps, model, origin, target, mine, theirs, std::move(heap), p,
-                                       solo, shift, rounds, meet, cancel, start_backward);
+          return bidirectional_side<B, Potential::prunes>(steps, model, origin, target, mine, theirs,
+                                                          std::move(heap), p, solo, shift, rounds,
+                                                          meet, cancel, start_backward);
         });
       };
       // A potential is asked for at every push: each side keeps the values it computed.
@@ -131,7 +132,7 @@ RouteResult route_bidirectional(PreparedChart& pg, const Model& model, std::int6
   out.stats.settled = sides[0].settled + sides[1].settled;
   out.stats.heap_peak = sides[0].heap_peak + sides[1].heap_peak;
   out.stats.state_bytes = sides[0].state_bytes + sides[1].state_bytes + fw.resident_bytes() +
-                          bw.resident_bytes() + pg.clearance_bytes();
+                          bw.resident_bytes() + pg.clearance_bytes() + (Potential::prunes ? pg.pruned_bytes() : 0);
   out.stats.min_cost = b.min_rate;
   if (meet.pixel < 0) return out;  // no route: cost stays inf
 

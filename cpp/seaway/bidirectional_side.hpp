@@ -64,7 +64,7 @@ SearchStats bidirectional_side(const StepEnumerator& steps, const Model& model, 
     now.settled(v);
     count_settled(stats.settled, cancel, !Backward);  // the forward side reports progress
     steps.template each<Backward, Prune>(v, [&](std::int64_t w, std::int64_t o, std::int64_t from,
-                                 std::int64_t to, double r, auto&& cell) {
+                                                std::int64_t to, double r, auto&& cell) {
       const double nd = dv + model(from, to, int(o), r, 0.0, cell);
       if (nd < mine.get(w)) {  // false for settled pixels: their label is negative
         mine.set(w, nd, int(o));

@@ -3,8 +3,8 @@
 // `from + o`. It exists when both ends lie on the chart (columns wrap on 360-degree charts),
 // both are passable and, under LandRule::segment, no pixel its closed segment touches is
 // impassable. A pixel away from the border whose land clearance exceeds the stencil's
-// half-width has every step (the fast path: no test at all), less those a skip table
-// (collinear.hpp) leaves out there.
+// half-width has every step (the fast path: no test at all), less, for a search that asks
+// (each<..., Prune>), those a skip table (collinear.hpp) leaves out there.
 #pragma once
 
 #include <array>

@@ -198,19 +198,24 @@ def test_two_thread_searches_on_one_core_give_the_answers_of_two():
 
 
 def test_queries_while_the_doubled_steps_are_left_out_keep_their_costs():
-    """Threads route on a chart while the main thread prepares its landmarks three times, each
-    time publishing a new table of the doubled steps to leave out (cpp/seaway/collinear.hpp): a
-    query started before sees every step, one started after sees the table, and one that spans
-    the swap keeps the table it began with alive; every cost is the one of a chart that never
-    left a step out (to 1e-9; the path may take the two halves of a doubled step instead)."""
+    """Threads route on a chart while the main thread prepares its landmarks three more times,
+    each time dropping the table of the doubled steps to leave out and publishing a new one
+    (cpp/seaway/collinear.hpp): a landmark query started in between sees every step, one started
+    after sees the new table, and one that spans the swap keeps the table it began with alive;
+    every cost, of the landmark queries (which read the table) and of the others (which do not),
+    is the one of a chart that never left a step out (to 1e-9; the path may take the two halves
+    of a doubled step instead)."""
     rng = np.random.default_rng(14)
     cost = rng.uniform(1.0, 3.0, (160, 200))
     cost[40:60, 50:150] = np.inf  # a wall to go round
     plain = seaway.prepare(cost)
     chart = seaway.prepare(cost)
+    chart.prepare_landmarks(4)
     queries = [q for q in _queries(cost, 24, seed=5) if q[2] != ("astar", 2.0)]
-    queries += [(a, b, "bidirectional") for a, b, _ in queries[:8]]
-    expect = [_answer(plain.route, q)[0] for q in queries]
+    queries += [(a, b, how) for a, b, _ in queries[:8] for how in ("bidirectional", "landmarks")]
+    expect = [
+        _answer(plain.route, (a, b, "dijkstra" if how == "landmarks" else how))[0] for a, b, how in queries
+    ]
     done = threading.Event()
     seen: list = []
 

@@ -245,9 +245,10 @@ def build_landmarks(
     t0 = time.perf_counter()
     seed = seed_rc[0] * prepared.chart.shape[1] + seed_rc[1]
     engine = cast("_core.RasterRule", model.engine(prepared))  # symmetric and static: checked above
-    # A chart with landmarks is for many queries: every later query under this model, and the
-    # landmarks' own searches, leave out the doubled steps two unit steps replace at no more
-    # cost (cpp/seaway/collinear.hpp). Each model keeps its own table; its engine model is kept
+    # A chart with landmarks is for many queries: every later landmark query under this model
+    # leaves out the doubled steps two unit steps replace at no more cost
+    # (cpp/seaway/collinear.hpp; the other searches read no table). Each model keeps its own
+    # table; its engine model is kept
     # with the chart (the functor's type and its raster's address key the table) until a new
     # one replaces it, whose table goes first (the two share a key: the same rule, the same raster).
     old = prepared.pruned_for.pop(model.name, None)
